@@ -1,0 +1,1 @@
+#include "shockgas/version.hpp"

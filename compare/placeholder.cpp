@@ -1,0 +1,2 @@
+// Replaced by the comparison code.
+namespace shockgas::compare {}

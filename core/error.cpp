@@ -1,0 +1,45 @@
+#include "shockgas/core/error.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace shockgas {
+
+namespace {
+std::string compose(const std::string& key, const std::string& value, const std::string& allowed,
+                    const std::string& where) {
+  std::string msg = where.empty() ? "" : where + ": ";
+  msg += key + " = " + value + " is not allowed; allowed: " + allowed;
+  return msg;
+}
+}  // namespace
+
+InputError::InputError(std::string key, std::string value, std::string allowed, std::string where)
+    : std::runtime_error(compose(key, value, allowed, where)),
+      key_(std::move(key)),
+      value_(std::move(value)),
+      allowed_(std::move(allowed)),
+      where_(std::move(where)) {}
+
+InputError InputError::located(const std::string& where) const {
+  return InputError(key_, value_, allowed_, where);
+}
+
+std::string to_text(double value) {
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, res.ptr);
+}
+
+void require_in_range(const std::string& key, double value, double lo, double hi) {
+  if (!(std::isfinite(value) && value >= lo && value <= hi))
+    throw InputError(key, to_text(value),
+                     "a finite number in [" + to_text(lo) + ", " + to_text(hi) + "]");
+}
+
+void require_above(const std::string& key, double value, double lo) {
+  if (!(std::isfinite(value) && value > lo))
+    throw InputError(key, to_text(value), "a finite number > " + to_text(lo));
+}
+
+}  // namespace shockgas
