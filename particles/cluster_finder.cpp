@@ -1,0 +1,101 @@
+#include "shockgas/particles/cluster_finder.hpp"
+
+#include <cmath>
+
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::particles {
+
+namespace {
+
+void validate_input(const Bodies& b, double L, const ClusterCriteria& c) {
+  require(std::isfinite(L) && L >= 0, "cluster.L", L, "L >= 0 (0 = open line)");
+  require(std::isfinite(c.max_gap) && c.max_gap >= 0, "cluster.max_gap", c.max_gap, "finite, >= 0");
+  require(std::isfinite(c.max_dv) && c.max_dv >= 0, "cluster.max_dv", c.max_dv, "finite, >= 0");
+  require(b.v.size() == b.size() && b.m.size() == b.size(), "cluster.bodies", b.size(),
+          "x, v and m of equal length");
+  for (std::size_t i = 0; i + 1 < b.size(); ++i)
+    require(b.x[i] <= b.x[i + 1], "cluster.bodies.x", b.x[i + 1], "positions sorted ascending");
+  if (L > 0 && b.size() > 0)
+    require(b.x.front() >= 0 && b.x.back() < L, "cluster.bodies.x", b.x.back(), "positions in [0, L)");
+}
+
+// Whether bodies i and j = i + 1 (ring: j = 0 after N - 1) belong to one cluster.
+bool joined(const Bodies& b, std::size_t i, std::size_t j, double L, const ClusterCriteria& c) {
+  const double gap = j > i ? b.x[j] - b.x[i] : b.x[j] + L - b.x[i];
+  return gap < c.max_gap && std::abs(b.v[j] - b.v[i]) < c.max_dv;
+}
+
+// links[i]: body i is joined to its right neighbour (ring: the last one to body 0).
+std::vector<bool> neighbour_links(const Bodies& b, double L, const ClusterCriteria& c) {
+  const std::size_t n = b.size();
+  std::vector<bool> links(n, false);
+  for (std::size_t i = 0; i + 1 < n; ++i) links[i] = joined(b, i, i + 1, L, c);
+  if (L > 0 && n > 1) links[n - 1] = joined(b, n - 1, 0, L, c);
+  return links;
+}
+
+// The cluster of `count` bodies starting at `first` (indices taken mod N; a
+// member past N - 1 is unrolled by +L). The centre of mass is taken relative to
+// the first member, so a one-body cluster sits exactly on its body.
+Cluster make_cluster(const Bodies& b, double L, std::size_t first, std::size_t count) {
+  const std::size_t n = b.size();
+  Cluster k{first, count, 0.0, 0.0, 0.0};
+  double m_dx = 0, mv = 0;
+  for (std::size_t s = 0; s < count; ++s) {
+    const std::size_t i = (first + s) % n;
+    const double x = b.x[i] + (first + s >= n ? L : 0.0);
+    k.m += b.m[i];
+    m_dx += b.m[i] * (x - b.x[first]);
+    mv += b.m[i] * b.v[i];
+  }
+  k.x = b.x[first] + m_dx / k.m;
+  k.v = count == 1 ? b.v[first] : mv / k.m;
+  if (L > 0) {
+    k.x = std::fmod(k.x, L);
+    if (k.x < 0) k.x += L;
+    if (k.x >= L) k.x = 0.0;  // rounding of fmod near L
+  }
+  return k;
+}
+
+}  // namespace
+
+std::vector<Cluster> find_clusters(const Bodies& b, double L, const ClusterCriteria& c) {
+  validate_input(b, L, c);
+  const std::size_t n = b.size();
+  std::vector<Cluster> clusters;
+  if (n == 0) return clusters;
+  const std::vector<bool> links = neighbour_links(b, L, c);
+  // Start at a body whose left neighbour is not joined to it; on a fully linked
+  // ring every body is in one cluster, started at body 0.
+  std::size_t start = 0;
+  if (L > 0) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!links[(i + n - 1) % n]) {
+        start = i;
+        break;
+      }
+    }
+  }
+  std::size_t walked = 0;
+  while (walked < n) {
+    const std::size_t first = (start + walked) % n;
+    std::size_t count = 1;
+    while (walked + count < n && links[(first + count - 1) % n]) ++count;
+    clusters.push_back(make_cluster(b, L, first, count));
+    walked += count;
+  }
+  return clusters;
+}
+
+ClusterCriteria default_cluster_criteria(double delta, double mean_spacing) {
+  require(std::isfinite(delta) && delta >= 0, "particles.delta", delta, "finite, >= 0");
+  require(std::isfinite(mean_spacing) && mean_spacing > 0, "cluster.mean_spacing", mean_spacing,
+          "finite, > 0");
+  return ClusterCriteria{0.5 * mean_spacing, 2.0 * delta};
+}
+
+ClusterCriteria merged_bodies_criteria() { return ClusterCriteria{0.0, 0.0}; }
+
+}  // namespace shockgas::particles

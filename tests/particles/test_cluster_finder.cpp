@@ -1,0 +1,139 @@
+#include "shockgas/particles/cluster_finder.hpp"
+
+#include <gtest/gtest.h>
+
+#include "shockgas/core/error.hpp"
+#include "shockgas/core/random.hpp"
+
+namespace shockgas::particles {
+namespace {
+
+// Sums and positions below are of a handful of O(1) numbers: rounding of a few ulps.
+constexpr double kRound = 1e-12;
+
+TEST(ClusterFinder, LineGroupsCloseCoMovingRuns) {
+  Bodies b;
+  // A tight co-moving pair, a lone body, a tight triple.
+  b.push_back(1.0, 0.50, 1);
+  b.push_back(1.1, 0.51, 1);
+  b.push_back(3.0, -0.2, 1);
+  b.push_back(5.0, 0.30, 2);
+  b.push_back(5.2, 0.30, 1);
+  b.push_back(5.4, 0.31, 1);
+  const auto k = find_clusters(b, 0.0, ClusterCriteria{0.5, 0.02});
+  ASSERT_EQ(k.size(), 3u);
+  EXPECT_EQ(k[0].first, 0u);
+  EXPECT_EQ(k[0].count, 2u);
+  EXPECT_NEAR(k[0].x, 1.05, kRound);
+  EXPECT_NEAR(k[0].v, 0.505, kRound);
+  EXPECT_EQ(k[1].count, 1u);
+  EXPECT_EQ(k[2].first, 3u);
+  EXPECT_EQ(k[2].count, 3u);
+  EXPECT_NEAR(k[2].m, 4.0, kRound);
+  EXPECT_NEAR(k[2].x, (2 * 5.0 + 5.2 + 5.4) / 4, kRound);
+  EXPECT_NEAR(k[2].v, (2 * 0.30 + 0.30 + 0.31) / 4, kRound);
+}
+
+TEST(ClusterFinder, CloseButApproachingBodiesAreSeparate) {
+  Bodies b;
+  b.push_back(1.0, 1.0, 1);
+  b.push_back(1.1, -1.0, 1);
+  EXPECT_EQ(find_clusters(b, 0.0, ClusterCriteria{0.5, 0.02}).size(), 2u);
+}
+
+TEST(ClusterFinder, RingRunWrapsAcrossZero) {
+  const double L = 10.0;
+  Bodies b;
+  b.push_back(0.1, 0.2, 1);   // wraps with the last two
+  b.push_back(4.0, -0.3, 1);
+  b.push_back(9.7, 0.2, 1);
+  b.push_back(9.9, 0.2, 1);
+  const auto k = find_clusters(b, L, ClusterCriteria{0.5, 0.02});
+  ASSERT_EQ(k.size(), 2u);
+  EXPECT_EQ(k[0].first, 1u);
+  EXPECT_EQ(k[0].count, 1u);
+  EXPECT_EQ(k[1].first, 2u);
+  EXPECT_EQ(k[1].count, 3u);
+  // Unrolled centre of mass (9.7 + 9.9 + 10.1) / 3 = 9.9.
+  EXPECT_NEAR(k[1].x, 9.9, kRound);
+  EXPECT_NEAR(k[1].m, 3.0, kRound);
+}
+
+TEST(ClusterFinder, WrappedCentreOfMassIsWrappedIntoRing) {
+  const double L = 10.0;
+  Bodies b;
+  b.push_back(0.3, 0.0, 3);
+  b.push_back(9.9, 0.0, 1);
+  const auto k = find_clusters(b, L, ClusterCriteria{0.5, 0.02});
+  ASSERT_EQ(k.size(), 1u);
+  // (9.9 + 3 * 10.3) / 4 = 10.2 -> 0.2.
+  EXPECT_NEAR(k[0].x, 0.2, kRound);
+}
+
+TEST(ClusterFinder, MergedBodiesAreEachTheirOwnCluster) {
+  Rng rng(7);
+  Bodies b;
+  double x = 0;
+  for (int i = 0; i < 50; ++i) {
+    x += 1e-9 + rng.uniform();  // gaps > 0, some tiny
+    b.push_back(x, 0.0, 1.0 + rng.uniform());  // equal velocities: only the gap criterion separates
+  }
+  const auto k = find_clusters(b, x + 1.0, merged_bodies_criteria());
+  ASSERT_EQ(k.size(), b.size());
+  for (std::size_t i = 0; i < k.size(); ++i) {
+    EXPECT_EQ(k[i].first, i);
+    EXPECT_EQ(k[i].x, b.x[i]);
+    EXPECT_EQ(k[i].m, b.m[i]);
+  }
+}
+
+TEST(ClusterFinder, PartitionConservesMassAndMomentum) {
+  Rng rng(11);
+  const double L = 200;
+  Bodies b;
+  for (int i = 0; i < 200; ++i) b.push_back(i + 0.4 * rng.uniform(), 0.05 * rng.uniform(), 1.0);
+  const auto k = find_clusters(b, L, default_cluster_criteria(0.01, 1.0));
+  std::size_t members = 0;
+  double m = 0, p = 0;
+  for (const auto& c : k) {
+    members += c.count;
+    m += c.m;
+    p += c.m * c.v;
+    EXPECT_GE(c.x, 0.0);
+    EXPECT_LT(c.x, L);
+  }
+  EXPECT_EQ(members, b.size());
+  // 200 terms of size <= 1 (mass) or <= 0.05 (momentum): rounding well below 1e-12.
+  EXPECT_NEAR(m, total_mass(b), kRound);
+  EXPECT_NEAR(p, total_momentum(b), kRound);
+}
+
+TEST(ClusterFinder, FullyLinkedRingIsOneCluster) {
+  Bodies b;
+  for (int i = 0; i < 4; ++i) b.push_back(0.25 * i, 0.0, 1.0);
+  const auto k = find_clusters(b, 1.0, ClusterCriteria{0.5, 0.1});
+  ASSERT_EQ(k.size(), 1u);
+  EXPECT_EQ(k[0].count, 4u);
+}
+
+TEST(ClusterFinder, DefaultCriteriaFollowDeltaAndSpacing) {
+  const auto c = default_cluster_criteria(0.01, 2.0);
+  EXPECT_DOUBLE_EQ(c.max_dv, 0.02);
+  EXPECT_DOUBLE_EQ(c.max_gap, 1.0);
+  EXPECT_THROW(default_cluster_criteria(-1.0, 1.0), InputError);
+  EXPECT_THROW(default_cluster_criteria(0.01, 0.0), InputError);
+}
+
+TEST(ClusterFinder, RejectsBadInput) {
+  Bodies b;
+  b.push_back(2.0, 0, 1);
+  b.push_back(1.0, 0, 1);
+  EXPECT_THROW(find_clusters(b, 0.0, ClusterCriteria{}), InputError);
+  Bodies outside;
+  outside.push_back(11.0, 0, 1);
+  EXPECT_THROW(find_clusters(outside, 10.0, ClusterCriteria{}), InputError);
+  EXPECT_THROW(find_clusters(Bodies{}, -1.0, ClusterCriteria{}), InputError);
+}
+
+}  // namespace
+}  // namespace shockgas::particles
