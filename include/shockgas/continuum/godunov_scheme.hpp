@@ -1,0 +1,246 @@
+#pragma once
+// Conservative finite-volume schemes, generic over the physics (the pattern of
+// deal.II step-69's ProblemDescription and of Clawpack's Riemann solvers): the
+// code below never sees a flux formula, only a Physics type with
+//
+//     State                        cell averages of the conserved variables (std::array)
+//     State flux(State)            the physical flux F(U)
+//     State riemann_flux(L, R)     the numerical (Godunov) flux at an interface
+//     double speed(State)          the fastest signal speed of a cell state
+//
+// Cells [i dx, (i+1) dx), i = 0..n-1, with two ghost cells on each side filled by
+// the boundary rule (periodic, or outflow = zero-gradient copies of the edge cell).
+// One step is U_i <- U_i - (dt/dx) (F_{i+1/2} - F_{i-1/2}): mass and every other
+// conserved variable change only through interface fluxes, so on a periodic domain
+// their sums are conserved to rounding.
+//
+//  * step_godunov: first order, F_{i+1/2} = riemann_flux(U_i, U_{i+1}) (Godunov 1959).
+//    Stable (monotone, TVD) for dt max|speed| / dx <= 1.
+//  * step_muscl_hancock: second order (van Leer 1979; Toro, "Riemann Solvers and
+//    Numerical Methods for Fluid Dynamics", 3rd ed., §14.4): limited slopes per
+//    component, face values evolved by half a step with the physical flux, then the
+//    Riemann flux between the evolved faces. For linear advection it is Sweby's
+//    flux-limited scheme, TVD for Courant numbers in [0, 1] with any limiter in
+//    Sweby's region (minmod, van Leer, MC), hence the same bound 1.
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "shockgas/continuum/field.hpp"
+#include "shockgas/continuum/params.hpp"
+#include "shockgas/core/progress.hpp"
+
+namespace shockgas::continuum {
+
+enum class Boundary { periodic, outflow };
+
+template <class P>
+concept FiniteVolumePhysics = requires(const typename P::State& u) {
+  { P::flux(u) } -> std::same_as<typename P::State>;
+  { P::riemann_flux(u, u) } -> std::same_as<typename P::State>;
+  { P::speed(u) } -> std::convertible_to<double>;
+  { P::components } -> std::convertible_to<std::size_t>;
+  { P::component_names[0] } -> std::convertible_to<const char*>;  // for error messages
+};
+
+// What a step leaves for the time loop: the speed for the next CFL step and the
+// sum of every component of every cell (not finite iff some cell is not finite).
+struct StepSummary {
+  double max_speed = 0;  // max over cells of Physics::speed [length/time]
+  double checksum = 0;   // sum of all components of all cells
+};
+
+template <FiniteVolumePhysics PhysicsT>
+class FiniteVolumeGrid {
+ public:
+  using Physics = PhysicsT;
+  using State = typename Physics::State;
+  static constexpr std::size_t ghosts = 2;
+  static constexpr std::size_t components = Physics::components;
+
+  // cells: initial cell averages (at least 2); dx: cell width [length].
+  FiniteVolumeGrid(const std::vector<State>& cells, double dx, Boundary boundary)
+      : n_(cells.size()), dx_(dx), boundary_(boundary), u_(cells.size() + 2 * ghosts) {
+    assert(n_ >= 2 && dx > 0);
+    std::copy(cells.begin(), cells.end(), u_.begin() + ghosts);
+  }
+
+  std::size_t size() const { return n_; }
+  double dx() const { return dx_; }
+  const State& cell(std::size_t i) const { return u_[i + ghosts]; }
+
+  // Max speed and checksum of the current cells.
+  StepSummary summary() const {
+    StepSummary s;
+    for (std::size_t i = 0; i < n_; ++i) account(s, cell(i));
+    return s;
+  }
+
+  // Index of the first cell with a non-finite component, or size() if none.
+  std::size_t first_non_finite() const {
+    for (std::size_t i = 0; i < n_; ++i)
+      for (double c : cell(i))
+        if (!std::isfinite(c)) return i;
+    return n_;
+  }
+
+  // First-order Godunov step, in place: the flux at the right face of cell i is
+  // computed from the old U_i and U_{i+1} before U_i is overwritten.
+  StepSummary step_godunov(double dt) {
+    fill_ghosts();
+    const double lambda = dt / dx_;
+    State* u = u_.data() + ghosts;
+    State left_flux = Physics::riemann_flux(u[-1], u[0]);
+    StepSummary s;
+    for (std::size_t i = 0; i < n_; ++i) {
+      const State right_flux = Physics::riemann_flux(u[i], u[i + 1]);
+      for (std::size_t k = 0; k < components; ++k) u[i][k] -= lambda * (right_flux[k] - left_flux[k]);
+      account(s, u[i]);
+      left_flux = right_flux;
+    }
+    return s;
+  }
+
+  // Second-order MUSCL-Hancock step with slope limiter Lim (limiters.hpp).
+  template <class Lim>
+  StepSummary step_muscl_hancock(double dt) {
+    fill_ghosts();
+    evolve_faces<Lim>(0.5 * dt / dx_);
+    const double lambda = dt / dx_;
+    State* u = u_.data() + ghosts;
+    // Face values of cell i live at index i + 1 of minus_ (left face), plus_ (right face).
+    State left_flux = Physics::riemann_flux(plus_[0], minus_[1]);
+    StepSummary s;
+    for (std::size_t i = 0; i < n_; ++i) {
+      const State right_flux = Physics::riemann_flux(plus_[i + 1], minus_[i + 2]);
+      for (std::size_t k = 0; k < components; ++k) u[i][k] -= lambda * (right_flux[k] - left_flux[k]);
+      account(s, u[i]);
+      left_flux = right_flux;
+    }
+    return s;
+  }
+
+ private:
+  static void account(StepSummary& s, const State& u) {
+    s.max_speed = std::max(s.max_speed, static_cast<double>(Physics::speed(u)));
+    for (double c : u) s.checksum += c;
+  }
+
+  void fill_ghosts() {
+    State* u = u_.data() + ghosts;
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(n_);
+    for (std::ptrdiff_t g = 1; g <= static_cast<std::ptrdiff_t>(ghosts); ++g) {
+      if (boundary_ == Boundary::periodic) {
+        u[-g] = u[n - g];
+        u[n - 1 + g] = u[g - 1];
+      } else {
+        u[-g] = u[0];
+        u[n - 1 + g] = u[n - 1];
+      }
+    }
+  }
+
+  // Limited reconstruction U_i -/+ dU_i / 2 in cells -1..n, each face moved half a
+  // step by the cell's own flux difference: U_face -= (dt / 2dx) (F(U+) - F(U-)).
+  template <class Lim>
+  void evolve_faces(double half_lambda) {
+    minus_.resize(n_ + 2);
+    plus_.resize(n_ + 2);
+    const State* u = u_.data() + ghosts;
+    for (std::ptrdiff_t i = -1; i <= static_cast<std::ptrdiff_t>(n_); ++i) {
+      State lo, hi;
+      for (std::size_t k = 0; k < components; ++k) {
+        const double half_slope = 0.5 * Lim::slope(u[i][k] - u[i - 1][k], u[i + 1][k] - u[i][k]);
+        lo[k] = u[i][k] - half_slope;
+        hi[k] = u[i][k] + half_slope;
+      }
+      const State f_lo = Physics::flux(lo), f_hi = Physics::flux(hi);
+      for (std::size_t k = 0; k < components; ++k) {
+        const double change = half_lambda * (f_hi[k] - f_lo[k]);
+        lo[k] -= change;
+        hi[k] -= change;
+      }
+      minus_[static_cast<std::size_t>(i + 1)] = lo;
+      plus_[static_cast<std::size_t>(i + 1)] = hi;
+    }
+  }
+
+  std::size_t n_;
+  double dx_;
+  Boundary boundary_;
+  std::vector<State> u_;             // cells with ghosts: u_[ghosts + i] is cell i
+  std::vector<State> minus_, plus_;  // evolved face values of cells -1..n (MUSCL-Hancock)
+};
+
+// ---- The time loop and the input rules shared by the finite-volume solvers ----
+
+// Largest Courant number dt max|speed| / dx each scheme is stable for (see above).
+inline constexpr double kGodunovCflMax = 1.0;
+inline constexpr double kMusclHancockCflMax = 1.0;
+
+// Checks continuum.cells (>= 8: a periodic stencil of 5 cells plus room for one
+// wave to be resolved), continuum.cfl (in (0, cfl_max] unless allow_unstable),
+// continuum.boundary and t_end (finite, >= 0). Throws InputError naming the key.
+void check_finite_volume_input(const ContinuumParams& p, double t_end, double cfl_max,
+                               const std::string& scheme);
+Boundary boundary_from_name(const std::string& name);
+// Throws InputError naming initial.v0 / initial.rho0 if a cell average of the
+// initial data is not finite or a density is negative.
+void check_initial_averages(const CellAverages& a, double length);
+
+// Throws RunError: "<solver>: non-finite <component> = <value> in cell i (x = ...) at t = ...".
+[[noreturn]] void throw_non_finite(const std::string& solver, double t, std::size_t step,
+                                   std::size_t cell, double x, const std::string& component,
+                                   double value);
+// Throws RunError when the time step no longer advances t.
+[[noreturn]] void throw_stalled(const std::string& solver, double t, double dt);
+
+struct TimeLoop {
+  double t_end = 0;            // final time [time], reached exactly
+  double cfl = 0.5;            // Courant number: dt = cfl dx / max|speed|
+  std::string solver;          // name for errors ("godunov", ...)
+  ProgressCallback progress;   // called about every 1% of t_end
+};
+
+// Advances grid to loop.t_end with step(dt) -> StepSummary; returns the number of
+// steps. The last step is shortened so that t lands on t_end exactly. A
+// non-finite cell after any step throws RunError (solver, time, cell).
+template <class Grid, class StepFn>
+std::size_t advance(Grid& grid, const TimeLoop& loop, StepFn&& step) {
+  StepSummary s = grid.summary();
+  double t = 0;
+  std::size_t steps = 0;
+  double next_report = 0.01;
+  while (t < loop.t_end) {
+    const double remaining = loop.t_end - t;
+    double dt = s.max_speed > 0 ? loop.cfl * grid.dx() / s.max_speed : remaining;
+    const bool last = dt >= remaining;
+    if (last) dt = remaining;
+    if (!(t + dt > t)) throw_stalled(loop.solver, t, dt);
+    s = step(dt);
+    ++steps;
+    t = last ? loop.t_end : t + dt;
+    if (!std::isfinite(s.checksum)) {  // some cell is not finite (or the sum overflowed)
+      const std::size_t i = grid.first_non_finite();
+      if (i < grid.size()) {
+        const auto& u = grid.cell(i);
+        std::size_t k = 0;
+        while (k + 1 < u.size() && std::isfinite(u[k])) ++k;
+        throw_non_finite(loop.solver, t, steps, i, (static_cast<double>(i) + 0.5) * grid.dx(),
+                         Grid::Physics::component_names[k], u[k]);
+      }
+    }
+    if (loop.progress && t >= next_report * loop.t_end) {
+      loop.progress(t / loop.t_end, t);
+      next_report = std::floor(100 * t / loop.t_end + 1) / 100;
+    }
+  }
+  return steps;
+}
+
+}  // namespace shockgas::continuum

@@ -1,0 +1,23 @@
+#pragma once
+// The pressureless gas (sticky particles' continuum) by first-order Godunov
+// finite volume (godunov_scheme.hpp with pressureless_physics.hpp).
+#include "shockgas/continuum/field.hpp"
+#include "shockgas/continuum/params.hpp"
+#include "shockgas/core/initial_condition.hpp"
+#include "shockgas/core/progress.hpp"
+
+namespace shockgas::continuum {
+
+// Solves rho_t + (rho u)_x = 0, (rho u)_t + (rho u^2)_x = 0 from the cell
+// averages cell_averages(f, p.cells) (m = rho v per cell) to t_end on
+// [0, f.length) with p.boundary, dt = p.cfl dx / max|u|, p.cfl in (0, 1] unless
+// p.allow_unstable (the Godunov flux moves a cell's mass at most one cell per step,
+// which keeps rho >= 0 and u within its initial range). Mass and momentum are
+// conserved to rounding on a periodic domain; clusters are delta-shocks moving at
+// their momentum / mass. Solver name "pressureless".
+// Returns x, v = m / rho (0 in vacuum), rho at t_end and stats["steps"].
+// Errors as solve_godunov.
+ContinuumResult solve_pressureless(const InitialField& f, const ContinuumParams& p, double t_end,
+                                   const ProgressCallback& progress = {});
+
+}  // namespace shockgas::continuum
