@@ -24,6 +24,9 @@ void validate(const ParticleParams& p) {
     require(std::isfinite(t) && t >= 0 && t <= p.t_end, "particles.snapshots", t,
             "times in [0, particles.t_end]");
   require_above("particles.histogram_zmax", p.histogram_zmax, 0.0);
+  require(p.spacetime_frames >= 2, "particles.spacetime_frames", p.spacetime_frames, "an integer >= 2");
+  require(std::isfinite(p.max_wall_seconds) && p.max_wall_seconds >= 0, "particles.max_wall_seconds",
+          p.max_wall_seconds, "a finite number of seconds >= 0 (0 = no limit)");
 }
 
 }  // namespace shockgas::particles

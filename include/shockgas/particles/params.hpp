@@ -1,6 +1,7 @@
 #pragma once
 // Scene table [particles]: the physics of the gas and what to observe.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct ParticleParams {
   bool spacetime = false;               // record trajectories for a space-time diagram (N <= 10^4)
   std::size_t histogram_bins = 0;       // bins of the scaled velocity histogram z = v t^(1/3); 0 = none
   double histogram_zmax = 4.0;          // histogram range |z| <= zmax [length/time^(2/3)]
+  std::size_t spacetime_frames = 200;   // frames of the space-time record, equally spaced in [0, t_end], >= 2
+  bool clusters = true;                 // count clusters (find_clusters, default criteria) at the samples
+  std::uint64_t max_collisions = 0;     // stop a realization after this many collisions; 0 = no limit
+  double max_wall_seconds = 0.0;        // stop a realization after this wall-clock time [s]; 0 = no limit
 };
 
 // Throws InputError naming the first key out of range.

@@ -1,0 +1,81 @@
+#pragma once
+// The collision rule of the gas: the physics of shockgas::particles in one place.
+//
+// Two neighbouring bodies, left (mass mL, velocity v) and right (mass mR,
+// velocity u), meet with approach speed g = v - u > 0. With restitution r:
+//
+//     v' = v - (1 + r) mR / (mL + mR) g,    u' = u + (1 + r) mL / (mL + mR) g,
+//
+// which keeps the momentum mL v + mR u and maps g -> -r g. The kinetic energy lost
+// is (1 - r^2) mu g^2 / 2 with the reduced mass mu = mL mR / (mL + mR).
+//
+// Kinds (Ben-Naim, Chen, Doolen & Redner, PRL 83, 4069 (1999)):
+//  * g < delta: sub-threshold. Elastic (r = 1) by default, or, with
+//    subthreshold = "sticky", a merge.
+//  * otherwise r = 0 is a merge, r > 0 an inelastic collision.
+// A merge is a true aggregation: one body of mass mL + mR at the centre-of-mass
+// velocity (mL v + mR u) / (mL + mR), losing mu g^2 / 2. Point particles with
+// r = 0 but no merge would collide infinitely often inside a cluster.
+#include <cstdint>
+
+namespace shockgas::particles {
+
+enum class CollisionKind : std::uint8_t {
+  inelastic = 0,  // g >= delta, 0 < r <= 1
+  elastic = 1,    // g < delta, sub-threshold elastic
+  merge = 2,      // r = 0, or g < delta with sticky sub-threshold
+};
+
+// The rule's parameters, fixed for a run.
+struct CollisionRule {
+  double r = 0.9;               // restitution [1], 0 <= r <= 1
+  double delta = 1e-2;          // sub-threshold velocity [length/time], >= 0
+  bool sticky_subthreshold = false;  // sub-threshold collisions merge instead of bouncing
+
+  // True when some collision of this rule can merge bodies.
+  bool can_merge() const { return r == 0.0 || (sticky_subthreshold && delta > 0.0); }
+
+  // Kind of a collision with approach speed g > 0.
+  CollisionKind classify(double g) const {
+    if (g < delta) return sticky_subthreshold ? CollisionKind::merge : CollisionKind::elastic;
+    return r == 0.0 ? CollisionKind::merge : CollisionKind::inelastic;
+  }
+
+  // Restitution of a non-merging collision of this kind.
+  double restitution(CollisionKind kind) const { return kind == CollisionKind::elastic ? 1.0 : r; }
+};
+
+// Velocities after a bouncing collision with restitution r (unequal masses).
+// v, u: left and right velocities in; overwritten with the velocities out.
+// Returns the kinetic energy lost.
+inline double bounce(double& v, double& u, double mL, double mR, double r) {
+  const double g = v - u;
+  const double M = mL + mR;
+  v -= (1.0 + r) * (mR / M) * g;
+  u += (1.0 + r) * (mL / M) * g;
+  return 0.5 * (1.0 - r * r) * (mL * mR / M) * g * g;
+}
+
+// Equal-mass bounce: v' = v - (1 + r) g / 2, u' = u + (1 + r) g / 2.
+inline double bounce_equal(double& v, double& u, double m, double r) {
+  const double g = v - u;
+  const double dv = 0.5 * (1.0 + r) * g;
+  v -= dv;
+  u += dv;
+  return 0.25 * (1.0 - r * r) * m * g * g;
+}
+
+struct Merged {
+  double v = 0;          // centre-of-mass velocity [length/time]
+  double m = 0;          // summed mass [mass]
+  double dissipated = 0; // kinetic energy lost, mu g^2 / 2 [mass length^2/time^2]
+};
+
+// One body out of two: mass and momentum kept.
+inline Merged merge(double v, double u, double mL, double mR) {
+  const double M = mL + mR;
+  const double g = v - u;
+  return {(mL * v + mR * u) / M, M, 0.5 * (mL * mR / M) * g * g};
+}
+
+}  // namespace shockgas::particles

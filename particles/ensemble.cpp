@@ -1,0 +1,136 @@
+// Ensembles of realizations: run on worker threads, combined in index order so
+// that the result does not depend on the number of threads.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "shockgas/particles/simulate.hpp"
+
+namespace shockgas::particles {
+
+namespace {
+
+// Mean and standard error of column `col` over runs, per sample index.
+SeriesStats stats(const std::vector<RunResult>& runs, std::size_t samples,
+                  std::vector<double> TimeSeries::*col) {
+  SeriesStats s{std::vector<double>(samples, 0.0), std::vector<double>(samples, 0.0)};
+  for (std::size_t k = 0; k < samples; ++k) {
+    double sum = 0, n = 0;
+    for (const RunResult& r : runs)
+      if (k < (r.series.*col).size()) sum += (r.series.*col)[k], n += 1;
+    if (n == 0) continue;
+    const double mean = sum / n;
+    double ss = 0;
+    for (const RunResult& r : runs)
+      if (k < (r.series.*col).size()) ss += ((r.series.*col)[k] - mean) * ((r.series.*col)[k] - mean);
+    s.mean[k] = mean;
+    s.stderr_[k] = n > 1 ? std::sqrt(ss / (n - 1) / n) : 0.0;
+  }
+  return s;
+}
+
+std::vector<double> mean_histogram(const std::vector<RunResult>& runs) {
+  std::vector<double> h;
+  std::vector<double> n;
+  for (const RunResult& r : runs) {
+    const std::vector<double>& d = r.histogram.density;
+    if (d.size() > h.size()) h.resize(d.size(), 0.0), n.resize(d.size(), 0.0);
+    for (std::size_t i = 0; i < d.size(); ++i) h[i] += d[i], n[i] += 1;
+  }
+  for (std::size_t i = 0; i < h.size(); ++i) h[i] /= n[i];
+  return h;
+}
+
+// Thread-safe progress: the mean of the workers' fractions.
+class SharedProgress {
+ public:
+  SharedProgress(const ProgressCallback& cb, std::size_t runs) : cb_(cb), fraction_(runs, 0.0) {}
+  ProgressCallback for_run(std::size_t k) {
+    if (!cb_) return {};
+    return [this, k](double f, double t) { report(k, f, t); };
+  }
+  void report(std::size_t k, double f, double t) {
+    std::lock_guard lock(mutex_);
+    fraction_[k] = f;
+    double sum = 0;
+    for (double x : fraction_) sum += x;
+    cb_(sum / static_cast<double>(fraction_.size()), t);
+  }
+
+ private:
+  const ProgressCallback& cb_;
+  std::mutex mutex_;
+  std::vector<double> fraction_;
+};
+
+std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p, SharedProgress& progress) {
+  const std::size_t R = p.realizations;
+  const double L = domain_length(ip);
+  std::vector<RunResult> runs(R);
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto worker = [&] {
+    for (std::size_t k = next++; k < R; k = next++) {
+      try {
+        runs[k] = simulate(make_initial_bodies(ip, k), L, p, progress.for_run(k));
+        if (ProgressCallback cb = progress.for_run(k)) cb(1.0, p.t_end);
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+        next = R;
+      }
+    }
+  };
+  const std::size_t hw = std::max<std::size_t>(1, std::thread::hardware_concurrency());
+  const std::size_t threads = std::min(R, p.threads == 0 ? hw : p.threads);
+  std::vector<std::thread> pool;
+  for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
+  worker();
+  for (std::thread& th : pool) th.join();
+  if (error) std::rethrow_exception(error);
+  return runs;
+}
+
+}  // namespace
+
+EnsembleResult run_ensemble(const InitialParams& ip, const ParticleParams& p, const ProgressCallback& progress) {
+  validate(ip);
+  validate(p);
+  const auto start = std::chrono::steady_clock::now();
+  SharedProgress shared(progress, p.realizations);
+  std::vector<RunResult> runs = run_all(ip, p, shared);
+
+  EnsembleResult e;
+  std::size_t samples = 0;
+  for (const RunResult& r : runs) samples = std::max(samples, r.series.size());
+  for (const RunResult& r : runs)
+    if (r.series.size() == samples) e.t = r.series.t;
+  e.count.assign(samples, 0.0);
+  for (const RunResult& r : runs)
+    for (std::size_t k = 0; k < r.series.size(); ++k) e.count[k] += 1;
+  e.T = stats(runs, samples, &TimeSeries::T);
+  e.mean_v = stats(runs, samples, &TimeSeries::mean_v);
+  e.n_bodies = stats(runs, samples, &TimeSeries::n_bodies);
+  e.n_clusters = stats(runs, samples, &TimeSeries::n_clusters);
+  e.collisions = stats(runs, samples, &TimeSeries::collisions);
+  e.inelastic = stats(runs, samples, &TimeSeries::inelastic);
+  e.elastic = stats(runs, samples, &TimeSeries::elastic);
+  e.merges = stats(runs, samples, &TimeSeries::merges);
+  e.dissipated = stats(runs, samples, &TimeSeries::dissipated);
+  e.histogram = mean_histogram(runs);
+  for (const RunResult& r : runs) {
+    e.stops.push_back(r.stop);
+    e.collisions_per_realization.push_back(r.collisions);
+    e.total_collisions += r.collisions;
+  }
+  e.first = std::move(runs.front());
+  e.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return e;
+}
+
+}  // namespace shockgas::particles

@@ -1,0 +1,219 @@
+#pragma once
+// The event-driven engine (private to particles/): point bodies on a ring or an
+// open line, only neighbours collide, so the bodies never change order.
+//
+// Body i keeps its position x at its own local time t and its velocity v
+// (x(s) = x + v (s - t), lazy positions). Pair slot i is body i with its right
+// neighbour; its predicted contact time sits in a tournament tree. A collision
+// changes the velocities of two bodies, hence only the times of the slots
+// left(i), i and right(i).
+//
+// Two layouts, chosen once per run:
+//  * Linked = false: equal masses, no merges; neighbours are i +- 1 (mod N on the
+//    ring). 24 bytes per body + 32 per tree slot = 56 bytes per particle.
+//  * Linked = true: masses and merges; the live bodies form a doubly linked list
+//    (a ring on the ring). A merge keeps the left body, unlinks the right one and
+//    sets its slot to +inf. 56 + 8 (mass) + 8 (links) bytes per particle.
+//
+// Ring geometry: positions are unrolled (never wrapped while running); the pair
+// whose right body has the lower index wraps, the right body counted at x + L.
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "shockgas/core/bodies.hpp"
+#include "shockgas/particles/collision.hpp"
+#include "shockgas/particles/event_tree.hpp"
+
+namespace shockgas::particles::detail {
+
+// Why run_until returned.
+enum class EngineStop { reached, collapse, halted };
+
+template <bool Linked>
+class EventEngine {
+ public:
+  static constexpr std::uint32_t none = 0xFFFFFFFFu;
+  // Collisions between two looks at the watch and at inelastic collapse.
+  static constexpr std::uint64_t check_every = 1u << 14;
+
+  // initial: sorted by x (ring: inside [0, L)); all masses equal unless Linked.
+  EventEngine(const Bodies& initial, double L, bool ring, const CollisionRule& rule)
+      : L_(L), ring_(ring), rule_(rule), n_(initial.size()), alive_(initial.size()) {
+    body_.resize(n_);
+    for (std::size_t i = 0; i < n_; ++i) body_[i] = {initial.x[i], initial.v[i], 0.0};
+    m0_ = initial.m[0];
+    if constexpr (Linked) {
+      mass_ = initial.m;
+      next_.resize(n_);
+      prev_.resize(n_);
+      for (std::size_t i = 0; i < n_; ++i) {
+        next_[i] = static_cast<std::uint32_t>(i + 1);
+        prev_[i] = static_cast<std::uint32_t>(i) - 1;  // none for i = 0
+      }
+      next_[n_ - 1] = ring_ ? 0 : none;
+      prev_[0] = ring_ ? static_cast<std::uint32_t>(n_ - 1) : none;
+    }
+    tree_.reset(n_);
+    for (std::size_t i = 0; i < n_; ++i) tree_.set(i, pair_time(i));
+    tree_.rebuild();
+  }
+
+  // Processes every collision at time <= t_stop; then now() = t_stop unless
+  // stopped early. watch(now, collisions) is called every check_every collisions
+  // and returns false to halt. Inelastic collapse: a window of check_every
+  // collisions during which time advanced by less than 1e-10 max(1, t).
+  template <class Watch>
+  EngineStop run_until(double t_stop, Watch&& watch) {
+    while (tree_.top_time() <= t_stop) {
+      collide(tree_.top());
+      if ((++count_[3] & (check_every - 1)) == 0) {
+        if (now_ - window_start_ <= 1e-10 * std::max(1.0, std::abs(now_))) return EngineStop::collapse;
+        window_start_ = now_;
+        if (!watch(now_, count_[3])) return EngineStop::halted;
+      }
+    }
+    now_ = std::max(now_, t_stop);
+    return EngineStop::reached;
+  }
+
+  double now() const { return now_; }
+  std::size_t alive() const { return alive_; }
+  // Collisions by kind (CollisionKind order), and all of them.
+  std::uint64_t count(CollisionKind kind) const { return count_[static_cast<int>(kind)]; }
+  std::uint64_t collisions() const { return count_[3]; }
+  double dissipated() const { return dissipated_; }
+  // Position (unrolled) of the body of the last collision.
+  double last_position() const { return last_x_; }
+
+  // Visits the live bodies in order: f(index, x at time t (unrolled), v, m).
+  template <class F>
+  void for_each_body(double t, F&& f) const {
+    for (std::size_t i = 0; i < n_; ++i) {
+      if constexpr (Linked)
+        if (mass_[i] == 0.0) continue;
+      const Body& b = body_[i];
+      f(i, b.x + b.v * (t - b.t), b.v, mass(i));
+    }
+  }
+
+ private:
+  struct Body {
+    double x;  // position at local time t [length], unrolled
+    double v;  // velocity [length/time]
+    double t;  // local time [time]
+  };
+
+  double mass(std::size_t i) const {
+    if constexpr (Linked) return mass_[i];
+    return m0_;
+  }
+  // Right neighbour of body i, or none.
+  std::size_t right(std::size_t i) const {
+    if constexpr (Linked) {
+      const std::uint32_t j = next_[i];
+      return j == i ? none : j;
+    }
+    if (i + 1 < n_) return i + 1;
+    return ring_ ? 0 : none;
+  }
+  std::size_t left(std::size_t i) const {
+    if constexpr (Linked) {
+      const std::uint32_t j = prev_[i];
+      return j == i ? none : j;
+    }
+    if (i > 0) return i - 1;
+    return ring_ ? n_ - 1 : none;
+  }
+
+  // Contact time of slot i: the gap closes at speed g = v_i - v_j.
+  double pair_time(std::size_t i) const {
+    const std::size_t j = right(i);
+    if (j == none) return EventTree::never;
+    const Body& a = body_[i];
+    const Body& c = body_[j];
+    const double shift = j <= i ? L_ : 0.0;
+    const double g = a.v - c.v;
+    const double tm = std::max(a.t, c.t);
+    const double gap = (c.x + c.v * (tm - c.t) + shift) - (a.x + a.v * (tm - a.t));
+    const double t = tm + std::max(gap, 0.0) / g;
+    return g > 0 ? t : EventTree::never;
+  }
+
+  void collide(std::size_t i) {
+    const std::size_t j = right(i);
+    assert(j != none);
+    const double t = tree_.top_time();
+    Body& a = body_[i];
+    Body& c = body_[j];
+    const double x = a.x + a.v * (t - a.t);
+    a.x = x;
+    a.t = t;
+    c.x = j <= i ? x - L_ : x;
+    c.t = t;
+    now_ = t;
+    last_x_ = x;
+    const double g = a.v - c.v;
+    if constexpr (Linked) {
+      const CollisionKind kind = rule_.classify(g);
+      ++count_[static_cast<int>(kind)];
+      if (kind == CollisionKind::merge) return merge(i, j);
+      dissipated_ += bounce(a.v, c.v, mass_[i], mass_[j], rule_.restitution(kind));
+      refresh(left(i), i, j);
+    } else {
+      const bool sub = g < rule_.delta;
+      ++count_[sub];  // CollisionKind::inelastic = 0, elastic = 1
+      dissipated_ += bounce_equal(a.v, c.v, m0_, sub ? 1.0 : rule_.r);
+      refresh(left(i), i, j);
+    }
+  }
+
+  // Body j joins body i (j = right(i)).
+  void merge(std::size_t i, std::size_t j) {
+    const Merged out = particles::merge(body_[i].v, body_[j].v, mass_[i], mass_[j]);
+    body_[i].v = out.v;
+    mass_[i] = out.m;
+    mass_[j] = 0.0;
+    dissipated_ += out.dissipated;
+    const std::uint32_t k = next_[j];
+    next_[i] = k;
+    if (k != none) prev_[k] = static_cast<std::uint32_t>(i);
+    --alive_;
+    tree_.set(j, EventTree::never);
+    tree_.refresh_path(j);
+    const std::size_t p = left(i);
+    refresh(p, i, none);
+  }
+
+  // Recomputes slots p (left of i, may be none), i and j (right of i, may be none).
+  void refresh(std::size_t p, std::size_t i, std::size_t j) {
+    if (p != none) tree_.set(p, pair_time(p));
+    tree_.set(i, pair_time(i));
+    if (j != none) tree_.set(j, pair_time(j));
+    if (p != none && j != none && p + 1 == i && i + 1 == j) return tree_.refresh_range(p, j);
+    if (p != none && p + 1 == i && j == none) return tree_.refresh_range(p, i);
+    if (p != none) tree_.refresh_path(p);
+    tree_.refresh_path(i);
+    if (j != none) tree_.refresh_path(j);
+  }
+
+  double L_;
+  bool ring_;
+  CollisionRule rule_;
+  std::size_t n_;
+  std::size_t alive_;
+  double m0_ = 1.0;
+  std::vector<Body> body_;
+  std::vector<double> mass_;                 // Linked only; 0 = merged away
+  std::vector<std::uint32_t> next_, prev_;   // Linked only
+  EventTree tree_;
+  double now_ = 0.0;
+  double window_start_ = 0.0;
+  double last_x_ = 0.0;
+  double dissipated_ = 0.0;
+  std::array<std::uint64_t, 4> count_{};  // inelastic, elastic, merge, all
+};
+
+}  // namespace shockgas::particles::detail

@@ -1,0 +1,15 @@
+#pragma once
+// The exact sticky gas as a model (particles.solver = "hull", r = 0): the
+// observables of RunResult from the lower-convex-hull solution at each stop
+// time (core/sticky_hull.hpp), without simulating events. Private to particles/.
+#include "shockgas/core/bodies.hpp"
+#include "shockgas/particles/params.hpp"
+#include "shockgas/particles/run_result.hpp"
+
+namespace shockgas::particles::detail {
+
+// Collisions are merges: N - (number of clusters); dissipated energy: the
+// kinetic energy lost since t = 0. Inputs checked by the caller.
+RunResult simulate_hull(const Bodies& initial, double L, bool ring, const ParticleParams& p);
+
+}  // namespace shockgas::particles::detail

@@ -1,0 +1,75 @@
+#pragma once
+// The observer of a particle run (private to particles/): it owns the schedule
+// of stop times (samples, snapshots, space-time frames) and turns the state at
+// each stop into the records of RunResult. Used by the event engine and by the
+// exact hull model alike, so both report the same observables.
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "shockgas/core/bodies.hpp"
+#include "shockgas/particles/cluster_finder.hpp"
+#include "shockgas/particles/params.hpp"
+#include "shockgas/particles/run_result.hpp"
+
+namespace shockgas::particles::detail {
+
+// The live bodies in chain order (increasing index of their first particle).
+// first[b]: index of the first original particle of body b; body b holds the
+// particles first[b] .. first[b+1]-1, the last body also those before first[0]
+// (ring). x unrolled or wrapped, either.
+struct ChainState {
+  std::vector<double> x, v, m;
+  std::vector<std::size_t> first;
+  void push_back(std::size_t f, double xi, double vi, double mi) {
+    first.push_back(f);
+    x.push_back(xi);
+    v.push_back(vi);
+    m.push_back(mi);
+  }
+};
+
+// Cumulative collision counters at a stop.
+struct Counters {
+  std::uint64_t all = 0, inelastic = 0, elastic = 0, merges = 0;
+  double dissipated = 0;  // [mass length^2/time^2]
+};
+
+// The state as Bodies sorted by x, ring positions wrapped into [0, L).
+Bodies sorted_bodies(const ChainState& s, double L, bool ring);
+
+// Sample times: `samples` log-spaced times from 1 to t_end (from t_end / 1000 if
+// t_end <= 1); just t_end if samples = 1. The last is t_end exactly.
+std::vector<double> sample_times(double t_end, std::size_t samples);
+
+class Recorder {
+ public:
+  static constexpr double done = std::numeric_limits<double>::infinity();
+
+  // n: original particles; L: ring length or line extent (for the cluster criteria).
+  Recorder(const ParticleParams& p, std::size_t n, double L, bool ring);
+
+  // The next time the run must reach and observe; `done` after the last.
+  double next_stop() const;
+  // Observes every record due at t = next_stop().
+  void observe(double t, const ChainState& s, const Counters& c);
+  // Moves the records out, with the final state and how the run ended.
+  RunResult finish(const ChainState& final_state, const RunStop& stop, const Counters& c);
+
+ private:
+  void sample(double t, const ChainState& s, const Bodies& sorted, const Counters& c);
+  void histogram(double t, const ChainState& s);
+  void frame(double t, const ChainState& s);
+  double wrap(double x) const;
+
+  const ParticleParams& p_;
+  std::size_t n_;
+  double L_;
+  bool ring_;
+  ClusterCriteria criteria_;
+  std::vector<double> samples_, snapshots_, frames_;
+  std::size_t next_sample_ = 0, next_snapshot_ = 0, next_frame_ = 0;
+  RunResult out_;
+};
+
+}  // namespace shockgas::particles::detail

@@ -1,0 +1,116 @@
+#include "shockgas/particles/simulate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "event_engine.hpp"
+#include "hull_model.hpp"
+#include "recorder.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::particles {
+
+std::string to_string(StopReason reason) {
+  switch (reason) {
+    case StopReason::completed: return "completed";
+    case StopReason::collapse: return "collapse";
+    case StopReason::event_limit: return "event_limit";
+    case StopReason::wall_limit: return "wall_limit";
+  }
+  return "unknown";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void check_bodies(const Bodies& b, double L, bool ring) {
+  require(b.size() >= 2 && b.v.size() == b.size() && b.m.size() == b.size(), "initial.N", b.size(),
+          "at least 2 bodies with x, v and m each");
+  require(std::isfinite(L) && L > 0, "initial.L", L, "a finite length > 0");
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    require(std::isfinite(b.x[i]) && std::isfinite(b.v[i]), "initial.bodies", b.x[i], "finite x and v");
+    require(std::isfinite(b.m[i]) && b.m[i] > 0, "initial.bodies.m", b.m[i], "finite masses > 0");
+    require(i == 0 || b.x[i - 1] <= b.x[i], "initial.bodies.x", b.x[i], "positions sorted ascending");
+    require(!ring || (b.x[i] >= 0 && b.x[i] < L), "initial.bodies.x", b.x[i], "positions in [0, L) on a ring");
+  }
+}
+
+bool equal_masses(const Bodies& b) {
+  return std::all_of(b.m.begin(), b.m.end(), [&](double m) { return m == b.m[0]; });
+}
+
+// Share of the work done at time t: collisions grow ~ t^(2/3) in the sticky regime.
+double work_fraction(double t, double t_end) { return std::min(1.0, std::cbrt(t / t_end) * std::cbrt(t / t_end)); }
+
+// Decides, every few thousand collisions, whether to go on: limits and progress.
+struct Watch {
+  const ParticleParams& p;
+  const ProgressCallback& progress;
+  Clock::time_point start = Clock::now();
+  double last_report = 0;
+  StopReason reason = StopReason::completed;
+
+  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
+  bool operator()(double t, std::uint64_t collisions) {
+    if (p.max_collisions > 0 && collisions >= p.max_collisions) return reason = StopReason::event_limit, false;
+    const double s = elapsed();
+    if (p.max_wall_seconds > 0 && s >= p.max_wall_seconds) return reason = StopReason::wall_limit, false;
+    if (progress && s - last_report >= 0.1) {
+      last_report = s;
+      progress(work_fraction(t, p.t_end), t);
+    }
+    return true;
+  }
+};
+
+template <bool Linked>
+detail::ChainState chain_state(const detail::EventEngine<Linked>& engine, double t) {
+  detail::ChainState s;
+  engine.for_each_body(t, [&](std::size_t i, double x, double v, double m) { s.push_back(i, x, v, m); });
+  return s;
+}
+
+template <bool Linked>
+detail::Counters counters(const detail::EventEngine<Linked>& e) {
+  return {e.collisions(), e.count(CollisionKind::inelastic), e.count(CollisionKind::elastic),
+          e.count(CollisionKind::merge), e.dissipated()};
+}
+
+template <bool Linked>
+RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleParams& p,
+                     const ProgressCallback& progress) {
+  const CollisionRule rule{p.r, p.delta, p.subthreshold == "sticky"};
+  detail::Recorder recorder(p, initial.size(), L, ring);
+  detail::EventEngine<Linked> engine(initial, L, ring, rule);
+  Watch watch{p, progress};
+  RunStop stop;
+  for (double t = recorder.next_stop(); t != detail::Recorder::done; t = recorder.next_stop()) {
+    const detail::EngineStop s = engine.run_until(t, watch);
+    if (s == detail::EngineStop::collapse) stop = {StopReason::collapse, engine.now(), engine.last_position()};
+    if (s == detail::EngineStop::halted) stop = {watch.reason, engine.now(), 0.0};
+    if (s != detail::EngineStop::reached) break;
+    recorder.observe(t, chain_state(engine, t), counters(engine));
+  }
+  if (stop.reason == StopReason::completed) stop.time = engine.now();
+  RunResult out = recorder.finish(chain_state(engine, engine.now()), stop, counters(engine));
+  out.wall_seconds = watch.elapsed();
+  return out;
+}
+
+}  // namespace
+
+RunResult simulate(const Bodies& initial, double L, const ParticleParams& p, const ProgressCallback& progress) {
+  validate(p);
+  const bool ring = p.geometry == "ring";
+  check_bodies(initial, L, ring);
+  require(!p.spacetime || initial.size() <= 100000, "particles.spacetime", std::string("true"),
+          "a space-time record only for N <= 10^5");
+  if (p.solver == "hull") return detail::simulate_hull(initial, L, ring, p);
+  const CollisionRule rule{p.r, p.delta, p.subthreshold == "sticky"};
+  if (rule.can_merge() || !equal_masses(initial)) return run_events<true>(initial, L, ring, p, progress);
+  return run_events<false>(initial, L, ring, p, progress);
+}
+
+}  // namespace shockgas::particles
