@@ -1,0 +1,98 @@
+// solve_hopf_cole: input checks, the choice between the fft and log paths, and
+// the result. The paths themselves are in hopf_cole_fft.cpp and hopf_cole_kernel.cpp.
+#include "shockgas/continuum/hopf_cole.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::continuum {
+
+namespace {
+
+void check_input(const ContinuumParams& p, double t_end) {
+  require_above("continuum.nu", p.nu, 0.0);
+  require(p.cells >= 8, "continuum.cells", p.cells, "an integer >= 8");
+  require(p.hopf_cole_path == "auto" || p.hopf_cole_path == "fft" || p.hopf_cole_path == "log",
+          "continuum.hopf_cole_path", p.hopf_cole_path, "\"auto\", \"fft\" or \"log\"");
+  require(std::isfinite(t_end) && t_end >= 0, "continuum.t_end", t_end, "a finite time >= 0");
+}
+
+double max_abs(const std::vector<double>& v) {
+  double m = 0;
+  for (double x : v) m = std::max(m, std::abs(x));
+  return m;
+}
+
+std::string text(double x) {
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
+// Runs the fft path and, if its roundoff bound is above the tolerance, the log
+// path (auto) or a RunError (forced fft). Fills the note and the stats.
+std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const ContinuumParams& p, double t,
+                                     double tolerance, ContinuumResult& r) {
+  const double shift = psi0.mean_velocity * t;
+  const std::string spread = "DeltaPsi/2nu = " + text(r.stats["spread_over_2nu"]);
+  if (p.hopf_cole_path != "log") {
+    LogTheta fft = log_theta_fft(psi0, p.nu, t, shift);
+    r.stats["fft_velocity_error_bound"] = fft.velocity_error_bound;
+    const std::string bound = "roundoff bound on v " + text(fft.velocity_error_bound) +
+                              " vs tolerance rtol*max|v0| = " + text(tolerance);
+    if (fft.velocity_error_bound <= tolerance) {
+      r.method_note = "Hopf-Cole, fft path (" + spread + "; " + bound + ")";
+      return fft.values;
+    }
+    if (p.hopf_cole_path == "fft")
+      throw RunError("hopf_cole: the forced fft path lost its digits at t = " + text(t) + " (" + spread +
+                     "; " + bound + "); use continuum.hopf_cole_path = \"log\" or \"auto\"");
+    r.method_note = "Hopf-Cole, log-domain path: the fft path was rejected (" + spread + "; " + bound + ")";
+  } else {
+    r.method_note = "Hopf-Cole, log-domain path (forced; " + spread + ")";
+  }
+  LogTheta log = log_theta_kernel(psi0, p.nu, t, shift);
+  r.stats["log_path"] = 1;
+  r.stats["refinement"] = static_cast<double>(log.nodes_per_cell);
+  return log.values;
+}
+
+void require_finite(const ContinuumResult& r) {
+  for (std::size_t i = 0; i < r.v.size(); ++i)
+    if (!std::isfinite(r.v[i]))
+      throw RunError("hopf_cole: non-finite velocity in cell " + std::to_string(i) + " (x = " +
+                     text(r.x[i]) + ") at t = " + text(r.t));
+}
+
+}  // namespace
+
+ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p, double t_end,
+                                const ProgressCallback& progress) {
+  check_input(p, t_end);
+  const CellAverages initial = cell_averages(f, p.cells);
+  ContinuumResult r;
+  r.solver = "hopf_cole";
+  r.t = t_end;
+  r.length = f.length;
+  r.x = cell_centres(f.length, p.cells);
+  const MovingFramePotential psi0 = moving_frame_potential(initial.v, f.length);
+  r.stats["spread_over_2nu"] = psi0.spread() / (2 * p.nu);
+  r.stats["log_path"] = 0;
+  if (t_end == 0) {
+    r.v = initial.v;
+    r.method_note = "Hopf-Cole at t = 0: the initial cell averages";
+  } else {
+    const double tolerance = p.rtol * std::max(max_abs(initial.v), 1e-300);
+    r.v = velocity_from_log_theta(psi0, log_theta_chosen(psi0, p, t_end, tolerance, r), p.nu);
+  }
+  r.method_note += "; density not computed (Hopf-Cole gives v only), rho empty";
+  require_finite(r);
+  if (progress) progress(1.0, t_end);
+  return r;
+}
+
+}  // namespace shockgas::continuum
