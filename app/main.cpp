@@ -1,1 +1,3 @@
-int main() { return 0; }
+#include "shockgas/app/command.hpp"
+
+int main(int argc, char** argv) { return shockgas::app::run_command(argc, argv); }

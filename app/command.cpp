@@ -1,0 +1,89 @@
+#include "shockgas/app/command.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "shockgas/app/info.hpp"
+#include "shockgas/app/run.hpp"
+#include "shockgas/app/scene.hpp"
+#include "shockgas/core/error.hpp"
+#include "shockgas/version.hpp"
+
+namespace shockgas::app {
+
+namespace {
+
+constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
+
+struct Arguments {
+  std::string scene_path, out_dir, result_path;
+  std::vector<std::string> overrides;
+  bool defaults = false, quiet = false, no_plots = false;
+};
+
+void add_run(CLI::App& app, Arguments& args) {
+  auto* run = app.add_subcommand("run", "Run a scene (TOML) and write result.h5, summary.json, report.md, plots");
+  run->add_option("SCENE", args.scene_path, "scene file, e.g. data/scenes/default.toml")->required();
+  run->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)");
+  run->add_option("--set", args.overrides, "override a scene key: --set particles.r=0.5 (value read as TOML)")
+      ->allow_extra_args(false);
+  run->add_flag("--quiet,-q", args.quiet, "no progress output");
+  run->add_flag("--no-plots", args.no_plots, "skip the PNG plots");
+}
+
+int do_run(const Arguments& args) {
+  const Scene scene = load_scene(args.scene_path, args.overrides);  // InputError: nothing written
+  RunOptions options;
+  options.out_dir = args.out_dir;
+  options.progress = !args.quiet;
+  options.plots = !args.no_plots;
+  const std::string dir = run_scene(scene, options);
+  std::cout << "results in " << dir << "/\n";
+  return kExitOk;
+}
+
+int dispatch(const CLI::App& app, const Arguments& args) {
+  if (app.got_subcommand("run")) return do_run(args);
+  if (app.got_subcommand("info")) {
+    std::cout << describe_result(args.result_path);
+    return kExitOk;
+  }
+  if (app.got_subcommand("scene")) {
+    std::cout << default_scene_text();
+    return kExitOk;
+  }
+  std::cout << app.help();
+  return kExitBadInput;
+}
+
+}  // namespace
+
+int run_command(int argc, char** argv) {
+  CLI::App app{"shockgas: the 1-D inelastic/sticky gas and the Burgers equation, side by side"};
+  app.set_version_flag("--version", std::string("shockgas ") + kVersion + " (commit " + kGitCommit + ")");
+  app.require_subcommand(0, 1);
+  Arguments args;
+  add_run(app, args);
+  auto* info = app.add_subcommand("info", "What a result file holds, its scene and its provenance");
+  info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5")->required();
+  auto* scene = app.add_subcommand("scene", "Print the complete commented scene with every key and its default");
+  scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range")->required();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  try {
+    return dispatch(app, args);
+  } catch (const InputError& e) {
+    std::cerr << "shockgas: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "shockgas: run failed: " << e.what() << "\n";
+    return kExitFailure;
+  }
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,223 @@
+#include "shockgas/app/hdf5_file.hpp"
+
+#include <hdf5.h>
+
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+namespace {
+
+// Silences HDF5's own error printing once; failures are reported by check().
+void quiet_hdf5() {
+  static const bool done = [] {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    return true;
+  }();
+  (void)done;
+}
+
+std::int64_t check(std::int64_t id, const char* call, const std::string& object) {
+  if (id < 0) throw RunError(std::string("HDF5: ") + call + " failed on " + object);
+  return id;
+}
+
+int close_file(std::int64_t id) { return H5Fclose(id); }
+int close_group(std::int64_t id) { return H5Gclose(id); }
+int close_dataset(std::int64_t id) { return H5Dclose(id); }
+int close_space(std::int64_t id) { return H5Sclose(id); }
+int close_type(std::int64_t id) { return H5Tclose(id); }
+int close_attr(std::int64_t id) { return H5Aclose(id); }
+int close_plist(std::int64_t id) { return H5Pclose(id); }
+int close_object(std::int64_t id) { return H5Oclose(id); }
+
+H5Handle string_type() {
+  H5Handle t(check(H5Tcopy(H5T_C_S1), "H5Tcopy", "string type"), close_type);
+  check(H5Tset_size(t.get(), H5T_VARIABLE), "H5Tset_size", "string type");
+  check(H5Tset_cset(t.get(), H5T_CSET_UTF8), "H5Tset_cset", "string type");
+  return t;
+}
+
+void write_string_attribute(std::int64_t object, const std::string& name, const std::string& value) {
+  if (H5Aexists(object, name.c_str()) > 0) check(H5Adelete(object, name.c_str()), "H5Adelete", name);
+  H5Handle type = string_type();
+  H5Handle space(check(H5Screate(H5S_SCALAR), "H5Screate", name), close_space);
+  H5Handle attr(check(H5Acreate2(object, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                      "H5Acreate2", name),
+                close_attr);
+  const char* text = value.c_str();
+  check(H5Awrite(attr.get(), type.get(), &text), "H5Awrite", name);
+}
+
+std::string type_name(hid_t type) {
+  switch (H5Tget_class(type)) {
+    case H5T_FLOAT: return "float" + std::to_string(8 * H5Tget_size(type));
+    case H5T_INTEGER: return "int" + std::to_string(8 * H5Tget_size(type));
+    case H5T_STRING: return "string";
+    default: return "other";
+  }
+}
+
+std::string read_string_attribute(hid_t object, const char* name) {
+  if (H5Aexists(object, name) <= 0) return "";
+  H5Handle attr(check(H5Aopen(object, name, H5P_DEFAULT), "H5Aopen", name), close_attr);
+  H5Handle type(check(H5Aget_type(attr.get()), "H5Aget_type", name), close_type);
+  if (H5Tget_class(type.get()) == H5T_FLOAT) {
+    double v = 0;
+    check(H5Aread(attr.get(), H5T_NATIVE_DOUBLE, &v), "H5Aread", name);
+    return to_text(v);
+  }
+  if (H5Tget_class(type.get()) != H5T_STRING) return "(" + type_name(type.get()) + ")";
+  H5Handle mem = string_type();
+  char* text = nullptr;
+  check(H5Aread(attr.get(), mem.get(), &text), "H5Aread", name);
+  std::string value = text ? text : "";
+  H5free_memory(text);
+  return value;
+}
+
+}  // namespace
+
+H5Handle& H5Handle::operator=(H5Handle&& o) noexcept {
+  if (this != &o) {
+    reset();
+    id_ = o.id_;
+    close_ = o.close_;
+    o.id_ = -1;
+  }
+  return *this;
+}
+
+void H5Handle::reset() {
+  if (id_ >= 0 && close_) close_(id_);
+  id_ = -1;
+}
+
+Hdf5File Hdf5File::create(const std::string& path) {
+  quiet_hdf5();
+  return Hdf5File(H5Handle(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "H5Fcreate",
+                                 path),
+                           close_file));
+}
+
+Hdf5File Hdf5File::open(const std::string& path) {
+  quiet_hdf5();
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0) throw InputError("RESULT.h5", to_text(path), "an existing shockgas result file (HDF5)");
+  return Hdf5File(H5Handle(id, close_file));
+}
+
+H5Handle Hdf5File::ensure_group(const std::string& path) {
+  if (path == "/" || path.empty())
+    return H5Handle(check(H5Gopen2(file_.get(), "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
+  if (H5Lexists(file_.get(), path.c_str(), H5P_DEFAULT) > 0)
+    return H5Handle(check(H5Oopen(file_.get(), path.c_str(), H5P_DEFAULT), "H5Oopen", path), close_object);
+  H5Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate", path), close_plist);
+  check(H5Pset_create_intermediate_group(lcpl.get(), 1), "H5Pset_create_intermediate_group", path);
+  return H5Handle(check(H5Gcreate2(file_.get(), path.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate2",
+                        path),
+                  close_group);
+}
+
+void Hdf5File::write_raw(const std::string& path, const void* data, std::int64_t type,
+                         std::vector<std::uint64_t> dims, const std::string& unit, const std::string& description) {
+  std::vector<hsize_t> hdims(dims.begin(), dims.end());
+  H5Handle space(check(H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr), "H5Screate_simple",
+                       path),
+                 close_space);
+  H5Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate", path), close_plist);
+  check(H5Pset_create_intermediate_group(lcpl.get(), 1), "H5Pset_create_intermediate_group", path);
+  H5Handle set(check(H5Dcreate2(file_.get(), path.c_str(), type, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+                     "H5Dcreate2", path),
+               close_dataset);
+  std::size_t count = 1;
+  for (auto d : dims) count *= d;
+  if (count > 0) check(H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", path);
+  write_string_attribute(set.get(), "unit", unit);
+  if (!description.empty()) write_string_attribute(set.get(), "description", description);
+}
+
+void Hdf5File::write(const std::string& path, const std::vector<double>& data, const std::string& unit,
+                     const std::string& description) {
+  write_raw(path, data.data(), H5T_NATIVE_DOUBLE, {data.size()}, unit, description);
+}
+
+void Hdf5File::write(const std::string& path, const std::vector<std::int64_t>& data, const std::string& unit,
+                     const std::string& description) {
+  write_raw(path, data.data(), H5T_NATIVE_INT64, {data.size()}, unit, description);
+}
+
+void Hdf5File::write_matrix(const std::string& path, const std::vector<double>& data, std::size_t rows,
+                            std::size_t cols, const std::string& unit, const std::string& description) {
+  if (data.size() != rows * cols) throw RunError("HDF5: matrix " + path + " has the wrong size");
+  write_raw(path, data.data(), H5T_NATIVE_DOUBLE, {rows, cols}, unit, description);
+}
+
+void Hdf5File::set_attribute(const std::string& object, const std::string& name, const std::string& value) {
+  H5Handle obj = ensure_group(object);
+  write_string_attribute(obj.get(), name, value);
+}
+
+void Hdf5File::set_attribute(const std::string& object, const std::string& name, double value) {
+  H5Handle obj = ensure_group(object);
+  if (H5Aexists(obj.get(), name.c_str()) > 0) check(H5Adelete(obj.get(), name.c_str()), "H5Adelete", name);
+  H5Handle space(check(H5Screate(H5S_SCALAR), "H5Screate", name), close_space);
+  H5Handle attr(check(H5Acreate2(obj.get(), name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
+                                 H5P_DEFAULT),
+                      "H5Acreate2", name),
+                close_attr);
+  check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value), "H5Awrite", name);
+}
+
+namespace {
+herr_t collect_dataset(hid_t root, const char* name, const H5O_info_t* info, void* out) {
+  if (info->type != H5O_TYPE_DATASET) return 0;
+  auto& list = *static_cast<std::vector<DatasetInfo>*>(out);
+  H5Handle set(H5Dopen2(root, name, H5P_DEFAULT), close_dataset);
+  if (set.get() < 0) return -1;
+  H5Handle space(H5Dget_space(set.get()), close_space);
+  H5Handle type(H5Dget_type(set.get()), close_type);
+  DatasetInfo d;
+  d.path = std::string("/") + name;
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  std::vector<hsize_t> dims(rank > 0 ? rank : 0);
+  if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  d.shape.assign(dims.begin(), dims.end());
+  d.type = type_name(type.get());
+  d.unit = read_string_attribute(set.get(), "unit");
+  d.description = read_string_attribute(set.get(), "description");
+  list.push_back(std::move(d));
+  return 0;
+}
+}  // namespace
+
+std::vector<DatasetInfo> Hdf5File::datasets() const {
+  std::vector<DatasetInfo> list;
+  check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect_dataset, &list, H5O_INFO_BASIC), "H5Ovisit",
+        "file");
+  return list;
+}
+
+std::vector<std::pair<std::string, std::string>> Hdf5File::attributes(const std::string& object) const {
+  std::vector<std::pair<std::string, std::string>> out;
+  H5Handle obj(check(H5Oopen(file_.get(), object.c_str(), H5P_DEFAULT), "H5Oopen", object), close_object);
+  H5O_info_t info;
+  check(H5Oget_info2(obj.get(), &info, H5O_INFO_NUM_ATTRS), "H5Oget_info2", object);
+  for (hsize_t i = 0; i < info.num_attrs; ++i) {
+    char name[256];
+    H5Aget_name_by_idx(obj.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
+    out.emplace_back(name, read_string_attribute(obj.get(), name));
+  }
+  return out;
+}
+
+std::vector<double> Hdf5File::read(const std::string& path) const {
+  H5Handle set(check(H5Dopen2(file_.get(), path.c_str(), H5P_DEFAULT), "H5Dopen2", path), close_dataset);
+  H5Handle space(check(H5Dget_space(set.get()), "H5Dget_space", path), close_space);
+  const auto n = H5Sget_simple_extent_npoints(space.get());
+  std::vector<double> data(n > 0 ? n : 0);
+  if (n > 0) check(H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "H5Dread", path);
+  return data;
+}
+
+}  // namespace shockgas::app

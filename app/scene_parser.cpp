@@ -1,0 +1,166 @@
+// Scene text -> Scene: TOML parsing, --set overrides, strict key checking and
+// validation, every error located at file:line (or at the --set that caused it).
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "scene_schema.hpp"
+#include "shockgas/app/scene.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+namespace {
+
+std::string location(const std::string& path, const toml::node& node) {
+  return path + ":" + std::to_string(node.source().begin.line);
+}
+
+const KeySpec* find_key(const std::string& table, const std::string& key) {
+  for (const auto& spec : scene_schema())
+    if (spec.table == table && spec.key == key) return &spec;
+  return nullptr;
+}
+
+bool is_table(const std::string& name) {
+  const auto& tables = scene_tables();
+  return std::any_of(tables.begin(), tables.end(), [&](const TableSpec& t) { return t.name == name; });
+}
+
+std::string keys_of(const std::string& table) {
+  std::string list;
+  for (const auto& spec : scene_schema())
+    if (spec.table == table) list += (list.empty() ? "" : ", ") + spec.key;
+  return list;
+}
+
+std::string table_names() {
+  std::string list;
+  for (const auto& t : scene_tables()) list += (list.empty() ? "[" : ", [") + t.name + "]";
+  return list;
+}
+
+// "--set particles.r=0.5": the value is read as a TOML value; a bare word that
+// is not TOML is a string.
+void apply_override(toml::table& root, const std::string& assignment, Scene& scene) {
+  const auto eq = assignment.find('=');
+  const std::string key = assignment.substr(0, eq);
+  const auto dot = key.find('.');
+  if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == key.size())
+    throw InputError("--set", to_text(assignment), "table.key=value, e.g. particles.r=0.5");
+  const std::string table = key.substr(0, dot), name = key.substr(dot + 1);
+  const std::string text = assignment.substr(eq + 1);
+  toml::table parsed;
+  try {
+    parsed = toml::parse("value = " + text);
+  } catch (const toml::parse_error&) {
+    parsed.insert_or_assign("value", text);
+  }
+  if (!root.contains(table)) root.insert_or_assign(table, toml::table{});
+  auto* tbl = root[table].as_table();
+  if (!tbl) throw InputError(table, "(not a table)", "a table " + table_names(), "--set " + assignment);
+  tbl->insert_or_assign(name, *parsed["value"].node());
+  scene.key_origin[key] = "--set " + assignment;
+}
+
+void read_table(const std::string& table, const toml::table& tbl, const std::string& path, Scene& scene) {
+  for (const auto& [k, node] : tbl) {
+    const std::string key(k.str());
+    const std::string dotted = table + "." + key;
+    const auto origin = scene.key_origin.count(dotted) ? scene.key_origin[dotted] : location(path, node);
+    const KeySpec* spec = find_key(table, key);
+    if (!spec) throw InputError(dotted, node_text(node), "a key of [" + table + "]: " + keys_of(table), origin);
+    try {
+      spec->read(node, scene);
+    } catch (const InputError& e) {
+      throw e.located(origin);
+    }
+    scene.key_origin[dotted] = origin;
+  }
+}
+
+void read_tables(const toml::table& root, const std::string& path, Scene& scene) {
+  for (const auto& [k, node] : root) {
+    const std::string table(k.str());
+    const auto origin = location(path, node);
+    if (!is_table(table) || !node.is_table())
+      throw InputError(table, node_text(node), "the tables " + table_names() + " (keys go inside a table)",
+                       origin);
+    read_table(table, *node.as_table(), path, scene);
+  }
+  scene.has_particles = root.contains("particles");
+  scene.has_continuum = root.contains("continuum");
+  scene.has_compare = root.contains("compare");
+}
+
+// A relative initial.file written in a scene file is relative to that file.
+void resolve_file(Scene& scene, const std::string& path) {
+  auto& file = scene.initial.file;
+  if (file.empty() || std::filesystem::path(file).is_absolute()) return;
+  const auto origin = scene.key_origin["initial.file"];
+  if (origin.rfind("--set", 0) == 0) return;
+  const auto dir = std::filesystem::path(path).parent_path();
+  file = (dir / file).lexically_normal().string();
+}
+
+void validate_scene(const Scene& scene) {
+  validate(scene.initial);
+  particles::validate(scene.particles);
+  continuum::validate(scene.continuum);
+  const auto& c = scene.compare;
+  require(c.deposit == "ngp" || c.deposit == "cic", "compare.deposit", c.deposit, "\"ngp\" or \"cic\"");
+  require(std::isfinite(c.match_distance) && c.match_distance >= 0, "compare.match_distance", c.match_distance,
+          "a finite number >= 0");
+  require_above("compare.min_cluster_mass", c.min_cluster_mass, 0.0);
+  require(std::isfinite(c.cluster_gap) && c.cluster_gap >= 0, "compare.cluster_gap", c.cluster_gap,
+          "a finite number >= 0");
+  require(std::isfinite(c.cluster_dv) && c.cluster_dv >= 0, "compare.cluster_dv", c.cluster_dv,
+          "a finite number >= 0");
+  require_above("compare.fit_window", c.fit_window, 1.0);
+  if (scene.has_continuum && !scene.has_particles)
+    require(scene.continuum.t_end > 0, "continuum.t_end", scene.continuum.t_end,
+            "a time > 0 (a scene without [particles] must give continuum.t_end)");
+  if (scene.has_compare)
+    require(scene.has_particles && scene.has_continuum, "compare", std::string("(table)"),
+            "[compare] only together with [particles] and [continuum]");
+  if (scene.has_particles && scene.initial.velocities == "expression")
+    require(scene.initial.N >= 2, "initial.N", scene.initial.N, "an integer N >= 2");
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+  toml::table root;
+  try {
+    root = toml::parse(text, path);
+  } catch (const toml::parse_error& e) {
+    throw InputError("scene", to_text(path), std::string("valid TOML (") + std::string(e.description()) + ")",
+                     path + ":" + std::to_string(e.source().begin.line));
+  }
+  Scene scene;
+  scene.path = path;
+  scene.text = text;
+  scene.overrides = overrides;
+  for (const auto& o : overrides) apply_override(root, o, scene);
+  read_tables(root, path, scene);
+  if (scene.name.empty()) scene.name = std::filesystem::path(path).stem().string();
+  resolve_file(scene, path);
+  try {
+    validate_scene(scene);
+  } catch (const InputError& e) {
+    const auto it = scene.key_origin.find(e.key());
+    throw e.located(it != scene.key_origin.end() ? it->second : path);
+  }
+  return scene;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError("scene", to_text(path), "an existing, readable scene file (.toml)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path, overrides);
+}
+
+}  // namespace shockgas::app

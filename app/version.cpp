@@ -1,1 +1,0 @@
-#include "shockgas/version.hpp"

@@ -1,0 +1,75 @@
+#pragma once
+// The one wrapper of the HDF5 C API in shockgas: RAII handles, every call
+// checked (a failure throws RunError naming the call and the object).
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace shockgas::app {
+
+// Owns one HDF5 identifier and closes it with the matching H5*close.
+class H5Handle {
+ public:
+  using Closer = int (*)(std::int64_t);
+  H5Handle() = default;
+  H5Handle(std::int64_t id, Closer close) : id_(id), close_(close) {}
+  H5Handle(H5Handle&& o) noexcept : id_(o.id_), close_(o.close_) { o.id_ = -1; }
+  H5Handle& operator=(H5Handle&& o) noexcept;
+  H5Handle(const H5Handle&) = delete;
+  H5Handle& operator=(const H5Handle&) = delete;
+  ~H5Handle() { reset(); }
+  std::int64_t get() const { return id_; }
+  void reset();
+
+ private:
+  std::int64_t id_ = -1;
+  Closer close_ = nullptr;
+};
+
+// One dataset as seen by a reader.
+struct DatasetInfo {
+  std::string path;                  // "/particles/T"
+  std::vector<std::uint64_t> shape;  // dimensions
+  std::string type;                  // "float64", "int64", "string", ...
+  std::string unit;                  // attribute "unit", if any
+  std::string description;           // attribute "description", if any
+};
+
+class Hdf5File {
+ public:
+  // Creates (truncates) a file for writing.
+  static Hdf5File create(const std::string& path);
+  // Opens an existing file read-only.
+  static Hdf5File open(const std::string& path);
+
+  // Datasets; intermediate groups are created as needed. unit and description
+  // become string attributes of the dataset.
+  void write(const std::string& path, const std::vector<double>& data, const std::string& unit,
+             const std::string& description);
+  void write(const std::string& path, const std::vector<std::int64_t>& data, const std::string& unit,
+             const std::string& description);
+  // A rows x cols matrix, row-major.
+  void write_matrix(const std::string& path, const std::vector<double>& data, std::size_t rows,
+                    std::size_t cols, const std::string& unit, const std::string& description);
+
+  // Attributes on a group or dataset ("/" for the file); the group is created if missing.
+  void set_attribute(const std::string& object, const std::string& name, const std::string& value);
+  void set_attribute(const std::string& object, const std::string& name, double value);
+
+  // Reading (for `shockgas info` and tests).
+  std::vector<DatasetInfo> datasets() const;
+  std::vector<std::pair<std::string, std::string>> attributes(const std::string& object) const;
+  std::vector<double> read(const std::string& path) const;
+
+  void close() { file_.reset(); }
+
+ private:
+  explicit Hdf5File(H5Handle file) : file_(std::move(file)) {}
+  H5Handle ensure_group(const std::string& path);
+  void write_raw(const std::string& path, const void* data, std::int64_t type, std::vector<std::uint64_t> dims,
+                 const std::string& unit, const std::string& description);
+  H5Handle file_;
+};
+
+}  // namespace shockgas::app

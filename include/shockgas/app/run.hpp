@@ -1,0 +1,24 @@
+#pragma once
+// Running a scene: every part the scene asks for, then the result files.
+//
+// Output directory DIR: result.h5 (docs/output.md), summary.json, report.md,
+// *.png. result.h5 and summary.json are written under temporary names and
+// renamed when complete, so an interrupted run never leaves a file that looks
+// whole.
+#include <string>
+
+#include "shockgas/app/scene.hpp"
+
+namespace shockgas::app {
+
+struct RunOptions {
+  std::string out_dir;    // results directory; empty = out/<scene name>
+  bool progress = true;   // progress on stderr for runs longer than a second
+  bool plots = true;      // make plots (also needs scene output.plots)
+};
+
+// Returns the output directory. Throws RunError on a failure during the run
+// (the temporary files are removed).
+std::string run_scene(const Scene& scene, const RunOptions& options);
+
+}  // namespace shockgas::app

@@ -1,0 +1,72 @@
+#pragma once
+// A scene: one TOML file with a table per part ([initial], [particles],
+// [continuum], [compare], [output]). Which tables are present decides what runs:
+// a scene without [particles] runs no particles, without [continuum] no solver.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "shockgas/continuum/params.hpp"
+#include "shockgas/core/initial_condition.hpp"
+#include "shockgas/particles/params.hpp"
+
+namespace shockgas::app {
+
+// Scene table [compare]: the particle-continuum comparison.
+struct CompareParams {
+  std::string deposit = "cic";       // particles -> grid: "ngp" (nearest cell) | "cic" (cloud in cell)
+  double match_distance = 0.0;       // max shock-cluster distance for a match [length]; 0 = 2 cells
+  double min_cluster_mass = 2.0;     // clusters lighter than this are not counted as shocks [mass]
+  double cluster_gap = 0.0;          // max gap inside a cluster [length]; 0 = derived from delta
+  double cluster_dv = 0.0;           // max relative velocity inside a cluster [length/time]; 0 = derived
+  double fit_window = 10.0;          // late window of the T(t) fit: [t_end / fit_window, t_end], > 1
+};
+
+// Scene table [output].
+struct OutputParams {
+  bool plots = true;                 // make PNG plots (needs /usr/bin/python3 with matplotlib, h5py)
+  bool fields = true;                // store continuum fields (x, v, rho) in result.h5
+};
+
+struct Scene {
+  std::string name;                  // scene name ([scene] name, else the file's stem)
+  std::string description;           // what the scene shows
+  std::string expected_runtime;      // wall time on a 2-core machine, as text
+  std::string path;                  // file it came from
+  std::string text;                  // the scene text as given (before overrides)
+  std::vector<std::string> overrides;  // --set key=value, in order
+
+  InitialParams initial;
+  particles::ParticleParams particles;
+  continuum::ContinuumParams continuum;
+  CompareParams compare;
+  OutputParams output;
+
+  bool has_particles = false;
+  bool has_continuum = false;
+  bool has_compare = false;
+
+  // Where each key was set ("scene.toml:12" or "--set particles.r=0.5").
+  std::map<std::string, std::string> key_origin;
+
+  // Time at which the continuum is evaluated.
+  double continuum_t_end() const { return continuum.t_end > 0 ? continuum.t_end : particles.t_end; }
+};
+
+// Reads, overrides and validates a scene; throws InputError (located at
+// file:line) on an unknown key, a wrong type or a value out of range. No work
+// is done and nothing is written before this returns.
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Parses scene text (path used only in messages).
+Scene parse_scene(const std::string& text, const std::string& path,
+                  const std::vector<std::string>& overrides = {});
+
+// The complete commented scene with every key, its default, unit and allowed
+// range, generated from the same registration the parser uses.
+std::string default_scene_text();
+
+// The resolved parameters as TOML (every key, after defaults and overrides).
+std::string resolved_scene_text(const Scene& scene);
+
+}  // namespace shockgas::app
