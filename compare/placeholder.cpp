@@ -1,2 +1,0 @@
-// Replaced by the comparison code.
-namespace shockgas::compare {}
