@@ -61,11 +61,12 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
   return log.values;
 }
 
-void require_finite(const ContinuumResult& r) {
-  for (std::size_t i = 0; i < r.v.size(); ++i)
-    if (!std::isfinite(r.v[i]))
-      throw RunError("hopf_cole: non-finite velocity in cell " + std::to_string(i) + " (x = " +
-                     text(r.x[i]) + ") at t = " + text(r.t));
+// RunError naming the cell and time of the first non-finite entry of v.
+void require_finite(const std::vector<double>& v, const std::vector<double>& x, double t) {
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i]))
+      throw RunError("hopf_cole: non-finite velocity in cell " + std::to_string(i) + " (x = " + text(x[i]) +
+                     ") at t = " + text(t));
 }
 
 }  // namespace
@@ -79,6 +80,7 @@ ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p,
   r.t = t_end;
   r.length = f.length;
   r.x = cell_centres(f.length, p.cells);
+  require_finite(initial.v, r.x, 0.0);
   const MovingFramePotential psi0 = moving_frame_potential(initial.v, f.length);
   r.stats["spread_over_2nu"] = psi0.spread() / (2 * p.nu);
   r.stats["log_path"] = 0;
@@ -90,7 +92,7 @@ ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p,
     r.v = velocity_from_log_theta(psi0, log_theta_chosen(psi0, p, t_end, tolerance, r), p.nu);
   }
   r.method_note += "; density not computed (Hopf-Cole gives v only), rho empty";
-  require_finite(r);
+  require_finite(r.v, r.x, t_end);
   if (progress) progress(1.0, t_end);
   return r;
 }

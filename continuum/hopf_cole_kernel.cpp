@@ -85,8 +85,8 @@ class KernelSum {
     const double cut = 2 * nu_ * kWindow;
     const double lo = window_end(y, g_star, cut, -1), hi = window_end(y, g_star, cut, +1);
     const auto first = static_cast<std::size_t>(std::max(0.0, std::ceil((lo - nodes_.q[0]) / nodes_.dq)));
-    const auto last = std::min(nodes_.q.size() - 1,
-                               static_cast<std::size_t>(std::floor((hi - nodes_.q[0]) / nodes_.dq)));
+    const auto last =
+        std::min(nodes_.q.size() - 1, static_cast<std::size_t>(std::floor((hi - nodes_.q[0]) / nodes_.dq)));
     double sum = 0;
     for (std::size_t m = first; m <= last; ++m) sum += std::exp(-(G(m, y) - g_star) / (2 * nu_));
     return -g_star / (2 * nu_) + std::log(sum);

@@ -22,7 +22,9 @@ namespace {
 struct CosineSolution {
   double a = 0.9, nu = 0.05, U = 0.7, L = 1.0;
   double k() const { return 2 * pi / L; }
-  double log_theta(double y, double t) const { return std::log1p(a * std::exp(-nu * k() * k() * t) * std::cos(k() * y)); }
+  double log_theta(double y, double t) const {
+    return std::log1p(a * std::exp(-nu * k() * k() * t) * std::cos(k() * y));
+  }
   double v0(double x) const { return U + 2 * nu * a * k() * std::sin(k() * x) / (1 + a * std::cos(k() * x)); }
   std::vector<double> cell_averages(std::size_t cells, double t) const {
     const double h = L / static_cast<double>(cells);

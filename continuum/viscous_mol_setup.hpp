@@ -1,0 +1,34 @@
+#pragma once
+// What solve_cvode and solve_arkode share: input checks, the initial state, the
+// tolerances, the finiteness check and the result. Private to shockgas_continuum.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "shockgas/continuum/viscous_mol.hpp"
+
+namespace shockgas::continuum {
+
+struct MolProblem {
+  std::string solver;  // "cvode" | "arkode", for messages and the result
+  ViscousBurgersGrid grid;
+  std::vector<double> y0;     // interleaved (v_i, rho_i) cell averages at t = 0
+  double rtol = 0, atol = 0;  // atol = rtol * max(max|v0|, max rho0)
+  double t_end = 0;
+  double length = 1;
+};
+
+// Checks the input (InputError naming the key) and builds the problem.
+MolProblem make_mol_problem(const InitialField& f, const ContinuumParams& p, double t_end,
+                            const std::string& solver);
+
+// Output times of the integration (progress is reported at each): t_end * k / kOutputs.
+constexpr int kMolOutputs = 10;
+
+// RunError naming the solver, the cell, its centre and the time if y has a non-finite entry.
+void require_finite_state(const MolProblem& m, std::span<const double> y, double t);
+
+// The result at t_end from the final state; the caller adds stats and the note.
+ContinuumResult mol_result(const MolProblem& m, std::span<const double> y);
+
+}  // namespace shockgas::continuum
