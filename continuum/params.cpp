@@ -27,6 +27,8 @@ void validate(const ContinuumParams& p) {
   require_in_range("continuum.rtol", p.rtol, 1e-12, 1e-1);
   require(p.limiter == "minmod" || p.limiter == "vanleer" || p.limiter == "mc", "continuum.limiter",
           p.limiter, "\"minmod\", \"vanleer\" or \"mc\"");
+  require(p.hopf_cole_path == "auto" || p.hopf_cole_path == "fft" || p.hopf_cole_path == "log",
+          "continuum.hopf_cole_path", p.hopf_cole_path, "\"auto\", \"fft\" or \"log\"");
   require(p.boundary == "periodic" || p.boundary == "outflow", "continuum.boundary", p.boundary,
           "\"periodic\" or \"outflow\"");
 }

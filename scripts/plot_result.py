@@ -1,0 +1,134 @@
+#!/usr/bin/python3
+"""Plots of a shockgas result directory, read only from its result files.
+
+Usage: /usr/bin/python3 scripts/plot_result.py DIR
+Writes DIR/*.png. Exit code 3 when matplotlib or h5py is missing.
+"""
+import os
+import sys
+
+try:
+    import h5py
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+except ImportError as exc:  # the command turns this into a warning
+    print(f"plot_result.py: {exc}", file=sys.stderr)
+    sys.exit(3)
+
+
+def attr(obj, name, default=None):
+    value = obj.attrs.get(name, default)
+    return value.decode() if isinstance(value, bytes) else value
+
+
+def save(fig, out_dir, name):
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, name), dpi=110)
+    plt.close(fig)
+
+
+def plot_temperature(f, out_dir):
+    p = f["particles"]
+    t, T = p["t"][:], p["T"][:]
+    ok = (t > 0) & (T > 0)
+    if ok.sum() < 2:
+        return
+    t, T = t[ok], T[ok]
+    err = p["T_stderr"][:][ok] if "T_stderr" in p else None
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    ax.errorbar(t, T, yerr=err, fmt="o-", ms=3, label="particles")
+    if "compare" in f and "T_fit_t" in f["compare"]:
+        ax.plot(f["compare/T_fit_t"][:], f["compare/T_fit_T"][:], "k-", lw=2, alpha=0.6,
+                label=f"fit: T ~ t^{attr(f['compare'], 'T_exponent', 0):.3f}")
+    # guides: t^-2 (homogeneous cooling) through the steepest point, t^-2/3
+    # (sticky-gas regime) through the last point, each over two decades
+    slopes = np.gradient(np.log(T), np.log(t))
+    steep = int(np.argmin(slopes))
+    for power, anchor, style, label in [(-2.0, steep, "--", "t^-2"), (-2.0 / 3.0, len(t) - 1, ":", "t^-2/3")]:
+        tt = t[(t >= t[anchor] / 10) & (t <= t[anchor] * 10)]
+        ax.plot(tt, T[anchor] * (tt / t[anchor]) ** power, style, color="gray", label=label)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_ylim(T.min() / 3, T.max() * 3)
+    ax.set_xlabel("t")
+    ax.set_ylabel("T(t)")
+    ax.set_title("temperature")
+    ax.legend()
+    save(fig, out_dir, "temperature.png")
+
+
+def plot_histogram(f, out_dir):
+    h = f["particles/histogram"]
+    z, t, density = h["z"][:], h["t"][:], h["density"][:]
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    rows = np.unique(np.linspace(len(t) // 2, len(t) - 1, 4).astype(int))
+    for k in rows:
+        ax.semilogy(z, np.where(density[k] > 0, density[k], np.nan), "o-", ms=2, label=f"t = {t[k]:.3g}")
+    ax.set_xlabel("z = v t^(1/3)")
+    ax.set_ylabel("Phi(z)")
+    ax.set_title("scaled velocity distribution")
+    ax.legend()
+    save(fig, out_dir, "velocity_distribution.png")
+
+
+def plot_spacetime(f, out_dir):
+    s = f["particles/spacetime"]
+    t, x = s["t"][:], s["x"][:]
+    fig, ax = plt.subplots(figsize=(6, 6))
+    step = max(1, x.shape[1] // 400)
+    for j in range(0, x.shape[1], step):
+        xs = x[:, j].copy()
+        jumps = np.abs(np.diff(xs)) > 0.5 * (np.nanmax(x) - np.nanmin(x))
+        xs[1:][jumps] = np.nan  # do not draw wrap-around lines on the ring
+        ax.plot(xs, t, "k-", lw=0.3)
+    ax.set_xlabel("x")
+    ax.set_ylabel("t")
+    ax.set_title("space-time diagram")
+    save(fig, out_dir, "spacetime.png")
+
+
+def plot_fields(f, out_dir):
+    c = f["continuum"]
+    fig, (av, ar) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+    for name in c:
+        g = c[name]
+        if "x" not in g:
+            continue
+        av.plot(g["x"][:], g["v"][:], lw=1, label=name)
+        if "rho" in g and g["rho"].shape == g["x"].shape:
+            ar.plot(g["x"][:], g["rho"][:], lw=1, label=name)
+    if "compare" in f and "x" in f["compare"]:
+        cmp = f["compare"]
+        av.plot(cmp["x"][:], cmp["v_particles"][:], "k.", ms=2, label="particles")
+        ar.plot(cmp["x"][:], cmp["rho_particles"][:], "k.", ms=2, label="particles")
+        for name, marker, color in [("clusters", "v", "tab:red"), ("shocks", "^", "tab:blue")]:
+            if name + "_x" in cmp:
+                xs = cmp[name + "_x"][:]
+                ar.plot(xs, np.zeros_like(xs), marker, color=color, ms=6, label=name)
+    ar.set_yscale("symlog", linthresh=1.0)
+    av.set_ylabel("v")
+    ar.set_ylabel("rho")
+    ar.set_xlabel("x")
+    av.set_title(f"fields at t = {attr(next(iter(c.values())), 't', 0):.4g}")
+    av.legend(fontsize=7)
+    save(fig, out_dir, "fields.png")
+
+
+def main():
+    out_dir = sys.argv[1]
+    with h5py.File(os.path.join(out_dir, "result.h5"), "r") as f:
+        if "particles" in f and "T" in f["particles"]:
+            plot_temperature(f, out_dir)
+        if "particles/histogram" in f:
+            plot_histogram(f, out_dir)
+        if "particles/spacetime" in f:
+            plot_spacetime(f, out_dir)
+        if "continuum" in f:
+            plot_fields(f, out_dir)
+
+
+if __name__ == "__main__":
+    main()
