@@ -59,6 +59,13 @@ std::vector<Candidate> candidate_pairs(const std::vector<continuum::Shock>& shoc
   return out;
 }
 
+// A quarter of the mean spacing of the eligible shocks.
+double automatic_distance(const std::vector<continuum::Shock>& shocks, double L, const MatchParams& p) {
+  std::size_t n = 0;
+  for (const auto& s : shocks) n += s.mass >= p.min_mass ? 1 : 0;
+  return L / (4.0 * static_cast<double>(std::max<std::size_t>(n, 1)));
+}
+
 void summarise(MatchResult& r, const std::vector<continuum::Shock>& shocks,
                const std::vector<particles::Cluster>& clusters, double min_mass) {
   std::vector<bool> shock_used(shocks.size(), false), cluster_used(clusters.size(), false);
@@ -97,13 +104,16 @@ MatchResult match_shocks_to_clusters(const std::vector<continuum::Shock>& shocks
                                      const std::vector<particles::Cluster>& clusters, double L,
                                      const MatchParams& params) {
   require(std::isfinite(L) && L > 0, "compare.L", L, "> 0");
-  require(std::isfinite(params.max_distance) && params.max_distance > 0, "compare.max_match_distance",
-          params.max_distance, "> 0");
+  require(std::isfinite(params.max_distance) && params.max_distance >= 0, "compare.max_match_distance",
+          params.max_distance, ">= 0 (0 = automatic)");
   require(std::isfinite(params.min_mass) && params.min_mass >= 0, "compare.min_cluster_mass", params.min_mass,
           ">= 0");
+  const MatchParams used{params.max_distance > 0 ? params.max_distance : automatic_distance(shocks, L, params),
+                         params.min_mass};
   std::vector<bool> shock_taken(shocks.size(), false), cluster_taken(clusters.size(), false);
   MatchResult r;
-  for (const Candidate& c : candidate_pairs(shocks, clusters, L, params)) {
+  r.max_distance = used.max_distance;
+  for (const Candidate& c : candidate_pairs(shocks, clusters, L, used)) {
     if (shock_taken[c.shock] || cluster_taken[c.cluster]) continue;
     shock_taken[c.shock] = cluster_taken[c.cluster] = true;
     const auto& s = shocks[c.shock];

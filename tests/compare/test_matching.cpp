@@ -97,9 +97,22 @@ TEST(Matching, GreedyOnManyRandomPairsIsExact) {
   EXPECT_NEAR(r.matched_mass_fraction, 1.0, kRound);
 }
 
+TEST(Matching, AutomaticDistanceIsAQuarterOfTheShockSpacing) {
+  // Four shocks on a ring of 100: automatic distance 100 / 16 = 6.25. A cluster
+  // 6 away matches, one 7 away does not.
+  const std::vector<continuum::Shock> shocks{
+      {10, 1, -1, 0}, {35, 1, -1, 0}, {60, 1, -1, 0}, {85, 1, -1, 0}};
+  const std::vector<Cluster> clusters{cluster_at(16.0, 1.0), cluster_at(42.0, 1.0)};
+  const MatchResult r = match_shocks_to_clusters(shocks, clusters, 100.0);
+  EXPECT_DOUBLE_EQ(r.max_distance, 6.25);
+  ASSERT_EQ(r.pairs.size(), 1u);
+  EXPECT_EQ(r.pairs[0].cluster, 0u);
+  EXPECT_EQ(r.unmatched_clusters, std::vector<std::size_t>{1});
+}
+
 TEST(Matching, RejectsBadParameters) {
   EXPECT_THROW(match_shocks_to_clusters({}, {}, 0.0), InputError);
-  EXPECT_THROW(match_shocks_to_clusters({}, {}, 1.0, MatchParams{0.0, 0.0}), InputError);
+  EXPECT_THROW(match_shocks_to_clusters({}, {}, 1.0, MatchParams{-1.0, 0.0}), InputError);
   EXPECT_THROW(match_shocks_to_clusters({}, {}, 1.0, MatchParams{1.0, -1.0}), InputError);
 }
 

@@ -22,7 +22,9 @@
 namespace shockgas::compare {
 
 struct MatchParams {
-  double max_distance = 1.0;  // largest |x_cluster - x_shock| of a pair [length], > 0
+  double max_distance = 0.0;  // largest |x_cluster - x_shock| of a pair [length], >= 0;
+                              // 0 = automatic: L / (4 n), n = number of eligible shocks
+                              // (a quarter of their mean spacing: greedy is then optimal)
   double min_mass = 0.0;      // shocks and clusters lighter than this are ignored [mass], >= 0
 };
 
@@ -45,11 +47,12 @@ struct MatchResult {
   double matched_mass_fraction = 0;               // matched_cluster_mass / cluster_mass (0 if none)
   double max_position_error = 0;                  // max |position_error| over pairs [length]
   double rms_position_error = 0;                  // root mean square over pairs [length]
+  double max_distance = 0;                        // the matching distance used [length]
   double max_relative_mass_error = 0;             // max |mass_error| / m_cluster over pairs [1]
   double rms_velocity_error = 0;                  // root mean square over pairs [length/time]
 };
 
-// Throws InputError if L <= 0, max_distance <= 0 or min_mass < 0.
+// Throws InputError if L <= 0, max_distance < 0 or min_mass < 0.
 MatchResult match_shocks_to_clusters(const std::vector<continuum::Shock>& shocks,
                                      const std::vector<particles::Cluster>& clusters, double L,
                                      const MatchParams& params = {});

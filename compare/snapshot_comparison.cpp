@@ -1,0 +1,53 @@
+#include "shockgas/compare/snapshot_comparison.hpp"
+
+#include "shockgas/compare/scaling_laws.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::compare {
+
+namespace {
+
+std::vector<double> eligible_shock_positions(const std::vector<continuum::Shock>& shocks, double min_mass) {
+  std::vector<double> x;
+  for (const auto& s : shocks)
+    if (s.mass >= min_mass) x.push_back(s.x);
+  return x;
+}
+
+std::vector<double> eligible_cluster_positions(const std::vector<particles::Cluster>& clusters,
+                                               double min_mass) {
+  std::vector<double> x;
+  for (const auto& c : clusters)
+    if (c.m >= min_mass) x.push_back(c.x);
+  return x;
+}
+
+}  // namespace
+
+SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const continuum::ContinuumResult& field,
+                                    const SnapshotParams& params) {
+  require(N > 0, "initial.N", N, ">= 1");
+  require(!field.v.empty(), "compare.cells", field.v.size(), ">= 1");
+  require(field.t > 0, "compare.t", field.t, "> 0");
+  require(params.min_cluster_particles >= 0, "compare.min_cluster_particles", params.min_cluster_particles,
+          ">= 0");
+  SnapshotComparison c;
+  c.t = field.t;
+  const double L = field.length;
+  c.min_mass = params.min_cluster_particles * total_mass(state) / static_cast<double>(N);
+  c.clusters = particles::find_clusters(state, L, params.clusters);
+  c.shocks = find_shocks(field, params.shocks);
+  c.particle_fields = deposit_on_grid(state, L, field.v.size(), params.deposit);
+  c.match = match_shocks_to_clusters(c.shocks, c.clusters, L, MatchParams{params.max_match_distance, c.min_mass});
+  c.n_shocks = c.match.eligible_shocks;
+  c.n_clusters = c.match.eligible_clusters;
+  c.sawtooth = fit_sawtooth_slopes(field.v, L, field.t, eligible_shock_positions(c.shocks, c.min_mass),
+                                   params.sawtooth);
+  c.particle_sawtooth = fit_sawtooth_slopes(c.particle_fields.v, L, field.t,
+                                            eligible_cluster_positions(c.clusters, c.min_mass), params.sawtooth,
+                                            c.particle_fields.mass);
+  c.shock_count_ratio = shock_count_ratio(c.n_shocks, static_cast<double>(N), field.t);
+  return c;
+}
+
+}  // namespace shockgas::compare
