@@ -10,8 +10,7 @@
 //
 // the two merge. x(t) is the slope of a hull edge, so this is exactly the
 // convexity test of the chain, but it compares positions of neighbouring
-// clusters instead of subtracting large cumulative sums S_k, and each cluster's
-// centre is stored relative to its first body, so no quantity grows with N.
+// clusters instead of subtracting large cumulative sums S_k. O(N), one pass.
 //
 // Ties. The merge test is strict: clusters that exactly touch at t (collinear
 // hull points) stay separate; they collide at t and are merged for any later
@@ -20,14 +19,15 @@
 // which of two answers that agree in position to rounding is returned.
 //
 // Ring. After the Galilean shift u -> u - U (U = total momentum / total mass)
-// the unrolled chain (copies q + jL, j = -1, 0, 1) has a periodic hull and no
-// cluster holds more than N bodies; the hull vertices of the three-period
-// window in [N, 2N] are those of the infinite chain, so one period of clusters
-// is read off starting at the first cluster boundary a >= N. Differences of
-// positions are formed as (q_i2 - q_i1) + (j2 - j1) L, so every period is
-// computed with bitwise the same arithmetic; should rounding still make the
-// period not close exactly at a + N, the cluster straddling a + N is cut there
-// (its two parts then touch to rounding).
+// the periodically unrolled chain (body i + N is body i moved by L) has a
+// periodic hull, and no cluster holds more than N bodies. With
+// s = centre of mass and phi(k) = S_k - s M_k one finds
+// phi(k + N) - phi(k) = L M_k >= 0 and phi(k - N) - phi(k) = L (M - M_k) >= 0,
+// so the minimiser k* of phi over one period is a hull vertex of the infinite
+// chain (a supporting line of slope s touches it). One period is then a line
+// problem: bodies k*, ..., N-1, then 0, ..., k*-1 moved by L. Should rounding in
+// phi pick a point just above the hull, the two runs meeting at the seam
+// overlap; they are merged across it (and cascaded), which restores the hull.
 #include "shockgas/core/sticky_hull.hpp"
 
 #include <algorithm>
@@ -40,99 +40,57 @@ namespace shockgas {
 
 namespace {
 
-// A cluster under construction: bodies [first, first + count) of the chain.
+// A cluster: chain positions [first, first + count).
 struct Run {
-  std::size_t first = 0;
-  std::size_t count = 0;
-  double m = 0;   // mass
-  double v = 0;   // velocity (mass-weighted mean)
-  double d0 = 0;  // centre of mass at t = 0 minus the first body's position
-};
-
-// The open line: body k is initial[k].
-struct LineChain {
-  const Bodies& b;
-  std::size_t size() const { return b.size(); }
-  double m(std::size_t k) const { return b.m[k]; }
-  double u(std::size_t k) const { return b.v[k]; }
-  // q_k2 - q_k1.
-  double gap(std::size_t k1, std::size_t k2) const { return b.x[k2] - b.x[k1]; }
-  double q(std::size_t k) const { return b.x[k]; }
-};
-
-// The ring unrolled over `periods` periods: body k is initial[k mod N] shifted by
-// (k / N - 1) L, with the velocity shift u -> u - U.
-struct RingChain {
-  const Bodies& b;
-  double L;
-  double U;
-  std::size_t periods;
-  std::size_t n() const { return b.size(); }
-  std::size_t size() const { return periods * n(); }
-  double m(std::size_t k) const { return b.m[k % n()]; }
-  double u(std::size_t k) const { return b.v[k % n()] - U; }
-  double gap(std::size_t k1, std::size_t k2) const {
-    const double dj = static_cast<double>(k2 / n()) - static_cast<double>(k1 / n());
-    return (b.x[k2 % n()] - b.x[k1 % n()]) + dj * L;
-  }
-  double q(std::size_t k) const {
-    return b.x[k % n()] + (static_cast<double>(k / n()) - 1.0) * L;
-  }
+  double c0;          // centre of mass at t = 0 (chain coordinates)
+  double v;           // velocity (mass-weighted mean)
+  double m;           // mass
+  std::size_t first;  // chain position of its first body
+  std::size_t count;  // number of bodies
 };
 
 // Whether `left` would be to the right of `right` at time t (strictly).
-template <class Chain>
-bool overlaps(const Chain& c, const Run& left, const Run& right, double t) {
-  const double xl = left.d0 + t * left.v;
-  const double xr = c.gap(left.first, right.first) + right.d0 + t * right.v;
-  return xl > xr;
+bool overlaps(const Run& left, const Run& right, double t) {
+  return left.c0 + t * left.v > right.c0 + t * right.v;
 }
 
-// Perfectly inelastic merge of right into left: mass and momentum add.
-template <class Chain>
-void absorb(const Chain& c, Run& left, const Run& right) {
+// Perfectly inelastic merge: mass and momentum add.
+Run merged(const Run& left, const Run& right) {
   const double m = left.m + right.m;
-  const double dq = c.gap(left.first, right.first);
-  left.d0 += (right.m / m) * (dq + right.d0 - left.d0);
-  left.v = (left.m * left.v + right.m * right.v) / m;
-  left.m = m;
-  left.count += right.count;
+  return {left.c0 + (right.m / m) * (right.c0 - left.c0), (left.m * left.v + right.m * right.v) / m, m,
+          left.first, left.count + right.count};
 }
 
-// The hull of the whole chain as a stack of runs, left to right. O(size).
-template <class Chain>
-std::vector<Run> hull_runs(const Chain& c, double t) {
-  std::vector<Run> stack;
-  stack.reserve(64);
-  for (std::size_t k = 0; k < c.size(); ++k) {
-    Run top{k, 1, c.m(k), c.u(k), 0.0};
-    while (!stack.empty() && overlaps(c, stack.back(), top, t)) {
-      Run left = stack.back();
-      stack.pop_back();
-      absorb(c, left, top);
-      top = left;
+// The monotone chain in cluster form; bodies are pushed left to right.
+class HullStack {
+ public:
+  HullStack(std::size_t n, double t) : t_(t) { runs_.reserve(n); }
+  void push(double q, double u, double m) {
+    Run top{q, u, m, pushed_++, 1};
+    while (!runs_.empty() && overlaps(runs_.back(), top, t_)) {
+      top = merged(runs_.back(), top);
+      runs_.pop_back();
     }
-    stack.push_back(top);
+    runs_.push_back(top);
   }
-  return stack;
-}
+  std::vector<Run>& runs() { return runs_; }
 
-// One run recomputed directly from its bodies [first, first + count), count >= 1.
-template <class Chain>
-Run summarise(const Chain& c, std::size_t first, std::size_t count) {
-  Run r{first, 1, c.m(first), c.u(first), 0.0};
-  for (std::size_t k = first + 1; k < first + count; ++k) absorb(c, r, Run{k, 1, c.m(k), c.u(k), 0.0});
-  return r;
-}
+ private:
+  double t_;
+  std::size_t pushed_ = 0;
+  std::vector<Run> runs_;
+};
 
 void check_bodies(const Bodies& b, double t) {
   require_in_range("t", t, 0.0, std::numeric_limits<double>::max());
   require(b.v.size() == b.size() && b.m.size() == b.size(), "bodies", b.size(),
           "x, v and m of equal length");
   for (std::size_t i = 0; i < b.size(); ++i) {
-    require(std::isfinite(b.x[i]) && std::isfinite(b.v[i]), "bodies.x/v", b.x[i], "finite values");
-    require(b.m[i] > 0 && std::isfinite(b.m[i]), "bodies.m", b.m[i], "finite masses > 0");
-    if (i > 0) require(b.x[i] >= b.x[i - 1], "bodies.x", b.x[i], "positions sorted ascending");
+    if (!(std::isfinite(b.x[i]) && std::isfinite(b.v[i])))
+      throw InputError("bodies.x/v", to_text(b.x[i]) + ", " + to_text(b.v[i]), "finite values");
+    if (!(b.m[i] > 0 && std::isfinite(b.m[i]))) throw InputError("bodies.m", to_text(b.m[i]), "finite masses > 0");
+    if (i > 0 && !(b.x[i] >= b.x[i - 1]))
+      throw InputError("bodies.x", to_text(b.x[i]), "positions sorted ascending");
   }
 }
 
@@ -142,30 +100,49 @@ double wrap(double x, double L) {
   return w >= L ? 0.0 : w;
 }
 
-// The ring's runs of one period, starting at the first boundary >= N.
-std::vector<Run> one_period(const RingChain& c, const std::vector<Run>& runs) {
-  const std::size_t n = c.n();
-  auto it = std::find_if(runs.begin(), runs.end(), [&](const Run& r) { return r.first >= n; });
-  if (it == runs.end() || it->first >= 2 * n) return {summarise(c, n, n)};  // one run spans [N, 2N]
-  const std::size_t a = it->first;
-  std::vector<Run> period;
-  for (; it != runs.end() && it->first < a + n; ++it) {
-    if (it->first + it->count <= a + n)
-      period.push_back(*it);
-    else
-      period.push_back(summarise(c, it->first, a + n - it->first));  // cut at a + N (rounding)
+// The start k* of the ring's period: the minimiser of
+// phi(k) = sum_{i<k} m_i (x_i + t u_i - s), s the centre of mass.
+std::size_t seam(const Bodies& b, double U, double t) {
+  const double M = total_mass(b);
+  double s = 0;
+  for (std::size_t i = 0; i < b.size(); ++i) s += b.m[i] * b.x[i] / M;
+  double phi = 0, best = 0;
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (phi < best) best = phi, at = k;
+    phi += b.m[k] * ((b.x[k] - s) + t * (b.v[k] - U));
   }
-  return period;
+  return at;
+}
+
+// Merges runs across the seam while the last one (chain end) would be to the
+// right of the first one moved by one period; cascades on both sides.
+void close_ring(std::vector<Run>& runs, double L, double t) {
+  std::size_t front = 0;
+  auto shifted = [&](const Run& r) { return Run{r.c0 + L, r.v, r.m, r.first, r.count}; };
+  for (;;) {
+    if (runs.size() - front >= 2 && overlaps(runs.back(), shifted(runs[front]), t)) {
+      runs.back() = merged(runs.back(), shifted(runs[front]));
+      ++front;
+    } else if (runs.size() - front >= 2 && overlaps(runs[runs.size() - 2], runs.back(), t)) {
+      runs[runs.size() - 2] = merged(runs[runs.size() - 2], runs.back());
+      runs.pop_back();
+    } else {
+      break;
+    }
+  }
+  runs.erase(runs.begin(), runs.begin() + static_cast<std::ptrdiff_t>(front));
 }
 
 }  // namespace
 
 std::vector<StickyCluster> sticky_clusters_line(const Bodies& initial, double t) {
   check_bodies(initial, t);
-  const LineChain c{initial};
+  HullStack hull(initial.size(), t);
+  for (std::size_t i = 0; i < initial.size(); ++i) hull.push(initial.x[i], initial.v[i], initial.m[i]);
   std::vector<StickyCluster> out;
-  for (const Run& r : hull_runs(c, t))
-    out.push_back({c.q(r.first) + r.d0 + t * r.v, r.v, r.m, r.first, r.count});
+  out.reserve(hull.runs().size());
+  for (const Run& r : hull.runs()) out.push_back({r.c0 + t * r.v, r.v, r.m, r.first, r.count});
   return out;
 }
 
@@ -177,10 +154,17 @@ std::vector<StickyCluster> sticky_clusters_ring(const Bodies& initial, double L,
   require(initial.x.front() >= 0 && initial.x.back() < L, "bodies.x", initial.x.back(),
           "positions in [0, L)");
   const double U = total_momentum(initial) / total_mass(initial);
-  const RingChain c{initial, L, U, 3};
+  const std::size_t k0 = seam(initial, U, t);
+  HullStack hull(n, t);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = k0 + k < n ? k0 + k : k0 + k - n;
+    hull.push(initial.x[i] + (k0 + k < n ? 0.0 : L), initial.v[i] - U, initial.m[i]);
+  }
+  close_ring(hull.runs(), L, t);
   std::vector<StickyCluster> out;
-  for (const Run& r : one_period(c, hull_runs(c, t)))
-    out.push_back({wrap(c.q(r.first) + r.d0 + t * (r.v + U), L), r.v + U, r.m, r.first % n, r.count});
+  out.reserve(hull.runs().size());
+  for (const Run& r : hull.runs())
+    out.push_back({wrap(r.c0 + t * r.v + U * t, L), r.v + U, r.m, (k0 + r.first) % n, r.count});
   // The period is in cyclic order of x; rotate it so that x ascends.
   auto lowest = std::min_element(out.begin(), out.end(),
                                  [](const StickyCluster& a, const StickyCluster& b) { return a.x < b.x; });

@@ -235,6 +235,28 @@ TEST(StickyHull, RingLatticeWithTiesIsAPartition) {
   }
 }
 
+// A large random ring over a range of times: every body in exactly one
+// cluster, and no two cyclic neighbours overlapping (the last one included,
+// across the period: the seam of the unrolled chain closes).
+TEST(StickyHull, LargeRingIsAConsistentPartition) {
+  Rng rng(15);
+  const std::size_t n = 20000;
+  const double L = static_cast<double>(n);
+  const Bodies b = random_bodies(rng, n, L);
+  for (double t : {0.5, 5.0, 50.0, 500.0, 5000.0}) {
+    const auto c = sticky_clusters_ring(b, L, t);
+    std::vector<int> seen(n, 0);
+    for (const auto& k : c)
+      for (std::size_t j = 0; j < k.count; ++j) ++seen[(k.first + j) % n];
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; })) << "t = " << t;
+    for (std::size_t i = 0; i + 1 < c.size(); ++i) {
+      EXPECT_LE(c[i].x, c[i + 1].x);
+      EXPECT_EQ((c[i].first + c[i].count) % n, c[i + 1].first);  // contiguous in chain order
+    }
+    EXPECT_LE(c.back().x, c.front().x + L);
+  }
+}
+
 TEST(StickyHull, RefusesBadInput) {
   Bodies b;
   b.push_back(1.0, 0.0, 1.0);
