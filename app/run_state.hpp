@@ -25,6 +25,7 @@ struct RunState {
   Bodies initial_bodies;                                 // realization 0
   std::optional<Bodies> final_bodies;                    // particles at t_end (realization 0)
   std::vector<double> t_series, T_series;                // ensemble-mean T(t)
+  std::vector<double> hist_z, hist_t, hist_density;      // ensemble-mean scaled histogram (rows: t)
   std::vector<continuum::ContinuumResult> continuum;     // one per solver
   std::vector<std::string> report;                       // lines of report.md
 };

@@ -104,6 +104,21 @@ void resolve_file(Scene& scene, const std::string& path) {
   file = (dir / file).lexically_normal().string();
 }
 
+// The comparison needs both models at one time, on the ring, and the solver it names.
+void validate_compare(const Scene& scene) {
+  require(scene.has_particles && scene.has_continuum, "compare", std::string("(table)"),
+          "[compare] only together with [particles] and [continuum]");
+  const auto& solvers = scene.continuum.solvers;
+  require(std::find(solvers.begin(), solvers.end(), scene.compare.solver) != solvers.end(), "compare.solver",
+          scene.compare.solver, "one of continuum.solvers");
+  require(scene.continuum.t_end == 0 || scene.continuum.t_end == scene.particles.t_end, "continuum.t_end",
+          scene.continuum.t_end, "0 or particles.t_end when [compare] is present (both at one time)");
+  require(scene.particles.geometry == "ring" && scene.continuum.boundary == "periodic", "particles.geometry",
+          scene.particles.geometry, "\"ring\" with continuum.boundary = \"periodic\" when [compare] is present");
+  require(scene.initial.velocities != "expression", "initial.velocities", scene.initial.velocities,
+          "particle data (not \"expression\") when [compare] is present");
+}
+
 void validate_scene(const Scene& scene) {
   validate(scene.initial);
   particles::validate(scene.particles);
@@ -112,7 +127,7 @@ void validate_scene(const Scene& scene) {
   require(c.deposit == "ngp" || c.deposit == "cic", "compare.deposit", c.deposit, "\"ngp\" or \"cic\"");
   require(std::isfinite(c.match_distance) && c.match_distance >= 0, "compare.match_distance", c.match_distance,
           "a finite number >= 0");
-  require_above("compare.min_cluster_mass", c.min_cluster_mass, 0.0);
+  require_above("compare.min_cluster_particles", c.min_cluster_particles, 0.0);
   require(std::isfinite(c.cluster_gap) && c.cluster_gap >= 0, "compare.cluster_gap", c.cluster_gap,
           "a finite number >= 0");
   require(std::isfinite(c.cluster_dv) && c.cluster_dv >= 0, "compare.cluster_dv", c.cluster_dv,
@@ -121,9 +136,7 @@ void validate_scene(const Scene& scene) {
   if (scene.has_continuum && !scene.has_particles)
     require(scene.continuum.t_end > 0, "continuum.t_end", scene.continuum.t_end,
             "a time > 0 (a scene without [particles] must give continuum.t_end)");
-  if (scene.has_compare)
-    require(scene.has_particles && scene.has_continuum, "compare", std::string("(table)"),
-            "[compare] only together with [particles] and [continuum]");
+  if (scene.has_compare) validate_compare(scene);
   if (scene.has_particles && scene.initial.velocities == "expression")
     require(scene.initial.N >= 2, "initial.N", scene.initial.N, "an integer N >= 2");
 }

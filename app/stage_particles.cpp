@@ -46,6 +46,12 @@ void write_bodies(Hdf5File& h5, const std::string& group, const Bodies& b, const
   h5.write(group + "/m", b.m, "mass", what + ": masses");
 }
 
+std::vector<double> bin_centres(const particles::ScaledHistogram& hist) {
+  std::vector<double> z(hist.bins);
+  for (std::size_t b = 0; b < hist.bins; ++b) z[b] = -hist.zmax + (b + 0.5) * 2 * hist.zmax / hist.bins;
+  return z;
+}
+
 void write_records(Hdf5File& h5, const EnsembleResult& e, const particles::ParticleParams& p) {
   const auto& first = e.first;
   write_bodies(h5, "/particles/final", first.final_state, "state at t_end (realization 0)");
@@ -56,9 +62,7 @@ void write_records(Hdf5File& h5, const EnsembleResult& e, const particles::Parti
   }
   const auto& hist = first.histogram;
   if (hist.bins > 0 && !hist.t.empty()) {
-    std::vector<double> z(hist.bins);
-    for (std::size_t b = 0; b < hist.bins; ++b) z[b] = -hist.zmax + (b + 0.5) * 2 * hist.zmax / hist.bins;
-    h5.write("/particles/histogram/z", z, "length/time^(2/3)", "bin centres of z = (v - <v>) t^(1/3)");
+    h5.write("/particles/histogram/z", bin_centres(hist), "length/time^(2/3)", "bin centres of z = (v - <v>) t^(1/3)");
     h5.write("/particles/histogram/t", hist.t, "time", "sample times");
     h5.write_matrix("/particles/histogram/density", e.histogram, hist.t.size(), hist.bins, "time^(2/3)/length",
                     "mass-weighted density of z, ensemble mean (rows: times)");
@@ -118,6 +122,11 @@ void run_particles_stage(RunState& state) {
   state.final_bodies = e.first.final_state;
   state.t_series = e.t;
   state.T_series = e.T.mean;
+  if (e.first.histogram.bins > 0) {
+    state.hist_z = bin_centres(e.first.histogram);
+    state.hist_t = e.first.histogram.t;
+    state.hist_density = e.histogram;
+  }
 }
 
 }  // namespace shockgas::app

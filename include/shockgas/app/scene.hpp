@@ -14,9 +14,11 @@ namespace shockgas::app {
 
 // Scene table [compare]: the particle-continuum comparison.
 struct CompareParams {
+  std::string solver = "hopf_lax";   // the continuum solver compared (one of continuum.solvers)
   std::string deposit = "cic";       // particles -> grid: "ngp" (nearest cell) | "cic" (cloud in cell)
-  double match_distance = 0.0;       // max shock-cluster distance for a match [length]; 0 = 2 cells
-  double min_cluster_mass = 2.0;     // clusters lighter than this are not counted as shocks [mass]
+  double match_distance = 0.0;       // max shock-cluster distance for a match [length]; 0 = automatic
+  double min_cluster_particles = 2;  // clusters and shocks lighter than this many mean particle
+                                     // masses are not counted [1]
   double cluster_gap = 0.0;          // max gap inside a cluster [length]; 0 = derived from delta
   double cluster_dv = 0.0;           // max relative velocity inside a cluster [length/time]; 0 = derived
   double fit_window = 10.0;          // late window of the T(t) fit: [t_end / fit_window, t_end], > 1

@@ -1,0 +1,169 @@
+// Stage 3: shocks are clusters. The particle state and the continuum field at
+// the same time are compared (compare/snapshot_comparison.hpp), the cooling law
+// is fitted, and the scaled velocity distributions are measured.
+#include <cmath>
+#include <string>
+
+#include "run_state.hpp"
+#include "shockgas/compare/cooling_law.hpp"
+#include "shockgas/compare/snapshot_comparison.hpp"
+#include "shockgas/compare/velocity_distribution.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+namespace {
+
+using nlohmann::ordered_json;
+
+compare::SnapshotParams snapshot_params(const Scene& scene) {
+  compare::SnapshotParams p;
+  const double spacing = domain_length(scene.initial) / static_cast<double>(scene.initial.N);
+  p.clusters = scene.particles.r == 0 ? particles::merged_bodies_criteria()
+                                      : particles::default_cluster_criteria(scene.particles.delta, spacing);
+  if (scene.compare.cluster_gap > 0) p.clusters.max_gap = scene.compare.cluster_gap;
+  if (scene.compare.cluster_dv > 0) p.clusters.max_dv = scene.compare.cluster_dv;
+  p.max_match_distance = scene.compare.match_distance;
+  p.min_cluster_particles = scene.compare.min_cluster_particles;
+  p.deposit = compare::parse_deposit_scheme(scene.compare.deposit, "compare.deposit");
+  return p;
+}
+
+const continuum::ContinuumResult& compared_field(const RunState& state) {
+  for (const auto& r : state.continuum)
+    if (r.solver == state.scene.compare.solver) return r;
+  throw RunError("compare: solver " + state.scene.compare.solver + " did not run");
+}
+
+template <class T, class F>
+std::vector<double> column(const std::vector<T>& items, F&& f) {
+  std::vector<double> out;
+  out.reserve(items.size());
+  for (const auto& item : items) out.push_back(f(item));
+  return out;
+}
+
+void write_snapshot(Hdf5File& h5, const compare::SnapshotComparison& c) {
+  const auto& g = c.particle_fields;
+  h5.write("/compare/x", g.x, "length", "cell centres (the continuum grid)");
+  h5.write("/compare/rho_particles", g.rho, "mass/length", "particle mass deposited on the grid");
+  h5.write("/compare/v_particles", g.v, "length/time", "particle momentum / mass on the grid");
+  h5.write("/compare/clusters_x", column(c.clusters, [](auto& k) { return k.x; }), "length", "cluster positions");
+  h5.write("/compare/clusters_m", column(c.clusters, [](auto& k) { return k.m; }), "mass", "cluster masses");
+  h5.write("/compare/clusters_v", column(c.clusters, [](auto& k) { return k.v; }), "length/time",
+           "cluster velocities");
+  h5.write("/compare/shocks_x", column(c.shocks, [](auto& s) { return s.x; }), "length", "shock positions");
+  h5.write("/compare/shocks_mass", column(c.shocks, [](auto& s) { return s.mass; }), "mass", "shock masses");
+  h5.write("/compare/shocks_jump", column(c.shocks, [](auto& s) { return s.jump; }), "length/time",
+           "shock velocity jumps v_R - v_L");
+  h5.write("/compare/matched_position_error", column(c.match.pairs, [](auto& p) { return p.position_error; }),
+           "length", "x_cluster - x_shock of each matched pair");
+  h5.write("/compare/sawtooth_slope_times_t", column(c.sawtooth.ramps, [](auto& r) { return r.slope_times_t; }),
+           "1", "slope of v on each ramp between shocks, times t (theory: 1)");
+}
+
+void summarize_snapshot(RunState& state, const compare::SnapshotComparison& c) {
+  auto& s = state.summary["compare"];
+  s["solver"] = state.scene.compare.solver;
+  s["t"] = c.t;
+  s["n_shocks"] = c.n_shocks;
+  s["n_clusters"] = c.n_clusters;
+  s["matched_mass_fraction"] = c.match.matched_mass_fraction;
+  s["matched_pairs"] = c.match.pairs.size();
+  s["max_position_error"] = c.match.max_position_error;
+  s["rms_velocity_error"] = c.match.rms_velocity_error;
+  s["max_relative_mass_error"] = c.match.max_relative_mass_error;
+  s["sawtooth_slope_times_t"] = c.sawtooth.slope_times_t.median;
+  s["sawtooth_slope_times_t_quartiles"] = {c.sawtooth.slope_times_t.q25, c.sawtooth.slope_times_t.q75};
+  s["particle_sawtooth_slope_times_t"] = c.particle_sawtooth.slope_times_t.median;
+  s["shock_count_ratio"] = c.shock_count_ratio;
+  s["min_mass"] = c.min_mass;
+  auto& rep = state.report;
+  rep.push_back("## Shocks and clusters at t = " + to_text(c.t) + " (solver `" + state.scene.compare.solver + "`)\n");
+  rep.push_back("| figure of merit | value | theory / ideal |\n|---|---|---|");
+  rep.push_back("| shocks (mass >= " + to_text(c.min_mass) + ") | " + std::to_string(c.n_shocks) + " | N t^(-2/3) = " +
+                to_text(std::round(state.scene.initial.N * std::pow(c.t, -2.0 / 3.0))) + " (ratio " +
+                to_text(c.shock_count_ratio) + ") |");
+  rep.push_back("| clusters (mass >= " + to_text(c.min_mass) + ") | " + std::to_string(c.n_clusters) +
+                " | = shocks |");
+  rep.push_back("| matched cluster mass fraction | " + to_text(c.match.matched_mass_fraction) + " | 1 |");
+  rep.push_back("| largest matched position error | " + to_text(c.match.max_position_error) + " | 0 |");
+  rep.push_back("| median sawtooth slope x t (continuum) | " + to_text(c.sawtooth.slope_times_t.median) + " | 1 |");
+  rep.push_back("| median sawtooth slope x t (particles) | " + to_text(c.particle_sawtooth.slope_times_t.median) +
+                " | 1 |\n");
+}
+
+void fit_cooling(RunState& state) {
+  const auto& t = state.t_series;
+  const auto& T = state.T_series;
+  const double t_end = state.scene.particles.t_end, t_min = t_end / state.scene.compare.fit_window;
+  std::size_t in_window = 0;
+  for (double ti : t) in_window += ti >= t_min && ti <= t_end;
+  if (in_window < 3) return;
+  const auto fit = compare::fit_power_law(t, T, t_min, t_end);
+  std::vector<double> ft = {fit.t_min, fit.t_max}, fT;
+  for (double ti : ft) fT.push_back(fit.prefactor * std::pow(ti, fit.exponent));
+  state.h5.write("/compare/T_fit_t", ft, "time", "window of the late-time power-law fit");
+  state.h5.write("/compare/T_fit_T", fT, "length^2/time^2", "the fitted power law at the window ends");
+  state.h5.write("/compare/T_local_exponent", compare::local_exponents(t, T), "1", "d ln T / d ln t at /particles/t");
+  state.h5.set_attribute("/compare", "T_exponent", fit.exponent);
+  const auto cross = compare::find_crossovers(t, T, state.scene.particles.r);
+  auto& s = state.summary["compare"];
+  s["T_exponent"] = fit.exponent;
+  s["T_exponent_error"] = fit.exponent_error;
+  s["T_fit_window"] = {fit.t_min, fit.t_max};
+  s["t_dissip"] = std::isfinite(cross.t_dissip) ? ordered_json(cross.t_dissip) : ordered_json(nullptr);
+  s["t_stick"] = std::isfinite(cross.t_stick) ? ordered_json(cross.t_stick) : ordered_json(nullptr);
+  s["t_dissip_theory"] = cross.t_dissip_theory;
+  s["t_stick_theory"] = cross.t_stick_theory;
+  state.report.push_back("## Cooling law\n");
+  state.report.push_back("- T ~ t^a with a = " + to_text(fit.exponent) + " +- " + to_text(fit.exponent_error) +
+                         " on [" + to_text(fit.t_min) + ", " + to_text(fit.t_max) +
+                         "] (sticky-gas regime theory: -2/3).");
+  state.report.push_back("- Crossovers read off d ln T / d ln t: t_dissip = " + to_text(cross.t_dissip) +
+                         " (theory ~ 1/eps = " + to_text(cross.t_dissip_theory) + "), t_stick = " +
+                         to_text(cross.t_stick) + " (theory ~ eps^(-3/2) = " + to_text(cross.t_stick_theory) +
+                         "); NaN = not crossed in the sampled window.\n");
+}
+
+// Scaled distributions at the late half of the sample times (t >= 10).
+void measure_distribution(RunState& state) {
+  const std::size_t bins = state.hist_z.size();
+  if (bins < 4 || state.hist_t.empty()) return;
+  const double width = state.hist_z[1] - state.hist_z[0];
+  std::vector<double> edges(bins + 1);
+  for (std::size_t b = 0; b <= bins; ++b) edges[b] = state.hist_z[0] - 0.5 * width + b * width;
+  std::vector<compare::ScaledDistribution> late;
+  for (std::size_t k = state.hist_t.size() / 2; k < state.hist_t.size(); ++k) {
+    if (state.hist_t[k] < 10) continue;
+    std::vector<double> counts(bins);
+    for (std::size_t b = 0; b < bins; ++b) counts[b] = state.hist_density[k * bins + b] * width;
+    late.push_back(compare::normalise_z_histogram(edges, counts, state.hist_t[k]));
+  }
+  if (late.size() < 2) return;
+  auto& s = state.summary["compare"];
+  s["velocity_collapse_distance"] = compare::collapse_distance(late);
+  const auto tail = compare::fit_tail_exponent(late.back(), 1.0);
+  s["velocity_tail_exponent"] = tail.exponent;
+  s["velocity_tail_exponent_error"] = tail.exponent_error;
+  state.report.push_back("## Velocity distribution\n");
+  state.report.push_back("- Collapse of P(v,t) t^(-1/3) against z = v t^(1/3) over " + std::to_string(late.size()) +
+                         " late times: mean L1 distance " + to_text(s["velocity_collapse_distance"].get<double>()) +
+                         " (0 = perfect collapse, 2 = disjoint).");
+  state.report.push_back("- Tail ln Phi ~ -c |z|^a for |z| >= 1: a = " + to_text(tail.exponent) + " +- " +
+                         to_text(tail.exponent_error) + " (theory: 3).\n");
+}
+
+}  // namespace
+
+void run_compare_stage(RunState& state) {
+  if (!state.final_bodies) throw RunError("compare: the particles did not run");
+  const auto& field = compared_field(state);
+  const auto c = compare::compare_snapshot(*state.final_bodies, state.scene.initial.N, field, snapshot_params(state.scene));
+  write_snapshot(state.h5, c);
+  summarize_snapshot(state, c);
+  fit_cooling(state);
+  measure_distribution(state);
+}
+
+}  // namespace shockgas::app
