@@ -7,6 +7,8 @@
 //  * BM_HopfLaxField/n: the whole exact solve for v0 = 0.5 + sin 2 pi x at
 //    t = 0.5 (after the shock) with n samples of Psi0 per period (n/4 cells):
 //    quadrature, hull, refinement at every cell edge, shocks.
+//  * BM_HopfLaxBodies/N: solve_hopf_lax on the same N bodies as point masses on
+//    the ring (the sticky hull plus the deposit on N/4 cells).
 //  * Baseline BM_TextbookHull/N: Andrew's monotone chain on the cumulative points
 //    (M_k, S_k) after std::sort, with cross products: the direct way to the
 //    same hull as BM_StickyLine.
@@ -68,6 +70,15 @@ void BM_HopfLaxField(benchmark::State& state) {
   o.samples_per_cell = 4;
   o.min_samples = 16;
   for (auto _ : state) benchmark::DoNotOptimize(shockgas::continuum::solve_hopf_lax(f, n / 4, kFieldTime, o));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+}
+
+void BM_HopfLaxBodies(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  shockgas::InitialField f;
+  f.length = static_cast<double>(n);
+  f.bodies = lattice_bodies(n);
+  for (auto _ : state) benchmark::DoNotOptimize(shockgas::continuum::solve_hopf_lax(f, n / 4, kStickyTime));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
 }
 
@@ -151,6 +162,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
 BENCHMARK(BM_StickyLine)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StickyRing)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HopfLaxBodies)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TextbookHull)->Arg(1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HopfLaxField)->Arg(16384)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BruteForceHopfLax)->Arg(16384)->Unit(benchmark::kMillisecond);

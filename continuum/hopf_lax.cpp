@@ -111,6 +111,7 @@ long HopfLaxSolution::node_period(long node) const {
 long HopfLaxSolution::node_below(double q) const { return static_cast<long>(std::floor(q / h_)); }
 
 double HopfLaxSolution::wrap(double q) const {
+  if (q >= 0 && q < L_) return q;
   const double w = q - L_ * floor_div(q, L_);
   return (w >= 0 && w < L_) ? w : 0.0;  // w == L_ only by rounding of q just below 0
 }
@@ -144,27 +145,33 @@ void HopfLaxSolution::build_tables() {
   for (std::size_t j = 0; j < n_; ++j) psi_[j] -= U_ * node_q(static_cast<long>(j));
 }
 
-// The lower hull of (q_j, g(q_j)), g = q^2/2 + t Psi0_w, over nodes
-// [-n/2 - 4, 3n/2 + 4]: every minimiser of a point y in [0, L) lies within L/2
-// of y (its periodic copies are farther), hence inside this window.
+// The lower hull of (q_j, g(q_j)), g = q^2/2 + t Psi0_w: the sticky hull of one
+// period of samples (sticky_clusters_ring), its edges in chain order with
+// unwrapped slopes, listed over three periods so that every y in [0, L) lies
+// between two listed edges (a minimiser lies within L/2 of its y: its periodic
+// copies are farther).
 void HopfLaxSolution::build_hull() {
-  const long n = static_cast<long>(n_);
-  first_node_ = -n / 2 - 4;
-  const long last_node = n + n / 2 + 4;
   Bodies samples;
-  samples.reserve(static_cast<std::size_t>(last_node - first_node_));
-  for (long j = first_node_; j < last_node; ++j) {
-    const double dpsi = psi_[node_index(j + 1)] - psi_[node_index(j)];
+  samples.reserve(n_);
+  for (std::size_t j = 0; j < n_; ++j) {
+    const double dpsi = (j + 1 < n_ ? psi_[j + 1] : psi_[0]) - psi_[j];
     samples.push_back((static_cast<double>(j) + 0.5) * h_, dpsi / h_, h_);
   }
-  const std::vector<StickyCluster> hull = sticky_clusters_line(samples, t_);
-  hull_x_.resize(hull.size());
-  hull_start_.resize(hull.size() + 1);
-  for (std::size_t c = 0; c < hull.size(); ++c) {
-    hull_x_[c] = hull[c].x;
-    hull_start_[c] = first_node_ + static_cast<long>(hull[c].first);
+  std::vector<StickyCluster> hull = sticky_clusters_ring(samples, L_, t_);
+  std::rotate(hull.begin(),
+              std::min_element(hull.begin(), hull.end(), [](auto& a, auto& b) { return a.first < b.first; }),
+              hull.end());
+  period_edges_ = hull.size();
+  const long n = static_cast<long>(n_);
+  const auto psi_node = [&](long node) { return psi_[node_index(node)]; };
+  for (long k = -1; k <= 1; ++k) {
+    for (const StickyCluster& c : hull) {
+      const long a = static_cast<long>(c.first) + k * n, b = a + static_cast<long>(c.count);
+      hull_x_.push_back(0.5 * (node_q(a) + node_q(b)) + t_ * (psi_node(b) - psi_node(a)) / (node_q(b) - node_q(a)));
+      hull_start_.push_back(a);
+    }
   }
-  hull_start_.back() = last_node;
+  hull_start_.push_back(static_cast<long>(hull.back().first + hull.back().count) + n);
 }
 
 // Psi0_w(q) from the nearest node below and one quadrature over less than a sample.
@@ -183,11 +190,15 @@ double HopfLaxSolution::m0(double q) const {
 // neighbour; bracketed = false if the three samples show no sign change.
 double HopfLaxSolution::root_near(double y, long node, bool& bracketed) const {
   const auto f = [&](double q) { return q + t_ * (v0(q) - U_) - y; };
-  const double qm = node_q(node - 1), q0 = node_q(node), qp = node_q(node + 1);
-  const double fm = f(qm), f0 = f(q0), fp = f(qp);
+  const double q0 = node_q(node), f0 = f(q0);
   bracketed = true;
-  if (fm <= 0 && f0 >= 0) return bracketed_root(f, qm, fm, q0, f0, h_, evaluations_);
-  if (f0 <= 0 && fp >= 0) return bracketed_root(f, q0, f0, qp, fp, h_, evaluations_);
+  if (f0 >= 0) {
+    const double qm = node_q(node - 1), fm = f(qm);
+    if (fm <= 0) return bracketed_root(f, qm, fm, q0, f0, h_, evaluations_);
+  } else {
+    const double qp = node_q(node + 1), fp = f(qp);
+    if (fp >= 0) return bracketed_root(f, q0, f0, qp, fp, h_, evaluations_);
+  }
   bracketed = false;
   return q0;
 }
@@ -266,7 +277,7 @@ std::vector<Shock> HopfLaxSolution::shocks() const {
 
 std::map<std::string, double> HopfLaxSolution::stats() const {
   return {{"samples", static_cast<double>(n_)},
-          {"hull_clusters", static_cast<double>(hull_x_.size())},
+          {"hull_clusters", static_cast<double>(period_edges_)},
           {"v0_evaluations", static_cast<double>(evaluations_)},
           {"unbracketed", static_cast<double>(unbracketed_)}};
 }

@@ -106,9 +106,9 @@ class HopfLaxSolution {
   std::size_t n_ = 0;
   std::vector<double> psi_;   // Psi0_w at nodes 0..n-1 (moving frame, periodic)
   std::vector<double> mcum_;  // M0 at nodes 0..n-1
-  long first_node_ = 0;       // node of the hull window's left end
-  std::vector<double> hull_x_;    // hull edge slopes (cluster positions), ascending
-  std::vector<long> hull_start_;  // first node of each edge; edge c spans [start_c, start_{c+1}]
+  std::size_t period_edges_ = 0;  // hull edges (clusters) per period
+  std::vector<double> hull_x_;    // hull edge slopes (cluster positions) over 3 periods, ascending
+  std::vector<long> hull_start_;  // first node of each edge; edge c spans nodes [start_c, start_{c+1}]
   mutable std::size_t evaluations_ = 0, unbracketed_ = 0;
 };
 
