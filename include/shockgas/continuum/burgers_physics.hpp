@@ -48,7 +48,7 @@ inline double burgers_shock_speed(double vL, double vR) { return 0.5 * (vL + vR)
 
 // The exact Riemann solution of Burgers sampled at xi = x/t.
 inline BurgersRiemannSample burgers_riemann(double vL, double vR, double xi) {
-  if (vL > vR) {  // shock
+  if (!(vL <= vR)) {  // shock (a NaN also lands here, and propagates into the flux)
     const double s = burgers_shock_speed(vL, vR);
     if (xi < s) return {vL, RiemannSide::left};
     if (xi > s) return {vR, RiemannSide::right};

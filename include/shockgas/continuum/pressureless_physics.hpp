@@ -45,7 +45,7 @@ inline double delta_shock_mass(double rhoL, double uL, double rhoR, double uR, d
 // Which state xi = x/t sees (RiemannSide::fan here means the vacuum between the
 // two contacts).
 inline RiemannSide pressureless_riemann(double rhoL, double uL, double rhoR, double uR, double xi) {
-  if (uL > uR) {
+  if (!(uL <= uR)) {  // delta-shock (a NaN also lands here, and propagates into the flux)
     const double s = delta_shock_speed(rhoL, uL, rhoR, uR);
     if (xi < s) return RiemannSide::left;
     if (xi > s) return RiemannSide::right;
