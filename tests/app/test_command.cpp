@@ -1,0 +1,108 @@
+// The command end to end: exit codes, nothing written on bad input, a complete
+// result file with provenance on success.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "shockgas/app/command.hpp"
+#include "shockgas/app/hdf5_file.hpp"
+#include "shockgas/app/info.hpp"
+
+namespace shockgas::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(std::vector<std::string> args) {
+  args.insert(args.begin(), "shockgas");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  return run_command(static_cast<int>(argv.size()), argv.data());
+}
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+fs::path write_scene(const fs::path& dir, const std::string& text) {
+  fs::create_directories(dir);
+  const fs::path path = dir / "scene.toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* kSmallScene =
+    "[initial]\nN = 200\n[particles]\nr = 0.5\ndelta = 1e-2\nt_end = 20\nsamples = 8\n"
+    "[continuum]\nsolvers = [\"hopf_lax\", \"godunov\"]\ncells = 200\n[compare]\n[output]\nplots = false\n";
+
+TEST(Command, BadSceneExitsTwoAndWritesNothing) {
+  const fs::path dir = temp_dir("bad");
+  const fs::path scene = write_scene(dir, "[particles]\nr = 2\n");
+  const fs::path out = dir / "out";
+  EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "-q"}), 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Command, BadOverrideExitsTwoAndWritesNothing) {
+  const fs::path dir = temp_dir("badset");
+  const fs::path scene = write_scene(dir, kSmallScene);
+  const fs::path out = dir / "out";
+  EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "--set", "particles.nope=1"}), 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Command, MissingSceneFileExitsTwo) {
+  EXPECT_EQ(run({"run", "/nonexistent/scene.toml", "-q"}), 2);
+}
+
+TEST(Command, UnknownSubcommandOrOptionExitsTwo) {
+  EXPECT_EQ(run({"frobnicate"}), 2);
+  EXPECT_EQ(run({"run", "x.toml", "--bogus"}), 2);
+}
+
+TEST(Command, HelpAndVersionExitZero) {
+  EXPECT_EQ(run({"--help"}), 0);
+  EXPECT_EQ(run({"--version"}), 0);
+  EXPECT_EQ(run({"scene", "--defaults"}), 0);
+}
+
+TEST(Command, RunWritesCompleteResultWithProvenance) {
+  const fs::path dir = temp_dir("run");
+  const fs::path scene = write_scene(dir, kSmallScene);
+  const fs::path out = dir / "out";
+  ASSERT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set", "particles.r=0.25"}), 0);
+  for (const char* f : {"result.h5", "summary.json", "report.md"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+
+  const Hdf5File h5 = Hdf5File::open((out / "result.h5").string());
+  std::vector<std::string> names;
+  for (const auto& d : h5.datasets()) {
+    names.push_back(d.path);
+    EXPECT_FALSE(d.unit.empty()) << d.path << " has no unit";
+  }
+  for (const char* needed : {"/particles/t", "/particles/T", "/particles/n_bodies", "/particles/collisions",
+                             "/particles/final/x", "/particles/final/v", "/particles/final/m",
+                             "/continuum/godunov/v", "/continuum/hopf_lax/shocks/x", "/compare/clusters_x"})
+    EXPECT_NE(std::find(names.begin(), names.end(), needed), names.end()) << needed;
+  bool has_commit = false, has_override = false;
+  for (const auto& [name, value] : h5.attributes("/")) {
+    has_commit |= name == "git_commit" && !value.empty();
+    has_override |= name == "overrides" && value == "--set particles.r=0.25";
+  }
+  EXPECT_TRUE(has_commit);
+  EXPECT_TRUE(has_override);
+  const std::string info = describe_result((out / "result.h5").string());
+  EXPECT_NE(info.find("/particles/T"), std::string::npos);
+  EXPECT_NE(info.find("shockgas_version"), std::string::npos);
+}
+
+TEST(Command, InfoOnMissingFileExitsTwo) { EXPECT_EQ(run({"info", "/nonexistent/result.h5"}), 2); }
+
+}  // namespace
+}  // namespace shockgas::app
