@@ -220,20 +220,21 @@ HopfLaxSolution::Minimum HopfLaxSolution::refine(double y, long node) const {
 HopfLaxSolution::Minimum HopfLaxSolution::minimum(double y) const {
   if (t_ == 0) return {y, psi0(y)};
   const std::size_t edges = hull_x_.size();
-  const std::size_t v = static_cast<std::size_t>(std::upper_bound(hull_x_.begin(), hull_x_.end(), y) -
-                                                 hull_x_.begin());  // vertex between edges v-1, v
-  assert(v > 0 && v < edges);
+  std::size_t v = static_cast<std::size_t>(std::upper_bound(hull_x_.begin(), hull_x_.end(), y) -
+                                           hull_x_.begin());  // vertex between edges v-1, v
+  assert(v > 0 && v < edges);  // the three listed periods cover [0, L) with room
+  v = std::clamp<std::size_t>(v, 1, edges - 1);
   Minimum best = refine(y, hull_start_[v]);
   const auto consider = [&](long node) {
     const Minimum m = refine(y, node);
     if (m.psi < best.psi) best = m;
   };
-  if (v > 0 && hull_start_[v] - hull_start_[v - 1] >= 2) consider(hull_start_[v - 1]);
-  if (v < edges && hull_start_[v + 1] - hull_start_[v] >= 2) consider(hull_start_[v + 1]);
+  if (hull_start_[v] - hull_start_[v - 1] >= 2) consider(hull_start_[v - 1]);
+  if (hull_start_[v + 1] - hull_start_[v] >= 2) consider(hull_start_[v + 1]);
   return best;
 }
 
-HopfLaxSolution::Point HopfLaxSolution::at(double x) const {
+HopfLaxSolution::Point HopfLaxSolution::locate(double x, bool with_velocity) const {
   const double y = x - U_ * t_;
   double k = floor_div(y, L_);
   double yw = y - k * L_;  // y = yw + k L with yw in [0, L)
@@ -244,9 +245,33 @@ HopfLaxSolution::Point HopfLaxSolution::at(double x) const {
   p.q = m.q + k * L_;
   // Lab frame: Psi(x) = Psi_w(x - U t) + U x - U^2 t / 2.
   p.psi = m.psi + U_ * x - 0.5 * U_ * U_ * t_;
-  p.v = t_ > 0 ? U_ + (yw - m.q) / t_ : v0(x);
   p.mass = m0(p.q);
+  if (with_velocity) p.v = U_ + moving_velocity(yw, m.q);
   return p;
+}
+
+// w = (y - q*)/t, or w0(q*) where q* solves the characteristic equation to
+// rounding (the same value, without the cancellation in y - q* at small t).
+double HopfLaxSolution::moving_velocity(double y, double q) const {
+  if (t_ == 0) return w0(y);
+  const double w = w0(q);
+  const double residual = q + t_ * w - y;
+  const double eps = std::numeric_limits<double>::epsilon();
+  return std::abs(residual) <= 8 * eps * std::max({std::abs(y), std::abs(q), h_}) ? w : (y - q) / t_;
+}
+
+CellAverages HopfLaxSolution::cell_averages(std::size_t cells) const {
+  require(cells >= 1, "continuum.cells", cells, ">= 1");
+  const double dx = L_ / static_cast<double>(cells);
+  CellAverages a{std::vector<double>(cells), std::vector<double>(cells)};
+  Point left = locate(0.0, false);
+  for (std::size_t i = 0; i < cells; ++i) {
+    const Point right = locate(static_cast<double>(i + 1) * dx, false);
+    a.v[i] = (right.psi - left.psi) / dx;
+    a.rho[i] = (right.mass - left.mass) / dx;
+    left = right;
+  }
+  return a;
 }
 
 std::vector<Shock> HopfLaxSolution::shocks() const {
@@ -290,20 +315,6 @@ std::size_t hopf_lax_samples(std::size_t cells, const HopfLaxOptions& options) {
 
 namespace {
 
-// Cell averages from potential and mass differences at the cell edges.
-CellAverages averages_from(const HopfLaxSolution& s, std::size_t cells) {
-  const double dx = s.length() / static_cast<double>(cells);
-  CellAverages a{std::vector<double>(cells), std::vector<double>(cells)};
-  HopfLaxSolution::Point left = s.at(0.0);
-  for (std::size_t i = 0; i < cells; ++i) {
-    const HopfLaxSolution::Point right = s.at(static_cast<double>(i + 1) * dx);
-    a.v[i] = (right.psi - left.psi) / dx;
-    a.rho[i] = (right.mass - left.mass) / dx;
-    left = right;
-  }
-  return a;
-}
-
 // Point masses: the sticky gas is the exact solution; its clusters of two or
 // more bodies are the shocks.
 ContinuumResult solve_bodies(const InitialField& f, std::size_t cells, double t) {
@@ -328,7 +339,7 @@ ContinuumResult solve_bodies(const InitialField& f, std::size_t cells, double t)
 
 ContinuumResult solve_field(const InitialField& f, std::size_t cells, double t, const HopfLaxOptions& o) {
   const HopfLaxSolution s(f, t, hopf_lax_samples(cells, o));
-  const CellAverages a = averages_from(s, cells);
+  const CellAverages a = s.cell_averages(cells);
   ContinuumResult r;
   r.v = a.v;
   r.rho = a.rho;
@@ -366,7 +377,7 @@ CellAverages exact_cell_averages(const InitialField& f, std::size_t cells, doubl
     const ContinuumResult r = solve_bodies(f, cells, t);
     return {r.v, r.rho};
   }
-  return averages_from(HopfLaxSolution(f, t, hopf_lax_samples(cells, options)), cells);
+  return HopfLaxSolution(f, t, hopf_lax_samples(cells, options)).cell_averages(cells);
 }
 
 }  // namespace shockgas::continuum

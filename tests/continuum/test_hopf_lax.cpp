@@ -169,6 +169,19 @@ TEST(HopfLax, SawtoothIsPiecewiseLinear) {
   EXPECT_NEAR(r.shocks[0].jump, -1 / (1 + t), 1e-13);
 }
 
+// At small t, v = (y - q*)/t would lose digits to cancellation (1e-16 / t);
+// on a characteristic the solver returns v0(q*) instead: rounding only.
+TEST(HopfLax, SmallTimeVelocityIsAccurate) {
+  const double t = 1e-9, U = 0.5;
+  const HopfLaxSolution s(sine(U), t, 4096);
+  const SineReference ref(t);
+  Rng rng(4);
+  for (int k = 0; k < 100; ++k) {
+    const double x = rng.uniform(0.0, 1.0);
+    EXPECT_NEAR(s.velocity(x), U + std::sin(2 * kPi * ref.lagrangian(x - U * t)), 1e-13);
+  }
+}
+
 // Galilean invariance: adding 2 to v0 moves the whole solution by 2t.
 TEST(HopfLax, MeanVelocityIsAGalileanShift) {
   const double t = 0.37;

@@ -45,7 +45,8 @@ struct HopfLaxOptions {
 // f.rho0 = 1 if absent) on the periodic domain [0, f.length). Building it costs
 // O(n) for n samples per period (quadrature of v0 and rho0 plus one hull);
 // each evaluation costs O(log n) plus a few dozen evaluations of v0.
-// v0 and rho0 are only evaluated on [0, f.length).
+// v0 and rho0 are only evaluated on [0, f.length). The const members update
+// work counters (stats()), so one object is not for concurrent use.
 class HopfLaxSolution {
  public:
   // samples: samples of Psi0 per period (>= 16). Throws InputError for bad
@@ -65,7 +66,7 @@ class HopfLaxSolution {
     double v = 0;     // v(x, t) = dPsi/dx (at a shock: the value of one of its sides)
     double mass = 0;  // cumulative mass M(x, t) = M0(q*(x)), M0(q) = int_0^q rho0
   };
-  Point at(double x) const;
+  Point at(double x) const { return locate(x, true); }
   double lagrangian(double x) const { return at(x).q; }
   double potential(double x) const { return at(x).psi; }
   double velocity(double x) const { return at(x).v; }
@@ -74,6 +75,10 @@ class HopfLaxSolution {
   // The shocks with x in [0, L), sorted by x. A shock whose Lagrangian interval
   // is narrower than one sample (t just after it forms) is not listed.
   std::vector<Shock> shocks() const;
+
+  // Exact cell averages on `cells` cells of [0, L): potential and Lagrangian
+  // mass differences at the cell edges over dx.
+  CellAverages cell_averages(std::size_t cells) const;
 
   // Counters: "samples", "hull_clusters", "v0_evaluations", "unbracketed"
   // (minimisers that could not be bracketed between samples and were taken at
@@ -86,11 +91,14 @@ class HopfLaxSolution {
     double q = 0;    // minimiser, moving frame, unwrapped
     double psi = 0;  // Psi_w at the evaluation point (moving frame, periodic)
   };
+  Point locate(double x, bool with_velocity) const;
+  double moving_velocity(double y, double q) const;
   Minimum minimum(double y) const;  // y: moving-frame position in [0, L)
   Minimum refine(double y, long node) const;
   double root_near(double y, long node, bool& bracketed) const;
   double wrap(double q) const;
   double v0(double q) const;
+  double w0(double q) const { return v0(q) - U_; }
   double rho0(double q) const;
   double psi0(double q) const;  // Psi0_w(q) = int_0^q (v0 - U), any q
   double m0(double q) const;    // M0(q), any q
