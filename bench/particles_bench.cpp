@@ -84,7 +84,12 @@ void BM_Baseline(benchmark::State& state) {
 }
 
 BENCHMARK(BM_Engine)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->Iterations(2);
-BENCHMARK(BM_Baseline)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Baseline)
+    ->Arg(10'000)
+    ->Arg(100'000)
+    ->Arg(1'000'000)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 void write_csv(const std::string& path) {
   std::ofstream out(path);

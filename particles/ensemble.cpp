@@ -98,7 +98,8 @@ std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p,
 
 }  // namespace
 
-EnsembleResult run_ensemble(const InitialParams& ip, const ParticleParams& p, const ProgressCallback& progress) {
+EnsembleResult run_ensemble(const InitialParams& ip, const ParticleParams& p,
+                            const ProgressCallback& progress) {
   validate(ip);
   validate(p);
   const auto start = std::chrono::steady_clock::now();

@@ -38,6 +38,8 @@ class EventEngine {
   static constexpr std::uint32_t none = 0xFFFFFFFFu;
   // Collisions between two looks at the watch and at inelastic collapse.
   static constexpr std::uint64_t check_every = 1u << 14;
+  // Consecutive collisions without time advancing that mean inelastic collapse.
+  static constexpr int stall_limit = 256;
 
   // initial: sorted by x (ring: inside [0, L)); all masses equal unless Linked.
   EventEngine(const Bodies& initial, double L, bool ring, const CollisionRule& rule)
@@ -63,13 +65,22 @@ class EventEngine {
 
   // Processes every collision at time <= t_stop; then now() = t_stop unless
   // stopped early. watch(now, collisions) is called every check_every collisions
-  // and returns false to halt. Inelastic collapse: a window of check_every
-  // collisions during which time advanced by less than 1e-10 max(1, t).
+  // and returns false to halt.
+  //
+  // Inelastic collapse (delta = 0, r < 1): a few bodies collide ever faster, the
+  // gaps fall below rounding and the contact times stop advancing; left alone,
+  // rounding would eventually let the bodies escape with meaningless velocities.
+  // Detected as `stall_limit` consecutive collisions that advance time by less
+  // than 1e-12 max(1, t), or a window of check_every collisions advancing it by
+  // less than 1e-10 max(1, t).
   template <class Watch>
   EngineStop run_until(double t_stop, Watch&& watch) {
     while (tree_.top_time() <= t_stop) {
       const std::size_t i = tree_.top();
       prefetch(i);
+      const double t = tree_.top_time();
+      stall_ = t - now_ <= 1e-12 * std::max(1.0, std::abs(now_)) ? stall_ + 1 : 0;
+      if (stall_ >= stall_limit) return EngineStop::collapse;
       collide(i);
       if ((++count_[3] & (check_every - 1)) == 0) {
         if (now_ - window_start_ <= 1e-10 * std::max(1.0, std::abs(now_))) return EngineStop::collapse;
@@ -215,11 +226,12 @@ class EventEngine {
   std::size_t alive_;
   double m0_ = 1.0;
   std::vector<Body> body_;
-  std::vector<double> mass_;                 // Linked only; 0 = merged away
-  std::vector<std::uint32_t> next_, prev_;   // Linked only
+  std::vector<double> mass_;                // Linked only; 0 = merged away
+  std::vector<std::uint32_t> next_, prev_;  // Linked only
   EventTree tree_;
   double now_ = 0.0;
   double window_start_ = 0.0;
+  int stall_ = 0;
   double last_x_ = 0.0;
   double dissipated_ = 0.0;
   std::array<std::uint64_t, 4> count_{};  // inelastic, elastic, merge, all

@@ -16,7 +16,8 @@ ChainState hull_state(const Bodies& initial, double L, bool ring, double t) {
       ring ? sticky_clusters_ring(initial, L, t) : sticky_clusters_line(initial, t);
   const std::size_t n = initial.size();
   for (StickyCluster& k : c) k.first %= n;
-  std::sort(c.begin(), c.end(), [](const StickyCluster& a, const StickyCluster& b) { return a.first < b.first; });
+  std::sort(c.begin(), c.end(),
+            [](const StickyCluster& a, const StickyCluster& b) { return a.first < b.first; });
   ChainState s;
   for (const StickyCluster& k : c) s.push_back(k.first, k.x, k.v, k.m);
   return s;

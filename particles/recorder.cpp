@@ -99,7 +99,8 @@ void Recorder::observe(double t, const ChainState& s, const Counters& c) {
   const bool want_snapshot = next_snapshot_ < snapshots_.size() && snapshots_[next_snapshot_] <= t;
   Bodies sorted;
   if ((want_sample && p_.clusters) || want_snapshot) sorted = sorted_bodies(s, L_, ring_);
-  for (; next_sample_ < samples_.size() && samples_[next_sample_] <= t; ++next_sample_) sample(t, s, sorted, c);
+  for (; next_sample_ < samples_.size() && samples_[next_sample_] <= t; ++next_sample_)
+    sample(t, s, sorted, c);
   for (; next_snapshot_ < snapshots_.size() && snapshots_[next_snapshot_] <= t; ++next_snapshot_)
     out_.snapshots.push_back({t, sorted});
   for (; next_frame_ < frames_.size() && frames_[next_frame_] <= t; ++next_frame_) frame(t, s);
@@ -134,7 +135,8 @@ void Recorder::histogram(double t, const ChainState& s) {
   double* row = h.density.data() + h.density.size() - bins;
   for (std::size_t b = 0; b < s.v.size(); ++b) {
     const double bin = std::floor(((s.v[b] - mean) * scale + h.zmax) / dz);
-    if (bin >= 0 && bin < static_cast<double>(bins)) row[static_cast<std::size_t>(bin)] += s.m[b] / (mass * dz);
+    if (bin >= 0 && bin < static_cast<double>(bins))
+      row[static_cast<std::size_t>(bin)] += s.m[b] / (mass * dz);
   }
 }
 

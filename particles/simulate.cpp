@@ -13,10 +13,14 @@ namespace shockgas::particles {
 
 std::string to_string(StopReason reason) {
   switch (reason) {
-    case StopReason::completed: return "completed";
-    case StopReason::collapse: return "collapse";
-    case StopReason::event_limit: return "event_limit";
-    case StopReason::wall_limit: return "wall_limit";
+    case StopReason::completed:
+      return "completed";
+    case StopReason::collapse:
+      return "collapse";
+    case StopReason::event_limit:
+      return "event_limit";
+    case StopReason::wall_limit:
+      return "wall_limit";
   }
   return "unknown";
 }
@@ -33,7 +37,8 @@ void check_bodies(const Bodies& b, double L, bool ring) {
     require(std::isfinite(b.x[i]) && std::isfinite(b.v[i]), "initial.bodies", b.x[i], "finite x and v");
     require(std::isfinite(b.m[i]) && b.m[i] > 0, "initial.bodies.m", b.m[i], "finite masses > 0");
     require(i == 0 || b.x[i - 1] <= b.x[i], "initial.bodies.x", b.x[i], "positions sorted ascending");
-    require(!ring || (b.x[i] >= 0 && b.x[i] < L), "initial.bodies.x", b.x[i], "positions in [0, L) on a ring");
+    require(!ring || (b.x[i] >= 0 && b.x[i] < L), "initial.bodies.x", b.x[i],
+            "positions in [0, L) on a ring");
   }
 }
 
@@ -42,7 +47,9 @@ bool equal_masses(const Bodies& b) {
 }
 
 // Share of the work done at time t: collisions grow ~ t^(2/3) in the sticky regime.
-double work_fraction(double t, double t_end) { return std::min(1.0, std::cbrt(t / t_end) * std::cbrt(t / t_end)); }
+double work_fraction(double t, double t_end) {
+  return std::min(1.0, std::cbrt(t / t_end) * std::cbrt(t / t_end));
+}
 
 // Decides, every few thousand collisions, whether to go on: limits and progress.
 struct Watch {
@@ -54,7 +61,8 @@ struct Watch {
 
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
   bool operator()(double t, std::uint64_t collisions) {
-    if (p.max_collisions > 0 && collisions >= p.max_collisions) return reason = StopReason::event_limit, false;
+    if (p.max_collisions > 0 && collisions >= p.max_collisions)
+      return reason = StopReason::event_limit, false;
     const double s = elapsed();
     if (p.max_wall_seconds > 0 && s >= p.max_wall_seconds) return reason = StopReason::wall_limit, false;
     if (progress && s - last_report >= 0.1) {
@@ -88,7 +96,8 @@ RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleP
   RunStop stop;
   for (double t = recorder.next_stop(); t != detail::Recorder::done; t = recorder.next_stop()) {
     const detail::EngineStop s = engine.run_until(t, watch);
-    if (s == detail::EngineStop::collapse) stop = {StopReason::collapse, engine.now(), engine.last_position()};
+    if (s == detail::EngineStop::collapse)
+      stop = {StopReason::collapse, engine.now(), engine.last_position()};
     if (s == detail::EngineStop::halted) stop = {watch.reason, engine.now(), 0.0};
     if (s != detail::EngineStop::reached) break;
     recorder.observe(t, chain_state(engine, t), counters(engine));
@@ -101,7 +110,8 @@ RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleP
 
 }  // namespace
 
-RunResult simulate(const Bodies& initial, double L, const ParticleParams& p, const ProgressCallback& progress) {
+RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
+                   const ProgressCallback& progress) {
   validate(p);
   const bool ring = p.geometry == "ring";
   check_bodies(initial, L, ring);

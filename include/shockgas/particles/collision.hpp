@@ -28,8 +28,8 @@ enum class CollisionKind : std::uint8_t {
 
 // The rule's parameters, fixed for a run.
 struct CollisionRule {
-  double r = 0.9;               // restitution [1], 0 <= r <= 1
-  double delta = 1e-2;          // sub-threshold velocity [length/time], >= 0
+  double r = 0.9;                    // restitution [1], 0 <= r <= 1
+  double delta = 1e-2;               // sub-threshold velocity [length/time], >= 0
   bool sticky_subthreshold = false;  // sub-threshold collisions merge instead of bouncing
 
   // True when some collision of this rule can merge bodies.
@@ -66,9 +66,9 @@ inline double bounce_equal(double& v, double& u, double m, double r) {
 }
 
 struct Merged {
-  double v = 0;          // centre-of-mass velocity [length/time]
-  double m = 0;          // summed mass [mass]
-  double dissipated = 0; // kinetic energy lost, mu g^2 / 2 [mass length^2/time^2]
+  double v = 0;           // centre-of-mass velocity [length/time]
+  double m = 0;           // summed mass [mass]
+  double dissipated = 0;  // kinetic energy lost, mu g^2 / 2 [mass length^2/time^2]
 };
 
 // One body out of two: mass and momentum kept.

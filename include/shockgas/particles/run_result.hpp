@@ -82,8 +82,8 @@ struct RunResult {
   ScaledHistogram histogram;        // empty unless params.histogram_bins > 0
   SpaceTime spacetime;              // empty unless params.spacetime
   RunStop stop;
-  std::uint64_t collisions = 0;     // total collisions (hull solver: merges)
-  double wall_seconds = 0;          // wall-clock time of the run [s]
+  std::uint64_t collisions = 0;  // total collisions (hull solver: merges)
+  double wall_seconds = 0;       // wall-clock time of the run [s]
 };
 
 }  // namespace shockgas::particles

@@ -34,15 +34,15 @@ struct SeriesStats {
 };
 
 struct EnsembleResult {
-  std::vector<double> t;            // sample times [time]
-  std::vector<double> count;        // realizations that reached each sample [1]
+  std::vector<double> t;      // sample times [time]
+  std::vector<double> count;  // realizations that reached each sample [1]
   SeriesStats T, mean_v, n_bodies, n_clusters, collisions, inelastic, elastic, merges, dissipated;
-  std::vector<double> histogram;    // mean of the histogram densities (layout of ScaledHistogram)
-  RunResult first;                  // realization 0 in full (final state, snapshots, space-time)
-  std::vector<RunStop> stops;       // how each realization ended
+  std::vector<double> histogram;  // mean of the histogram densities (layout of ScaledHistogram)
+  RunResult first;                // realization 0 in full (final state, snapshots, space-time)
+  std::vector<RunStop> stops;     // how each realization ended
   std::vector<std::uint64_t> collisions_per_realization;
   std::uint64_t total_collisions = 0;
-  double wall_seconds = 0;          // wall-clock time of the whole ensemble [s]
+  double wall_seconds = 0;  // wall-clock time of the whole ensemble [s]
 };
 
 // params.realizations runs of make_initial_bodies(initial, k), k = 0..R-1 (seed

@@ -1,0 +1,98 @@
+// Inelastic collapse with delta = 0: three particles on a line collapse for
+// r < 7 - 4 sqrt(3) ~ 0.0718 and not above (McNamara & Young, Phys. Fluids A 4,
+// 496 (1992)); the engine must stop cleanly, keeping what it observed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "shockgas/core/initial_condition.hpp"
+#include "shockgas/particles/simulate.hpp"
+
+namespace shockgas::particles {
+namespace {
+
+// The middle particle at rest between two approaching ones (not symmetric, so
+// that the collisions alternate 1-2, 2-3, 1-2, ...).
+RunResult three_on_a_line(double r) {
+  Bodies b;
+  b.x = {0.0, 1.0, 2.5};
+  b.v = {1.0, 0.0, -1.0};
+  b.m = {1.0, 1.0, 1.0};
+  ParticleParams p;
+  p.r = r;
+  p.delta = 0.0;
+  p.geometry = "line";
+  p.t_end = 100.0;
+  p.samples = 10;
+  p.clusters = false;
+  return simulate(b, 10.0, p);
+}
+
+TEST(Collapse, ThreeParticlesBelowThresholdCollapse) {
+  for (double r : {0.01, 0.05, 0.07}) {  // r_c = 7 - 4 sqrt(3) = 0.0718
+    SCOPED_TRACE(r);
+    const RunResult out = three_on_a_line(r);
+    EXPECT_EQ(out.stop.reason, StopReason::collapse);
+    // The outer particles meet the middle one between t = 1 and t = 1.5 + the bouncing time.
+    EXPECT_GT(out.stop.time, 1.0);
+    EXPECT_LT(out.stop.time, 5.0);
+    EXPECT_GT(out.stop.position, 0.9);  // between the first contacts, x in (1, 1.75)
+    EXPECT_LT(out.stop.position, 2.0);
+    // Everything up to the collapse is kept: the sample at t = 1 and the final state.
+    ASSERT_GE(out.series.size(), 1u);
+    EXPECT_LE(out.series.t.back(), out.stop.time);
+    ASSERT_EQ(out.final_state.size(), 3u);
+    // At the collapse all three are at one point with one velocity (the centre of mass's, 0).
+    const double tol = 1e-6;  // the collapse is detected once time stops advancing (< 1e-10)
+    EXPECT_NEAR(out.final_state.x[0], out.final_state.x[2], tol);
+    EXPECT_NEAR(out.final_state.v[0], out.final_state.v[2], tol);
+    EXPECT_NEAR(total_momentum(out.final_state), 0.0, 1e-14);  // rounding of O(1) momenta
+  }
+}
+
+TEST(Collapse, ThreeParticlesAboveThresholdEscape) {
+  for (double r : {0.075, 0.1, 0.5}) {
+    SCOPED_TRACE(r);
+    const RunResult out = three_on_a_line(r);
+    EXPECT_EQ(out.stop.reason, StopReason::completed);
+    EXPECT_EQ(out.stop.time, 100.0);
+    EXPECT_EQ(out.series.size(), 10u);
+    // Finitely many collisions: the sequence ends and the three separate.
+    EXPECT_LT(out.collisions, 10000u);
+    EXPECT_LT(out.final_state.v[0], out.final_state.v[1]);
+    EXPECT_LT(out.final_state.v[1], out.final_state.v[2]);
+  }
+}
+
+TEST(Collapse, LargeRingStopsWithoutHanging) {
+  InitialParams ip;
+  ip.N = 2000;
+  ip.seed = 11;
+  ParticleParams p;
+  p.r = 0.5;
+  p.delta = 0.0;
+  p.t_end = 1e4;
+  p.clusters = false;
+  const RunResult out = simulate(make_initial_bodies(ip), 2000.0, p);
+  EXPECT_EQ(out.stop.reason, StopReason::collapse);
+  EXPECT_GE(out.stop.position, 0.0);
+  EXPECT_LT(out.stop.position, 2000.0);
+  EXPECT_LT(out.stop.time, 1e4);
+  EXPECT_EQ(out.final_state.size(), 2000u);
+}
+
+TEST(Collapse, EventLimitStopsARun) {
+  InitialParams ip;
+  ip.N = 1000;
+  ParticleParams p;
+  p.t_end = 1e6;
+  p.max_collisions = 50000;
+  p.clusters = false;
+  const RunResult out = simulate(make_initial_bodies(ip), 1000.0, p);
+  EXPECT_EQ(out.stop.reason, StopReason::event_limit);
+  EXPECT_GE(out.collisions, 50000u);
+  EXPECT_LT(out.collisions, 50000u + 16384u);  // checked every 2^14 collisions
+}
+
+}  // namespace
+}  // namespace shockgas::particles

@@ -1,0 +1,47 @@
+#include "hull_agreement.hpp"
+
+namespace shockgas::particles {
+namespace {
+
+const std::vector<double> kTimes = {1.0, 10.0, 100.0, 1000.0};
+
+TEST(HullAgreement, LatticeOnALine) {
+  testing::expect_engine_matches_hull(3000, "lattice", "line", kTimes, 1);
+}
+TEST(HullAgreement, RandomOnALine) { testing::expect_engine_matches_hull(3000, "random", "line", kTimes, 2); }
+TEST(HullAgreement, LatticeOnARing) {
+  testing::expect_engine_matches_hull(3000, "lattice", "ring", kTimes, 3);
+}
+TEST(HullAgreement, RandomOnARing) { testing::expect_engine_matches_hull(3000, "random", "ring", kTimes, 4); }
+
+TEST(HullModel, SameObservablesAsTheEngine) {
+  InitialParams ip;
+  ip.N = 2000;
+  ip.seed = 5;
+  ip.remove_mean = true;
+  const Bodies initial = make_initial_bodies(ip);
+  ParticleParams p;
+  p.r = 0.0;
+  p.delta = 0.0;
+  p.t_end = 500.0;
+  p.samples = 8;
+  p.histogram_bins = 20;
+  const RunResult events = simulate(initial, 2000.0, p);
+  p.solver = "hull";
+  const RunResult hull = simulate(initial, 2000.0, p);
+  ASSERT_EQ(hull.series.size(), 8u);
+  ASSERT_EQ(events.series.size(), 8u);
+  for (std::size_t k = 0; k < 8; ++k) {
+    EXPECT_EQ(hull.series.n_bodies[k], events.series.n_bodies[k]);  // same partition
+    EXPECT_EQ(hull.series.merges[k], events.series.merges[k]);
+    EXPECT_EQ(hull.series.n_clusters[k], hull.series.n_bodies[k]);  // merged bodies are the clusters
+    // Mean-square velocities of O(1) values: rounding ~1e-15, margin for the sum.
+    EXPECT_NEAR(hull.series.T[k], events.series.T[k], 1e-12);
+    EXPECT_NEAR(hull.series.dissipated[k], events.series.dissipated[k], 1e-9);
+  }
+  ASSERT_EQ(hull.histogram.density.size(), events.histogram.density.size());
+  EXPECT_EQ(hull.final_state.size(), events.final_state.size());
+}
+
+}  // namespace
+}  // namespace shockgas::particles
