@@ -310,7 +310,9 @@ std::map<std::string, double> HopfLaxSolution::stats() const {
 std::size_t hopf_lax_samples(std::size_t cells, const HopfLaxOptions& options) {
   require(options.samples_per_cell >= 1, "hopf_lax.samples_per_cell", options.samples_per_cell, ">= 1");
   require(options.min_samples >= 16, "hopf_lax.min_samples", options.min_samples, ">= 16");
-  return std::max(cells * options.samples_per_cell, options.min_samples);
+  const std::size_t n = std::max(cells * options.samples_per_cell, options.min_samples);
+  const std::size_t k = options.multiple_of;
+  return k > 0 ? (n + k - 1) / k * k : n;
 }
 
 namespace {

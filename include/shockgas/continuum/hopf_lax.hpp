@@ -39,6 +39,9 @@ namespace shockgas::continuum {
 struct HopfLaxOptions {
   std::size_t samples_per_cell = 4;  // samples of Psi0 per output cell [1], >= 1
   std::size_t min_samples = 2048;    // lower bound on samples per period [1], >= 16
+  std::size_t multiple_of = 0;       // if > 0, samples per period rounded up to a multiple of
+                                     // it [1]: for data piecewise on that many equal cells
+                                     // (cell averages as v0), so that every kink is a node
 };
 
 // The exact solution at one time t >= 0 for pointwise data (f.v0, optional
