@@ -1,0 +1,70 @@
+// Long checks of the particle engine (label `slow`): the sizes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hull_agreement.hpp"
+#include "shockgas/core/initial_condition.hpp"
+#include "shockgas/particles/simulate.hpp"
+
+namespace shockgas::particles {
+namespace {
+
+const std::vector<double> kTimes = {1.0, 10.0, 100.0, 1000.0, 10000.0};
+
+TEST(HullAgreementSlow, LatticeLine) { testing::expect_engine_matches_hull(100000, "lattice", "line", kTimes, 1); }
+TEST(HullAgreementSlow, RandomLine) { testing::expect_engine_matches_hull(100000, "random", "line", kTimes, 2); }
+TEST(HullAgreementSlow, LatticeRing) { testing::expect_engine_matches_hull(100000, "lattice", "ring", kTimes, 3); }
+TEST(HullAgreementSlow, RandomRing) { testing::expect_engine_matches_hull(100000, "random", "ring", kTimes, 4); }
+
+TEST(ConservationSlow, MomentumOverTenMillionCollisions) {
+  InitialParams ip;
+  ip.N = 100000;
+  ip.seed = 8;
+  const Bodies b = make_initial_bodies(ip);
+  ParticleParams p;
+  p.t_end = 1e9;
+  p.samples = 1;
+  p.clusters = false;
+  p.max_collisions = 10'000'000;
+  const RunResult out = simulate(b, 1e5, p);
+  ASSERT_GE(out.collisions, 10'000'000u);
+  // One rounding of O(1) velocities per collision (~1e-16): a random walk over
+  // 1e7 collisions gives ~3e-13; 1e-9 would catch any systematic error.
+  EXPECT_NEAR(total_momentum(out.final_state), total_momentum(b), 1e-9);
+}
+
+// Least-squares slope of log T against log t over t in [t0, t1].
+double temperature_exponent(const TimeSeries& s, double t0, double t1) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    if (s.t[k] < t0 || s.t[k] > t1) continue;
+    const double x = std::log(s.t[k]), y = std::log(s.T[k]);
+    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+// Sticky-gas regime eps^(-3/2) << t << N^(3/2) (eps = (1 - r)/2, DESIGN.md §1):
+// T ~ t^(-2/3) whatever r. N = 10^5, one realization; window [100, 3000]
+// (t_stick = 8 for r = 0.5). Measured slopes: -0.666 (r = 0.5), -0.668 (r = 0).
+void expect_sticky_exponent(double r) {
+  InitialParams ip;
+  ip.N = 100000;
+  ip.seed = 3;
+  ParticleParams p;
+  p.r = r;
+  p.delta = 1e-2;
+  p.t_end = 3000;
+  p.samples = 41;
+  p.clusters = false;
+  const RunResult out = simulate(make_initial_bodies(ip), 1e5, p);
+  ASSERT_EQ(out.stop.reason, StopReason::completed);
+  EXPECT_NEAR(temperature_exponent(out.series, 100, 3000), -2.0 / 3.0, 0.03);  // the tolerance
+}
+
+TEST(CoolingSlow, LateTimeExponentHalfRestitution) { expect_sticky_exponent(0.5); }
+TEST(CoolingSlow, LateTimeExponentSticky) { expect_sticky_exponent(0.0); }
+
+}  // namespace
+}  // namespace shockgas::particles
