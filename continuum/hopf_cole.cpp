@@ -33,25 +33,37 @@ std::string text(double x) {
   return s.str();
 }
 
-// Runs the fft path and, if its roundoff bound is above the tolerance, the log
-// path (auto) or a RunError (forced fft). Fills the note and the stats.
+constexpr double kFftDigitsLost = 1e-3;  // fft bound / scale above which it is never returned
+constexpr double kLogPathBudget = 2e8;   // kernel terms the log path may take unasked (~seconds)
+
+// The fft path when its roundoff bound allows (see hopf_cole.hpp), else the log
+// path. Fills the note and the stats; throws for a forced fft path that lost its digits.
 std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const ContinuumParams& p, double t,
-                                     double tolerance, ContinuumResult& r) {
+                                     double scale, ContinuumResult& r) {
   const double shift = psi0.mean_velocity * t;
   const std::string spread = "DeltaPsi/2nu = " + text(r.stats["spread_over_2nu"]);
+  const double tolerance = p.rtol * scale;
   if (p.hopf_cole_path != "log") {
     LogTheta fft = log_theta_fft(psi0, p.nu, t, shift);
-    r.stats["fft_velocity_error_bound"] = fft.velocity_error_bound;
-    const std::string bound = "roundoff bound on v " + text(fft.velocity_error_bound) +
-                              " vs tolerance rtol*max|v0| = " + text(tolerance);
-    if (fft.velocity_error_bound <= tolerance) {
-      r.method_note = "Hopf-Cole, fft path (" + spread + "; " + bound + ")";
+    const double bound = fft.velocity_error_bound;
+    r.stats["fft_velocity_error_bound"] = bound;
+    const std::string why =
+        spread + "; roundoff bound on v " + text(bound) + " vs rtol*max|v0| = " + text(tolerance);
+    const bool usable = bound <= kFftDigitsLost * scale;
+    const double terms = log_theta_kernel_terms(psi0, p.nu, t);
+    if (bound <= tolerance) {
+      r.method_note = "Hopf-Cole, fft path (" + why + ")";
       return fft.values;
     }
-    if (p.hopf_cole_path == "fft")
-      throw RunError("hopf_cole: the forced fft path lost its digits at t = " + text(t) + " (" + spread +
-                     "; " + bound + "); use continuum.hopf_cole_path = \"log\" or \"auto\"");
-    r.method_note = "Hopf-Cole, log-domain path: the fft path was rejected (" + spread + "; " + bound + ")";
+    if (p.hopf_cole_path == "fft" && !usable)
+      throw RunError("hopf_cole: the forced fft path lost its digits at t = " + text(t) + " (" + why +
+                     "); use continuum.hopf_cole_path = \"log\" or \"auto\"");
+    if (p.hopf_cole_path == "fft" || (usable && terms > kLogPathBudget)) {
+      r.method_note = "Hopf-Cole, fft path above tolerance (" + why + "; the log path would sum ~" +
+                      text(terms) + " kernel terms)";
+      return fft.values;
+    }
+    r.method_note = "Hopf-Cole, log-domain path: the fft path was rejected (" + why + ")";
   } else {
     r.method_note = "Hopf-Cole, log-domain path (forced; " + spread + ")";
   }
@@ -88,8 +100,8 @@ ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p,
     r.v = initial.v;
     r.method_note = "Hopf-Cole at t = 0: the initial cell averages";
   } else {
-    const double tolerance = p.rtol * std::max(max_abs(initial.v), 1e-300);
-    r.v = velocity_from_log_theta(psi0, log_theta_chosen(psi0, p, t_end, tolerance, r), p.nu);
+    const double scale = std::max(max_abs(initial.v), 1e-300);
+    r.v = velocity_from_log_theta(psi0, log_theta_chosen(psi0, p, t_end, scale, r), p.nu);
   }
   r.method_note += "; density not computed (Hopf-Cole gives v only), rho empty";
   require_finite(r.v, r.x, t_end);

@@ -126,15 +126,26 @@ class KernelSum {
   std::size_t vertex_ = 0;
 };
 
+// Quadrature nodes per cell: the trapezoid sum of a Gaussian of width
+// sigma = sqrt(2 nu t) has relative error ~ 2 exp(-2 pi^2 sigma^2 / dq^2), so
+// dq <= sigma / 2 makes it < 1e-30.
+std::size_t kernel_refinement(double h, double nu, double t) {
+  const double sigma = std::sqrt(2 * nu * t);
+  return static_cast<std::size_t>(std::clamp(std::ceil(2 * h / sigma), 1.0, 1024.0));
+}
+
 }  // namespace
+
+double log_theta_kernel_terms(const MovingFramePotential& psi0, double nu, double t) {
+  const double dq = psi0.spacing() / static_cast<double>(kernel_refinement(psi0.spacing(), nu, t));
+  const double window = 2 * std::sqrt(2 * t * 2 * nu * kWindow);  // hull curvature 1/t
+  return static_cast<double>(psi0.psi.size()) * (window / dq + 1);
+}
 
 LogTheta log_theta_kernel(const MovingFramePotential& psi0, double nu, double t, double shift) {
   const std::size_t n = psi0.psi.size();
   const double h = psi0.spacing(), L = psi0.length;
-  // Trapezoid sum of a Gaussian of width sigma = sqrt(2 nu t) has relative error
-  // ~ 2 exp(-2 pi^2 sigma^2 / dq^2): dq <= sigma / 2 makes it < 1e-30.
-  const double sigma = std::sqrt(2 * nu * t);
-  const auto refine = static_cast<std::size_t>(std::clamp(std::ceil(2 * h / sigma), 1.0, 1024.0));
+  const std::size_t refine = kernel_refinement(h, nu, t);
   // Evaluation points y_j = j h - s, s = shift mod L in [0, L). A contributing q has
   // (y - q)^2 / 2t <= Psi0(y) - min Psi0 + 2 nu kWindow, hence |y - q| <= reach.
   const double s = shift - L * std::floor(shift / L);

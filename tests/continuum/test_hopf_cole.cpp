@@ -217,3 +217,17 @@ TEST(HopfCole, RefusesBadInput) {
     EXPECT_EQ(e.key(), "continuum.hopf_cole_path");
   }
 }
+
+TEST(HopfCole, AutoKeepsAnUsableFftResultWhenTheLogPathIsTooDear) {
+  // 2^15 cells at nu = 1e-2: the log path would sum ~1.5e9 kernel terms; the fft
+  // bound (~8e-7) is above rtol * max|v0| = 1.5e-8 but far below the 1e-3 * max|v0|
+  // at which the fft result is never returned.
+  sc::ContinuumParams p;
+  p.nu = 1e-2;
+  p.cells = 1 << 15;
+  p.rtol = 1e-8;
+  const sc::ContinuumResult r = sc::solve_hopf_cole(sine_field(), p, 0.3);
+  EXPECT_EQ(r.stats.at("log_path"), 0.0);
+  EXPECT_GT(r.stats.at("fft_velocity_error_bound"), p.rtol * 1.5);
+  EXPECT_NE(r.method_note.find("above tolerance"), std::string::npos) << r.method_note;
+}

@@ -68,11 +68,22 @@ struct LogTheta {
 LogTheta log_theta_fft(const MovingFramePotential& psi0, double nu, double t, double shift);
 LogTheta log_theta_kernel(const MovingFramePotential& psi0, double nu, double t, double shift);
 
+// Estimated number of kernel terms the log path sums (n times the window of a
+// smooth region, where the hull's curvature is 1/t): its cost, for the path choice.
+double log_theta_kernel_terms(const MovingFramePotential& psi0, double nu, double t);
+
 // Cell averages v_i = U - 2 nu (L_{i+1} - L_i) / h, L_n = L_0 (periodic).
 std::vector<double> velocity_from_log_theta(const MovingFramePotential& psi0,
                                             const std::vector<double>& log_theta, double nu);
 
 // The solver: cell averages of v at t_end on p.cells cells, path from p.hopf_cole_path.
+// With scale = max|v0| (cell averages), the fft result is
+//  * accepted if its roundoff bound is <= p.rtol * scale;
+//  * never returned if the bound is > 1e-3 * scale (it has lost its digits): a forced
+//    fft path throws RunError, auto runs the log path whatever it costs;
+//  * in between, auto runs the log path unless that would take more than 2e8 kernel
+//    terms (seconds), and keeps the fft result otherwise, saying so in method_note;
+//    a forced fft path returns it with the bound in method_note.
 // Throws InputError for nu <= 0 (continuum.nu), a bad path name
 // (continuum.hopf_cole_path) or t_end < 0; RunError if the forced fft path lost its
 // digits or any output is non-finite (naming the solver, the cell and the time).

@@ -16,7 +16,7 @@ struct ContinuumParams {
   double rtol = 1e-6;                 // relative tolerance of cvode and arkode, in [1e-12, 1e-1]
   std::string hopf_cole_path = "auto";  // hopf_cole: "fft" (spectral heat equation), "log" (log-domain
                                       // heat kernel, any nu) or "auto" (fft unless its roundoff bound
-                                      // exceeds rtol * max|v0|, then log)
+                                      // exceeds rtol * max|v0|, then log; see hopf_cole.hpp)
   std::string limiter = "mc";         // slope limiter of godunov2: "minmod" | "vanleer" | "mc"
   std::string boundary = "periodic";  // "periodic" | "outflow"
   bool allow_unstable = false;        // run even outside a method's stable range (stability charts)
