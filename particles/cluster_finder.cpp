@@ -1,5 +1,6 @@
 #include "shockgas/particles/cluster_finder.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "shockgas/core/error.hpp"
@@ -89,11 +90,16 @@ std::vector<Cluster> find_clusters(const Bodies& b, double L, const ClusterCrite
   return clusters;
 }
 
-ClusterCriteria default_cluster_criteria(double delta, double mean_spacing) {
+ClusterCriteria default_cluster_criteria(double delta, double mean_spacing, double t) {
   require(std::isfinite(delta) && delta >= 0, "particles.delta", delta, "finite, >= 0");
   require(std::isfinite(mean_spacing) && mean_spacing > 0, "cluster.mean_spacing", mean_spacing,
           "finite, > 0");
-  return ClusterCriteria{0.5 * mean_spacing, 2.0 * delta};
+  require(std::isfinite(t) && t >= 0, "cluster.t", t, "finite, >= 0");
+  return ClusterCriteria{std::max(0.5 * mean_spacing, std::sqrt(delta * t * mean_spacing)), 5.0 * delta};
+}
+
+ClusterCriteria default_cluster_criteria(double delta, double mean_spacing) {
+  return default_cluster_criteria(delta, mean_spacing, 0.0);
 }
 
 ClusterCriteria merged_bodies_criteria() { return ClusterCriteria{0.0, 0.0}; }

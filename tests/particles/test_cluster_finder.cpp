@@ -116,10 +116,14 @@ TEST(ClusterFinder, FullyLinkedRingIsOneCluster) {
   EXPECT_EQ(k[0].count, 4u);
 }
 
-TEST(ClusterFinder, DefaultCriteriaFollowDeltaAndSpacing) {
+TEST(ClusterFinder, DefaultCriteriaFollowDeltaSpacingAndTime) {
   const auto c = default_cluster_criteria(0.01, 2.0);
-  EXPECT_DOUBLE_EQ(c.max_dv, 0.02);
+  EXPECT_DOUBLE_EQ(c.max_dv, 0.05);
   EXPECT_DOUBLE_EQ(c.max_gap, 1.0);
+  // sqrt(delta t a) = sqrt(0.01 * 1e4 * 1) = 10 once above the floor a / 2.
+  EXPECT_DOUBLE_EQ(default_cluster_criteria(0.01, 1.0, 1e4).max_gap, 10.0);
+  EXPECT_DOUBLE_EQ(default_cluster_criteria(0.01, 1.0, 1.0).max_gap, 0.5);
+  EXPECT_THROW(default_cluster_criteria(0.01, 1.0, -1.0), InputError);
   EXPECT_THROW(default_cluster_criteria(-1.0, 1.0), InputError);
   EXPECT_THROW(default_cluster_criteria(0.01, 0.0), InputError);
 }
