@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "shockgas/continuum/hopf_cole.hpp"
+#include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace sc = shockgas::continuum;
@@ -57,29 +58,9 @@ double l1_diff(const std::vector<double>& a, const std::vector<double>& b, doubl
   return s;
 }
 
-// Exact inviscid (Hopf-Lax) cell averages of v0 = 0.5 + sin 2 pi x:
-// Phi(x) = min_q (x - q)^2 / 2t + Psi0(q), Psi0(q) = q/2 + (1 - cos 2 pi q) / 2 pi,
-// cell average (Phi(b) - Phi(a)) / h. Minimiser by a scan then Newton on
-// q - x + t v0(q) = 0 (the scan step 1/2048 puts Newton inside the basin).
+// The exact inviscid limit (Hopf-Lax) of the same data, cell averages of v.
 std::vector<double> hopf_lax_sine(std::size_t cells, double t) {
-  auto psi = [](double q) { return 0.5 * q + (1 - std::cos(2 * pi * q)) / (2 * pi); };
-  auto g = [&](double x, double q) { return (x - q) * (x - q) / (2 * t) + psi(q); };
-  const double h = 1.0 / static_cast<double>(cells);
-  std::vector<double> phi(cells + 1);
-  for (std::size_t i = 0; i <= cells; ++i) {
-    const double x = static_cast<double>(i) * h;
-    double best = x, gbest = g(x, x);
-    for (double q = x - 1; q <= x + 1; q += 1.0 / 2048)
-      if (g(x, q) < gbest) gbest = g(x, best = q);
-    for (int it = 0; it < 8; ++it) {
-      const double r = best - x + t * (0.5 + std::sin(2 * pi * best));
-      best -= r / (1 + t * 2 * pi * std::cos(2 * pi * best));
-    }
-    phi[i] = std::min(gbest, g(x, best));
-  }
-  std::vector<double> v(cells);
-  for (std::size_t i = 0; i < cells; ++i) v[i] = (phi[i + 1] - phi[i]) / h;
-  return v;
+  return sc::exact_cell_averages(sine_field(), cells, t).v;
 }
 
 }  // namespace
