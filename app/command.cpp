@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "shockgas/app/bench.hpp"
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
@@ -20,6 +21,7 @@ struct Arguments {
   std::string scene_path, out_dir, result_path;
   std::vector<std::string> overrides;
   bool defaults = false, quiet = false, no_plots = false;
+  BenchOptions bench;
 };
 
 void add_run(CLI::App& app, Arguments& args) {
@@ -49,6 +51,10 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     std::cout << describe_result(args.result_path);
     return kExitOk;
   }
+  if (app.got_subcommand("bench")) {
+    std::cout << "bench results in " << run_bench(args.bench) << "/\n";
+    return kExitOk;
+  }
   if (app.got_subcommand("scene")) {
     std::cout << default_scene_text();
     return kExitOk;
@@ -69,6 +75,10 @@ int run_command(int argc, char** argv) {
   info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5")->required();
   auto* scene = app.add_subcommand("scene", "Print the complete commented scene with every key and its default");
   scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range")->required();
+  auto* bench = app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
+  bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)");
+  bench->add_flag("--full", args.bench.full, "the record size (long) instead of the quick one");
+  bench->add_flag("--quiet,-q", [&args](std::int64_t) { args.bench.progress = false; }, "no progress output");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

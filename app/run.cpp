@@ -98,7 +98,7 @@ std::string run_scene(const Scene& scene, const RunOptions& options) {
   ProgressBar progress(options.progress);
   {
     Hdf5File h5 = Hdf5File::create(h5_path.string() + tag);
-    RunState state{scene, h5, summary, progress, {}, {}, {}, {}, {}, {}};
+    RunState state{scene, h5, summary, progress};
     write_provenance(h5, summary, scene);
     run_initial_stage(state);
     if (scene.has_particles) run_particles_stage(state);

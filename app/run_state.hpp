@@ -16,6 +16,9 @@
 namespace shockgas::app {
 
 struct RunState {
+  RunState(const Scene& s, Hdf5File& file, nlohmann::ordered_json& sum, ProgressBar& bar)
+      : scene(s), h5(file), summary(sum), progress(bar) {}
+
   const Scene& scene;
   Hdf5File& h5;
   nlohmann::ordered_json& summary;
