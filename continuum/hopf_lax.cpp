@@ -83,8 +83,6 @@ double bracketed_root(const F& f, double a, double fa, double b, double fb, doub
   return 0.5 * (a + b);
 }
 
-double floor_div(double a, double b) { return std::floor(a / b); }
-
 }  // namespace
 
 HopfLaxSolution::HopfLaxSolution(const InitialField& f, double t, std::size_t samples)
@@ -112,7 +110,7 @@ long HopfLaxSolution::node_below(double q) const { return static_cast<long>(std:
 
 double HopfLaxSolution::wrap(double q) const {
   if (q >= 0 && q < L_) return q;
-  const double w = q - L_ * floor_div(q, L_);
+  const double w = q - L_ * std::floor(q / L_);
   return (w >= 0 && w < L_) ? w : 0.0;  // w == L_ only by rounding of q just below 0
 }
 
@@ -123,16 +121,22 @@ double HopfLaxSolution::v0(double q) const {
 
 double HopfLaxSolution::rho0(double q) const { return rho0_ ? rho0_(wrap(q)) : 1.0; }
 
-// Psi0 (of v0, then shifted to w0 = v0 - U) and M0 at the nodes j h, j < n.
+// Psi0_w = int (v0 - U) and M0 at the nodes j h, j < n. v0 - U0 is integrated
+// with a first estimate U0 (midpoint mean) so that a large mean velocity does
+// not cancel digits of Psi0_w; the residual mean is removed afterwards.
 void HopfLaxSolution::build_tables() {
   psi_.resize(n_);
   mcum_.resize(n_);
+  const std::size_t coarse = 256;
+  double u0 = 0;
+  for (std::size_t i = 0; i < coarse; ++i) u0 += v0((static_cast<double>(i) + 0.5) * L_ / coarse) / coarse;
+  if (!std::isfinite(u0)) u0 = 0;  // the fine pass names the offending point
   CompensatedSum p, m;
   for (std::size_t j = 0; j < n_; ++j) {
     psi_[j] = p.sum;
     mcum_[j] = m.sum;
     const double a = node_q(static_cast<long>(j)), b = node_q(static_cast<long>(j) + 1);
-    const double dp = gauss([&](double q) { return v0(q); }, a, b);
+    const double dp = gauss([&](double q) { return v0(q) - u0; }, a, b);
     const double dm = gauss([&](double q) { return rho0(q); }, a, b);
     if (!std::isfinite(dp)) throw InputError("initial.v0", "non-finite near x = " + to_text(a), "finite values");
     if (!(dm >= 0 && std::isfinite(dm)))
@@ -140,9 +144,10 @@ void HopfLaxSolution::build_tables() {
     p.add(dp);
     m.add(dm);
   }
-  U_ = p.sum / L_;
+  const double residual = p.sum / L_;
+  U_ = u0 + residual;
   mass_ = m.sum;
-  for (std::size_t j = 0; j < n_; ++j) psi_[j] -= U_ * node_q(static_cast<long>(j));
+  for (std::size_t j = 0; j < n_; ++j) psi_[j] -= residual * node_q(static_cast<long>(j));
 }
 
 // The lower hull of (q_j, g(q_j)), g = q^2/2 + t Psi0_w: the sticky hull of one
@@ -234,19 +239,25 @@ HopfLaxSolution::Minimum HopfLaxSolution::minimum(double y) const {
   return best;
 }
 
-HopfLaxSolution::Point HopfLaxSolution::locate(double x, bool with_velocity) const {
+// x - U t = yw + k L with yw in [0, L).
+HopfLaxSolution::Frame HopfLaxSolution::moving_frame(double x) const {
   const double y = x - U_ * t_;
-  double k = floor_div(y, L_);
-  double yw = y - k * L_;  // y = yw + k L with yw in [0, L)
-  if (yw >= L_) yw -= L_, k += 1;
-  if (yw < 0) yw = 0;
-  const Minimum m = minimum(yw);
+  Frame f{std::floor(y / L_), 0};
+  f.y = y - f.k * L_;
+  if (f.y >= L_) f.y -= L_, f.k += 1;
+  if (f.y < 0) f.y = 0;
+  return f;
+}
+
+HopfLaxSolution::Point HopfLaxSolution::locate(double x, bool with_velocity) const {
+  const Frame f = moving_frame(x);
+  const Minimum m = minimum(f.y);
   Point p;
-  p.q = m.q + k * L_;
+  p.q = m.q + f.k * L_;
   // Lab frame: Psi(x) = Psi_w(x - U t) + U x - U^2 t / 2.
   p.psi = m.psi + U_ * x - 0.5 * U_ * U_ * t_;
   p.mass = m0(p.q);
-  if (with_velocity) p.v = U_ + moving_velocity(yw, m.q);
+  if (with_velocity) p.v = U_ + moving_velocity(f.y, m.q);
   return p;
 }
 
@@ -260,16 +271,23 @@ double HopfLaxSolution::moving_velocity(double y, double q) const {
   return std::abs(residual) <= 8 * eps * std::max({std::abs(y), std::abs(q), h_}) ? w : (y - q) / t_;
 }
 
+// <v> = U + (Psi_w(b - U t) - Psi_w(a - U t)) / dx: the moving-frame potential
+// carries no U x term, whose rounding would grow with U.
 CellAverages HopfLaxSolution::cell_averages(std::size_t cells) const {
   require(cells >= 1, "continuum.cells", cells, ">= 1");
   const double dx = L_ / static_cast<double>(cells);
   CellAverages a{std::vector<double>(cells), std::vector<double>(cells)};
-  Point left = locate(0.0, false);
+  const auto edge = [&](std::size_t i) {
+    const Frame f = moving_frame(static_cast<double>(i) * dx);
+    const Minimum m = minimum(f.y);
+    return std::pair{m.psi, m0(m.q + f.k * L_)};
+  };
+  auto [psi_a, mass_a] = edge(0);
   for (std::size_t i = 0; i < cells; ++i) {
-    const Point right = locate(static_cast<double>(i + 1) * dx, false);
-    a.v[i] = (right.psi - left.psi) / dx;
-    a.rho[i] = (right.mass - left.mass) / dx;
-    left = right;
+    const auto [psi_b, mass_b] = edge(i + 1);
+    a.v[i] = U_ + (psi_b - psi_a) / dx;
+    a.rho[i] = (mass_b - mass_a) / dx;
+    psi_a = psi_b, mass_a = mass_b;
   }
   return a;
 }

@@ -94,6 +94,11 @@ class HopfLaxSolution {
     double q = 0;    // minimiser, moving frame, unwrapped
     double psi = 0;  // Psi_w at the evaluation point (moving frame, periodic)
   };
+  struct Frame {
+    double k;  // periods
+    double y;  // moving-frame position in [0, L)
+  };
+  Frame moving_frame(double x) const;
   Point locate(double x, bool with_velocity) const;
   double moving_velocity(double y, double q) const;
   Minimum minimum(double y) const;  // y: moving-frame position in [0, L)
