@@ -2,6 +2,7 @@
 // the exact solution, the delta-shock's mass, conservation, bad input and failure.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -184,6 +185,27 @@ TEST(GodunovFailure, NonFiniteValueStopsWithSolverTimeAndCell) {
       EXPECT_NE(what.find("in cell "), std::string::npos) << what;
       EXPECT_NE(what.find("at t = "), std::string::npos) << what;
     }
+  }
+}
+
+TEST(GodunovStability, MaximumPrincipleHoldsUpToTheCflBoundAndFailsBeyond) {
+  const auto initial = cell_averages(sine(), 128);
+  const auto [lo, hi] = std::minmax_element(initial.v.begin(), initial.v.end());
+  ContinuumParams p;
+  p.cells = 128;
+  p.allow_unstable = true;
+  for (int order : {1, 2}) {
+    // cfl = 1, the bound: TVD, so v stays within the initial range (to rounding)
+    // and rho > 0 (measured min 0.34).
+    p.cfl = 1.0;
+    const auto r = solve_godunov(sine(), p, 0.3, order);
+    EXPECT_GE(*std::min_element(r.v.begin(), r.v.end()), *lo - 1e-12) << order;
+    EXPECT_LE(*std::max_element(r.v.begin(), r.v.end()), *hi + 1e-12) << order;
+    EXPECT_GT(*std::min_element(r.rho.begin(), r.rho.end()), 0.0) << order;
+    // cfl = 1.5: the density goes negative (measured -29 first order, -3e6 second).
+    p.cfl = 1.5;
+    const auto u = solve_godunov(sine(), p, 0.3, order);
+    EXPECT_LT(*std::min_element(u.rho.begin(), u.rho.end()), 0.0) << order;
   }
 }
 

@@ -160,6 +160,18 @@ TEST(Pressureless, SmoothUniformDensitySolutionConvergesAtFirstOrder) {
   EXPECT_GT(order, 1.0 - 0.15);
 }
 
+TEST(Pressureless, PositiveUpToTheCflBoundNegativeBeyond) {
+  auto p = params(128, "periodic");
+  p.allow_unstable = true;
+  p.cfl = 1.0;  // rho > 0 and |u| <= max|u0| = 1.5 (measured min rho 0.26, u in [-0.44, 1.43])
+  const auto r = solve_pressureless(sine(0.0), p, 0.3);
+  EXPECT_GT(*std::min_element(r.rho.begin(), r.rho.end()), 0.0);
+  EXPECT_LE(*std::max_element(r.v.begin(), r.v.end()), 1.5);
+  p.cfl = 1.5;  // measured min rho -3.1
+  const auto u = solve_pressureless(sine(0.0), p, 0.3);
+  EXPECT_LT(*std::min_element(u.rho.begin(), u.rho.end()), 0.0);
+}
+
 TEST(Pressureless, BadInputIsNamed) {
   auto p = params(64, "periodic");
   p.cfl = 1.5;
