@@ -84,9 +84,12 @@ class KernelSum {
     const double g_star = G(star, y);
     const double cut = 2 * nu_ * kWindow;
     const double lo = window_end(y, g_star, cut, -1), hi = window_end(y, g_star, cut, +1);
-    const auto first = static_cast<std::size_t>(std::max(0.0, std::ceil((lo - nodes_.q[0]) / nodes_.dq)));
-    const auto last =
-        std::min(nodes_.q.size() - 1, static_cast<std::size_t>(std::floor((hi - nodes_.q[0]) / nodes_.dq)));
+    // Node range of [lo, hi]; it always holds the minimiser (rounding cannot drop it).
+    const double from = std::max(0.0, std::ceil((lo - nodes_.q[0]) / nodes_.dq));
+    const double to = std::floor((hi - nodes_.q[0]) / nodes_.dq);
+    const std::size_t first = std::min(static_cast<std::size_t>(from), star);
+    const std::size_t last =
+        std::clamp(static_cast<std::size_t>(std::max(to, 0.0)), star, nodes_.q.size() - 1);
     double sum = 0;
     for (std::size_t m = first; m <= last; ++m) sum += std::exp(-(G(m, y) - g_star) / (2 * nu_));
     return -g_star / (2 * nu_) + std::log(sum);
