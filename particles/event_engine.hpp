@@ -26,6 +26,7 @@
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/collision.hpp"
 #include "shockgas/particles/event_tree.hpp"
+#include "shockgas/particles/huge_page_allocator.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -225,7 +226,7 @@ class EventEngine {
   std::size_t n_;
   std::size_t alive_;
   double m0_ = 1.0;
-  std::vector<Body> body_;
+  std::vector<Body, HugePageAllocator<Body>> body_;
   std::vector<double> mass_;                // Linked only; 0 = merged away
   std::vector<std::uint32_t> next_, prev_;  // Linked only
   EventTree tree_;

@@ -24,6 +24,8 @@
 #include <limits>
 #include <vector>
 
+#include "shockgas/particles/huge_page_allocator.hpp"
+
 namespace shockgas::particles {
 
 class EventTree {
@@ -133,8 +135,9 @@ class EventTree {
   }
 
   std::size_t n_ = 0, nb_ = 0;
-  std::vector<TimeLine> time_lines_;  // slot times; padding slots stay at +inf
-  std::vector<NodeLine> node_lines_;  // tree nodes, cache-line aligned: siblings share a line
+  std::vector<TimeLine, HugePageAllocator<TimeLine>> time_lines_;  // slot times; padding slots stay at +inf
+  std::vector<NodeLine, HugePageAllocator<NodeLine>>
+      node_lines_;  // tree nodes, cache-line aligned: siblings share a line
   double* time_ = nullptr;
   Node* node_ = nullptr;
 };
