@@ -173,12 +173,17 @@ std::vector<StickyCluster> sticky_clusters_ring(const Bodies& initial, double L,
 }
 
 Bodies to_bodies(const std::vector<StickyCluster>& clusters) {
+  const auto by_x = [](const StickyCluster& a, const StickyCluster& b) { return a.x < b.x; };
+  Bodies b;
+  b.reserve(clusters.size());
+  if (std::is_sorted(clusters.begin(), clusters.end(), by_x)) {  // what the solvers return
+    for (const StickyCluster& c : clusters) b.push_back(c.x, c.v, c.m);
+    return b;
+  }
   std::vector<std::size_t> order(clusters.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return clusters[a].x < clusters[b].x; });
-  Bodies b;
-  b.reserve(clusters.size());
+                   [&](std::size_t i, std::size_t j) { return by_x(clusters[i], clusters[j]); });
   for (std::size_t i : order) b.push_back(clusters[i].x, clusters[i].v, clusters[i].m);
   return b;
 }
