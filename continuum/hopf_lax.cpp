@@ -50,32 +50,38 @@ struct CompensatedSum {
   }
 };
 
-// Root of f on [a, b], f(a) <= 0 <= f(b): Illinois false position, with a
-// bisection whenever two steps did not halve the bracket. Tolerates jumps of f
-// (converges to the jump). evals counts calls of f.
+// Root of f on [a, b], f(a) <= 0 <= f(b): false position with the
+// Anderson-Bjorck weighting of the endpoint kept twice (order ~1.7), each new
+// point kept at least tol inside the bracket so that the bracket itself
+// collapses. Stops at a point where |f| <= f_noise (the rounding level of f).
+// Tolerates jumps of f (converges to the jump). evals counts calls.
 template <class F>
-double bracketed_root(const F& f, double a, double fa, double b, double fb, double scale,
+double bracketed_root(const F& f, double a, double fa, double b, double fb, double scale, double f_noise,
                       std::size_t& evals) {
   const double eps = std::numeric_limits<double>::epsilon();
-  int kept = 0;  // -1: a was replaced last, +1: b was
-  double width_before = 2 * (b - a);
+  int side = 0;  // -1: a was replaced last, +1: b was
   for (int it = 0; it < 200 && fa != 0 && fb != 0; ++it) {
     const double width = b - a;
-    if (width <= 4 * eps * std::max({std::abs(a), std::abs(b), scale})) break;
+    const double tol = 2 * eps * std::max({std::abs(a), std::abs(b), scale});
+    if (width <= 2 * tol) break;
     double c = a - fa * (width / (fb - fa));
-    const bool stalled = it % 2 == 0 && width > 0.5 * width_before;
-    if (it % 2 == 0) width_before = width;
-    if (stalled || !(c > a && c < b)) c = a + 0.5 * width;
+    if (!(c > a && c < b)) c = a + 0.5 * width;
+    c = std::clamp(c, a + tol, b - tol);
     const double fc = f(c);
     ++evals;
+    if (std::abs(fc) <= f_noise) return c;
     if (fc <= 0) {
-      a = c, fa = fc;
-      if (kept == -1) fb *= 0.5;
-      kept = -1;
+      if (side == -1) {
+        const double m = 1 - fc / fa;
+        fb *= m > 0 ? m : 0.5;
+      }
+      a = c, fa = fc, side = -1;
     } else {
-      b = c, fb = fc;
-      if (kept == 1) fa *= 0.5;
-      kept = 1;
+      if (side == 1) {
+        const double m = 1 - fc / fb;
+        fa *= m > 0 ? m : 0.5;
+      }
+      b = c, fb = fc, side = 1;
     }
   }
   if (fa == 0) return a;
@@ -196,13 +202,16 @@ double HopfLaxSolution::m0(double q) const {
 double HopfLaxSolution::root_near(double y, long node, bool& bracketed) const {
   const auto f = [&](double q) { return q + t_ * (v0(q) - U_) - y; };
   const double q0 = node_q(node), f0 = f(q0);
+  // Rounding of f's terms q, t w0 = f + y - q and y.
+  const double noise = 4 * std::numeric_limits<double>::epsilon() *
+                       (std::abs(q0) + std::abs(f0 + y - q0) + std::abs(y) + h_);
   bracketed = true;
   if (f0 >= 0) {
     const double qm = node_q(node - 1), fm = f(qm);
-    if (fm <= 0) return bracketed_root(f, qm, fm, q0, f0, h_, evaluations_);
+    if (fm <= 0) return bracketed_root(f, qm, fm, q0, f0, h_, noise, evaluations_);
   } else {
     const double qp = node_q(node + 1), fp = f(qp);
-    if (fp >= 0) return bracketed_root(f, q0, f0, qp, fp, h_, evaluations_);
+    if (fp >= 0) return bracketed_root(f, q0, f0, qp, fp, h_, noise, evaluations_);
   }
   bracketed = false;
   return q0;
