@@ -77,6 +77,21 @@ TEST(Engine, MergeThenUnequalMassCollision) {
   EXPECT_NEAR(out.series.dissipated.back(), 2.5 - 1.0 / 6.0, tol);
 }
 
+TEST(Engine, UnequalMassesBounce) {
+  // m = 1 at x = 0 (v = 2), m = 3 at x = 1 (v = 0), r = 1/2: contact at t = 1/2, x = 1;
+  // v' = 2 - 1.5 * 3/4 * 2 = -1/4, u' = 1.5 * 1/4 * 2 = 3/4. At t = 2.5: x = 1 - 1/2, 1 + 3/2.
+  Bodies b = bodies({0.0, 1.0}, {2.0, 0.0});
+  b.m = {1.0, 3.0};
+  const RunResult out = simulate(b, 10.0, line_params(0.5, 0.0, 2.5));
+  ASSERT_EQ(out.collisions, 1u);
+  const double tol = 1e-15;  // a few roundings of O(1) values
+  EXPECT_NEAR(out.final_state.v[0], -0.25, tol);
+  EXPECT_NEAR(out.final_state.v[1], 0.75, tol);
+  EXPECT_NEAR(out.final_state.x[0], 0.5, tol);
+  EXPECT_NEAR(out.final_state.x[1], 2.5, tol);
+  EXPECT_NEAR(out.series.dissipated.back(), 2.0 - 0.875, tol);  // 2 before, 0.875 after
+}
+
 TEST(Engine, StickySubthresholdMerges) {
   // g = 0.05 < delta = 0.1 with sticky sub-threshold: merge; r is irrelevant.
   ParticleParams p = line_params(0.9, 0.1, 100.0);
