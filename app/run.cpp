@@ -59,6 +59,8 @@ std::string utc_now() {
   return buf;
 }
 
+}  // namespace
+
 void write_provenance(Hdf5File& h5, nlohmann::ordered_json& summary, const Scene& scene) {
   h5.set_attribute("/", "shockgas_version", kVersion);
   h5.set_attribute("/", "git_commit", kGitCommit);
@@ -76,6 +78,8 @@ void write_provenance(Hdf5File& h5, nlohmann::ordered_json& summary, const Scene
   summary["overrides"] = scene.overrides;
 }
 
+namespace {
+
 void write_report(const fs::path& dir, const RunState& state) {
   std::ofstream out(dir / "report.md");
   out << "# shockgas report: " << state.scene.name << "\n\n";
@@ -85,8 +89,7 @@ void write_report(const fs::path& dir, const RunState& state) {
 
 }  // namespace
 
-std::string run_scene(const Scene& scene, const RunOptions& options) {
-  const fs::path dir = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
+std::string run_single(const Scene& scene, const fs::path& dir, const RunOptions& options) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out", to_text(dir.string()), "a directory that can be created and written");
@@ -101,7 +104,10 @@ std::string run_scene(const Scene& scene, const RunOptions& options) {
     RunState state{scene, h5, summary, progress};
     write_provenance(h5, summary, scene);
     run_initial_stage(state);
-    if (scene.has_particles) run_particles_stage(state);
+    if (scene.has_particles) {
+      run_particles_stage(state);
+      run_analysis_stage(state);
+    }
     if (scene.has_continuum) run_continuum_stage(state);
     if (scene.has_compare) run_compare_stage(state);
     progress.finish();
@@ -117,6 +123,12 @@ std::string run_scene(const Scene& scene, const RunOptions& options) {
   fs::rename(json_path.string() + tag, json_path);
   if (options.plots && scene.output.plots) make_plots(dir.string());
   return dir.string();
+}
+
+std::string run_scene(const Scene& scene, const RunOptions& options) {
+  const fs::path dir = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
+  if (scene.has_sweep) return run_sweep(scene, dir, options);
+  return run_single(scene, dir, options);
 }
 
 }  // namespace shockgas::app

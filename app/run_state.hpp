@@ -3,12 +3,14 @@
 // and the results that later stages (the comparison) need from earlier ones.
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "shockgas/app/hdf5_file.hpp"
 #include "shockgas/app/progress_bar.hpp"
+#include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/core/bodies.hpp"
@@ -36,7 +38,15 @@ struct RunState {
 // The stages, in order; each writes its part of result.h5 and summary.json.
 void run_initial_stage(RunState& state);
 void run_particles_stage(RunState& state);
+void run_analysis_stage(RunState& state);  // cooling law and velocity distribution of the particles
 void run_continuum_stage(RunState& state);
 void run_compare_stage(RunState& state);
+
+// One scene (no sweep) into dir; returns dir.
+std::string run_single(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);
+// A [sweep] scene: each variant into dir/<k>-<label>/, the side-by-side table and plots into dir.
+std::string run_sweep(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);
+// Version, commit, time, scene text and resolved parameters as attributes of "/".
+void write_provenance(Hdf5File& h5, nlohmann::ordered_json& summary, const Scene& scene);
 
 }  // namespace shockgas::app

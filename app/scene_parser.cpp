@@ -92,6 +92,7 @@ void read_tables(const toml::table& root, const std::string& path, Scene& scene)
   scene.has_particles = root.contains("particles");
   scene.has_continuum = root.contains("continuum");
   scene.has_compare = root.contains("compare");
+  scene.has_sweep = root.contains("sweep");
 }
 
 // A relative initial.file written in a scene file is relative to that file.
@@ -102,6 +103,26 @@ void resolve_file(Scene& scene, const std::string& path) {
   if (origin.rfind("--set", 0) == 0) return;
   const auto dir = std::filesystem::path(path).parent_path();
   file = (dir / file).lexically_normal().string();
+}
+
+void validate_sweep(const SweepParams& s) {
+  require(!s.variants.empty(), "sweep.variants", std::string("[]"), "at least one variant");
+  require(s.labels.empty() || s.labels.size() == s.variants.size(), "sweep.labels", s.labels.size(),
+          "one label per variant (" + std::to_string(s.variants.size()) + "), or none");
+  require(s.reference_values.empty() || s.reference_values.size() == s.variants.size(), "sweep.reference_values",
+          s.reference_values.size(), "one value per variant (" + std::to_string(s.variants.size()) + "), or none");
+}
+
+// "a=1; b=2" -> {"a=1", "b=2"}
+std::vector<std::string> split_assignments(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ';')) {
+    const auto first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+    if (first != std::string::npos) out.push_back(item.substr(first, last - first + 1));
+  }
+  return out;
 }
 
 // The comparison needs both models at one time, on the ring, and the solver it names.
@@ -133,6 +154,9 @@ void validate_scene(const Scene& scene) {
   require(std::isfinite(c.cluster_dv) && c.cluster_dv >= 0, "compare.cluster_dv", c.cluster_dv,
           "a finite number >= 0");
   require_above("compare.fit_window", c.fit_window, 1.0);
+  require(std::isfinite(c.distribution_t_min) && c.distribution_t_min >= 0, "compare.distribution_t_min",
+          c.distribution_t_min, "a finite number >= 0");
+  if (scene.has_sweep) validate_sweep(scene.sweep);
   if (scene.has_continuum && !scene.has_particles)
     require(scene.continuum.t_end > 0, "continuum.t_end", scene.continuum.t_end,
             "a time > 0 (a scene without [particles] must give continuum.t_end)");
@@ -166,6 +190,29 @@ Scene parse_scene(const std::string& text, const std::string& path, const std::v
     throw e.located(it != scene.key_origin.end() ? it->second : path);
   }
   return scene;
+}
+
+std::vector<Scene> expand_sweep(const Scene& scene) {
+  std::vector<Scene> variants;
+  for (std::size_t i = 0; i < scene.sweep.variants.size(); ++i) {
+    auto overrides = scene.overrides;
+    for (const auto& a : split_assignments(scene.sweep.variants[i])) {
+      require(a.rfind("sweep.", 0) != 0, "sweep.variants", a, "overrides of keys outside [sweep]");
+      overrides.push_back(a);
+    }
+    Scene v;
+    try {
+      v = parse_scene(scene.text, scene.path, overrides);
+    } catch (const InputError& e) {
+      throw InputError(e.key(), e.value(), e.allowed(),
+                       e.where() + " (sweep variant " + std::to_string(i + 1) + ": " + scene.sweep.variants[i] + ")");
+    }
+    v.has_sweep = false;
+    const std::string label = scene.sweep.labels.empty() ? scene.sweep.variants[i] : scene.sweep.labels[i];
+    v.name = scene.name + "/" + label;
+    variants.push_back(std::move(v));
+  }
+  return variants;
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {

@@ -196,8 +196,22 @@ std::vector<KeySpec> build_schema() {
           "largest gap inside a cluster; 0 = derived from delta and the spacing", SG_FIELD(compare, cluster_gap)),
       key("compare", "cluster_dv", "number", "length/time", "a finite number >= 0",
           "largest relative velocity inside a cluster; 0 = derived from delta", SG_FIELD(compare, cluster_dv)),
+      key("compare", "distribution_t_min", "number", "time", "a finite number >= 0",
+          "scaled velocity distributions are compared at sample times >= this",
+          SG_FIELD(compare, distribution_t_min)),
       key("compare", "fit_window", "number", "1", "a finite number > 1",
           "the T(t) exponent is fitted on [t_end / fit_window, t_end]", SG_FIELD(compare, fit_window)),
+
+      key("sweep", "variants", "list of strings", "", "overrides \"table.key=value; ...\" per variant",
+          "run the scene once per variant, side by side", SG_FIELD(sweep, variants)),
+      key("sweep", "labels", "list of strings", "", "one label per variant, or empty",
+          "variant labels for tables and plots", SG_FIELD(sweep, labels)),
+      key("sweep", "reference_key", "string", "", "a summary.json key, or empty",
+          "the result compared with reference_values in the report", SG_FIELD(sweep, reference_key)),
+      key("sweep", "reference_values", "list of numbers", "", "one number per variant, or empty",
+          "published values of reference_key", SG_FIELD(sweep, reference_values)),
+      key("sweep", "reference_source", "string", "", "any text", "where the reference values come from",
+          SG_FIELD(sweep, reference_source)),
 
       key("output", "plots", "boolean", "", "true or false", "make PNG plots", SG_FIELD(output, plots)),
       key("output", "fields", "boolean", "", "true or false", "store the continuum fields in result.h5",
@@ -222,6 +236,7 @@ const std::vector<TableSpec>& scene_tables() {
       {"particles", "the event-driven gas (present = run it)"},
       {"continuum", "Burgers + continuity solvers (present = run them)"},
       {"compare", "particles against continuum (present = compare)"},
+      {"sweep", "variants of the scene run side by side (present = sweep)"},
       {"output", "what is written besides result.h5 and summary.json"},
   };
   return tables;

@@ -40,9 +40,10 @@ def plot_temperature(f, out_dir):
     err = p["T_stderr"][:][ok] if "T_stderr" in p else None
     fig, ax = plt.subplots(figsize=(6, 4.5))
     ax.errorbar(t, T, yerr=err, fmt="o-", ms=3, label="particles")
-    if "compare" in f and "T_fit_t" in f["compare"]:
-        ax.plot(f["compare/T_fit_t"][:], f["compare/T_fit_T"][:], "k-", lw=2, alpha=0.6,
-                label=f"fit: T ~ t^{attr(f['compare'], 'T_exponent', 0):.3f}")
+    if "analysis" in p and "T_fit_t" in p["analysis"]:
+        a = p["analysis"]
+        ax.plot(a["T_fit_t"][:], a["T_fit_T"][:], "k-", lw=2, alpha=0.6,
+                label=f"fit: T ~ t^{attr(a, 'T_exponent', 0):.3f}")
     # guides: t^-2 (homogeneous cooling) through the steepest point, t^-2/3
     # (sticky-gas regime) through the last point, each over two decades
     slopes = np.gradient(np.log(T), np.log(t))
@@ -117,9 +118,55 @@ def plot_fields(f, out_dir):
     save(fig, out_dir, "fields.png")
 
 
+def plot_sweep(f, out_dir):
+    """Every variant of a [sweep] scene in one T(t) plot and one Phi(z) plot."""
+    groups = sorted(f["sweep"], key=int)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    last = None
+    for k in groups:
+        g = f["sweep"][k]
+        if "particles/T" not in g:
+            continue
+        t, T = g["particles/t"][:], g["particles/T"][:]
+        ok = (t > 0) & (T > 0)
+        ax.loglog(t[ok], T[ok], "o-", ms=3, label=attr(g, "label", k))
+        last = (t[ok], T[ok])
+    if last is not None:
+        t, T = last
+        ax.loglog(t, T[-1] * (t / t[-1]) ** (-2.0 / 3.0), ":", color="gray", label="t^-2/3")
+        ax.set_xlabel("t")
+        ax.set_ylabel("T(t)")
+        ax.legend(fontsize=8)
+        save(fig, out_dir, "temperature.png")
+    else:
+        plt.close(fig)
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    drawn = False
+    for k in groups:
+        g = f["sweep"][k]
+        if "particles/histogram" not in g:
+            continue
+        h = g["particles/histogram"]
+        z, t, density = h["z"][:], h["t"][:], h["density"][:]
+        for row in range(len(t)):
+            if t[row] >= 100 and row >= len(t) - 3:
+                ax.semilogy(z, np.where(density[row] > 0, density[row], np.nan), ".-", ms=3,
+                            label=f"{attr(g, 'label', k)}, t = {t[row]:.3g}")
+                drawn = True
+    if drawn:
+        ax.set_xlabel("z = v t^(1/3)")
+        ax.set_ylabel("Phi(z)")
+        ax.legend(fontsize=6)
+        save(fig, out_dir, "velocity_distribution.png")
+    else:
+        plt.close(fig)
+
+
 def main():
     out_dir = sys.argv[1]
     with h5py.File(os.path.join(out_dir, "result.h5"), "r") as f:
+        if "sweep" in f:
+            plot_sweep(f, out_dir)
         if "particles" in f and "T" in f["particles"]:
             plot_temperature(f, out_dir)
         if "particles/histogram" in f:

@@ -16,12 +16,23 @@ namespace shockgas::app {
 struct CompareParams {
   std::string solver = "hopf_lax";   // the continuum solver compared (one of continuum.solvers)
   std::string deposit = "cic";       // particles -> grid: "ngp" (nearest cell) | "cic" (cloud in cell)
+  double distribution_t_min = 10.0;  // scaled velocity distributions compared at sample times >= this [time]
   double match_distance = 0.0;       // max shock-cluster distance for a match [length]; 0 = automatic
   double min_cluster_particles = 2;  // clusters and shocks lighter than this many mean particle
                                      // masses are not counted [1]
   double cluster_gap = 0.0;          // max gap inside a cluster [length]; 0 = derived from delta
   double cluster_dv = 0.0;           // max relative velocity inside a cluster [length/time]; 0 = derived
   double fit_window = 10.0;          // late window of the T(t) fit: [t_end / fit_window, t_end], > 1
+};
+
+// Scene table [sweep]: run the scene once per variant (each a list of
+// overrides, "particles.r=0.5; particles.delta=1e-3"), side by side.
+struct SweepParams {
+  std::vector<std::string> variants;        // overrides per variant, separated by ';'
+  std::vector<std::string> labels;          // one per variant; empty = the overrides
+  std::string reference_key;                // summary key compared with reference_values ("compare.T_exponent")
+  std::vector<double> reference_values;     // the literature's values, one per variant (or empty)
+  std::string reference_source;             // where they come from
 };
 
 // Scene table [output].
@@ -43,7 +54,9 @@ struct Scene {
   continuum::ContinuumParams continuum;
   CompareParams compare;
   OutputParams output;
+  SweepParams sweep;
 
+  bool has_sweep = false;
   bool has_particles = false;
   bool has_continuum = false;
   bool has_compare = false;
@@ -63,6 +76,10 @@ Scene load_scene(const std::string& path, const std::vector<std::string>& overri
 // Parses scene text (path used only in messages).
 Scene parse_scene(const std::string& text, const std::string& path,
                   const std::vector<std::string>& overrides = {});
+
+// The variants of a [sweep] scene, each parsed and validated as a scene of its
+// own (name "<scene>/<label>"); throws InputError before any work.
+std::vector<Scene> expand_sweep(const Scene& scene);
 
 // The complete commented scene with every key, its default, unit and allowed
 // range, generated from the same registration the parser uses.

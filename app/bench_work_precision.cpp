@@ -1,0 +1,173 @@
+// Work-precision of the continuum solvers (docs/performance.md): for each method
+// and setting, the error of the cell averages against the exact solution and the
+// median wall time of repeated runs, on the reference problems (bench_problems.hpp).
+//
+// Two references, never mixed in one chart:
+//  * wp_inviscid.csv: the exact inviscid solution (Hopf-Lax cell averages). The
+//    viscous Hopf-Cole lines (one point per nu) then show the O(nu) viscous
+//    difference itself: their error is what replacing nu -> 0 by a finite nu costs.
+//  * wp_viscous.csv: the exact viscous solution at the same nu and grid (Hopf-Cole,
+//    log-domain path: exact ln theta of the cell-averaged data), for CVODE and
+//    ARKODE over tolerances and Hopf-Cole FFT; their error is discretisation and
+//    integration error only.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "bench_problems.hpp"
+#include "bench_sections.hpp"
+#include "shockgas/continuum/hopf_lax.hpp"
+#include "shockgas/continuum/solve.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app::bench {
+
+namespace {
+
+using continuum::ContinuumParams;
+using continuum::ContinuumResult;
+
+// Exact Hopf-Lax cell averages with every kink of the piecewise data on a node
+// (the Riemann and noise data are piecewise constant on 64 equal cells).
+continuum::HopfLaxOptions exact_options() { return {4, 2048, 64}; }
+
+struct Setting {
+  std::string method;  // line of the chart: "godunov2 (mc)", "hopf_cole fft", ...
+  std::string solver;  // continuum::solve name
+  ContinuumParams params;
+  double parameter = 0;  // what varies along the line (cells, nu or rtol)
+};
+
+std::vector<std::size_t> cell_counts(const Context& ctx) {
+  if (ctx.full) return {64, 128, 256, 512, 1024, 2048, 4096, 8192, 16384};
+  return {64, 128, 256, 512, 1024, 2048};
+}
+
+std::vector<Setting> inviscid_settings(const Context& ctx) {
+  std::vector<Setting> s;
+  for (std::size_t cells : cell_counts(ctx)) {
+    ContinuumParams p;
+    p.cells = cells;
+    s.push_back({"godunov", "godunov", p, double(cells)});
+    for (std::string lim : {"minmod", "vanleer", "mc"}) {
+      p.limiter = lim;
+      s.push_back({"godunov2 (" + lim + ")", "godunov2", p, double(cells)});
+    }
+    s.push_back({"hopf_lax (exact)", "hopf_lax", p, double(cells)});
+  }
+  const std::size_t hc_cells = ctx.full ? 8192 : 2048;
+  for (double nu : {1e-2, 3e-3, 1e-3, 3e-4, 1e-4}) {
+    ContinuumParams p;
+    p.cells = hc_cells;
+    p.nu = nu;
+    for (std::string path : {"fft", "log"}) {
+      p.hopf_cole_path = path;
+      s.push_back({"hopf_cole " + path, "hopf_cole", p, nu});
+    }
+  }
+  return s;
+}
+
+std::vector<Setting> viscous_settings(const Context& ctx, double nu) {
+  std::vector<Setting> s;
+  const std::size_t cells = ctx.full ? 2048 : 512;
+  ContinuumParams p;
+  p.cells = cells;
+  p.nu = nu;
+  for (double rtol : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8}) {
+    p.rtol = rtol;
+    s.push_back({"cvode", "cvode", p, rtol});
+    s.push_back({"arkode", "arkode", p, rtol});
+  }
+  p.rtol = 1e-6;
+  p.hopf_cole_path = "fft";
+  s.push_back({"hopf_cole fft", "hopf_cole", p, double(cells)});
+  return s;
+}
+
+struct Measured {
+  ContinuumResult result;
+  double seconds = 0;
+};
+
+// Median wall time of ctx.repeats runs; the result of the last one.
+Measured measure(const Context& ctx, const Setting& s, const Problem& pb) {
+  Measured m;
+  m.seconds = median_seconds(ctx.repeats, [&] { m.result = continuum::solve(s.solver, pb.field, s.params, pb.t); });
+  return m;
+}
+
+// Shock-position error against the exact shocks (largest jump first): the worst
+// over the isolated shocks; NaN (an empty cell) where not measured.
+double shock_error(const Problem& pb, const ContinuumResult& exact, const std::vector<double>& v) {
+  if (!pb.shock_error) return NAN;
+  double worst = 0;
+  for (const auto& s : exact.shocks)
+    if (std::abs(s.jump) > 0.1)
+      worst = std::max(worst, shock_position_error(v, exact.v, exact.length, s.x, s.jump, 0.05));
+  return worst;
+}
+
+const std::vector<std::string> kColumns = {"problem", "method", "parameter", "cells", "nu", "rtol",
+                                           "reference", "l1", "linf", "shock_error", "seconds", "note"};
+
+void write_row(CsvWriter& csv, const Problem& pb, const Setting& s, const std::string& reference, const Norms& e,
+               double shock, double seconds, const std::string& note) {
+  const bool viscous = s.solver == "hopf_cole" || s.solver == "cvode" || s.solver == "arkode";
+  csv << pb.name << s.method << s.parameter << double(s.params.cells) << (viscous ? s.params.nu : NAN)
+      << (s.solver == "cvode" || s.solver == "arkode" ? s.params.rtol : NAN) << reference << e.l1 << e.linf
+      << shock << seconds << note;
+  csv.end_row();
+}
+
+// Runs one setting; a failure goes to the log instead of the table.
+void run_setting(const Context& ctx, FailureLog& failures, CsvWriter& csv, const Problem& pb, const Setting& s,
+                 const ContinuumResult& reference, const std::string& reference_name) {
+  try {
+    const Measured m = measure(ctx, s, pb);
+    const double h = pb.field.length / double(s.params.cells);
+    const Norms e = error_norms(m.result.v, reference.v, h);
+    const double shock = reference_name == "hopf_lax" ? shock_error(pb, reference, m.result.v) : NAN;
+    write_row(csv, pb, s, reference_name, e, shock, m.seconds, m.result.method_note);
+  } catch (const std::exception& e) {  // InputError (outside the range) or RunError (failed)
+    failures.add({"work_precision", s.method, pb.name + ", parameter = " + fmt(s.parameter), e.what()});
+  }
+}
+
+void inviscid(const Context& ctx, FailureLog& failures) {
+  CsvWriter csv(ctx.path("wp_inviscid.csv"), kColumns);
+  for (const Problem& pb : reference_problems()) {
+    ctx.log("work-precision", "inviscid, problem " + pb.name);
+    std::size_t cached_cells = 0;
+    ContinuumResult exact;
+    for (const Setting& s : inviscid_settings(ctx)) {
+      if (s.params.cells != cached_cells) {
+        exact = continuum::solve_hopf_lax(pb.field, s.params.cells, pb.t, exact_options());
+        cached_cells = s.params.cells;
+      }
+      run_setting(ctx, failures, csv, pb, s, exact, "hopf_lax");
+    }
+  }
+}
+
+void viscous(const Context& ctx, FailureLog& failures) {
+  CsvWriter csv(ctx.path("wp_viscous.csv"), kColumns);
+  const double nu = 1e-2;  // resolved by 512 cells: Dv h / nu = 0.4 (viscous_mol.hpp needs <= 2)
+  for (const Problem& pb : reference_problems()) {
+    ctx.log("work-precision", "viscous (nu = " + fmt(nu) + "), problem " + pb.name);
+    const std::vector<Setting> settings = viscous_settings(ctx, nu);
+    ContinuumParams ref = settings.front().params;
+    ref.hopf_cole_path = "log";
+    const ContinuumResult exact = continuum::solve("hopf_cole", pb.field, ref, pb.t);
+    for (const Setting& s : settings) run_setting(ctx, failures, csv, pb, s, exact, "hopf_cole log");
+  }
+}
+
+}  // namespace
+
+void continuum_work_precision(const Context& ctx, FailureLog& failures) {
+  inviscid(ctx, failures);
+  viscous(ctx, failures);
+}
+
+}  // namespace shockgas::app::bench
