@@ -30,7 +30,14 @@ std::vector<StickyCluster> sticky_clusters_line(const Bodies& initial, double t)
 
 // The same on a ring of length L (initial positions in [0, L), sorted). The mean
 // velocity is removed by a Galilean shift, the chain is unrolled periodically and
-// the hull of the unrolled chain gives the clusters. O(N) up to a log factor.
+// the hull of the unrolled chain gives the clusters: one period of it, starting at
+// a vertex found by a supporting line (see core/sticky_hull.cpp). O(N).
+// Clusters are returned sorted by x; `first` + `count` may pass N - 1 (wrap).
+//
+// Both: clusters that exactly touch at t are not merged (they are from any later
+// time on), so at t = 0 every body is its own cluster. Throws InputError for
+// t < 0, unsorted or non-finite positions, masses <= 0, and (ring) L <= 0 or
+// positions outside [0, L).
 std::vector<StickyCluster> sticky_clusters_ring(const Bodies& initial, double L, double t);
 
 // The clusters as bodies (x, v, m), sorted by x.
