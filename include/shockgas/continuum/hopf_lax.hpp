@@ -21,8 +21,8 @@
 // The hull is the sticky-particle hull of core/sticky_hull.hpp: sampling Psi0 at
 // nodes q_j = j L / n and treating each sample interval as a body of "mass" L/n at
 // its midpoint with the interval's mean velocity gives cumulative points that are
-// exactly (q_j, g(q_j)). For point-mass data the solution is the sticky gas
-// itself (sticky_clusters_ring).
+// exactly (q_j, g(q_j)); one period of them goes through sticky_clusters_ring.
+// For point-mass data the solution is the sticky gas itself.
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -87,7 +87,6 @@ class HopfLaxSolution {
   // (minimisers that could not be bracketed between samples and were taken at
   // the best sample instead; non-zero means v0 varies below the sample spacing).
   std::map<std::string, double> stats() const;
-
 
  private:
   struct Minimum {
