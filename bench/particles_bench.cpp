@@ -8,12 +8,13 @@
 //   particles_bench [--csv=FILE] [--collisions=C] [benchmark flags]
 //
 // Writes FILE (default particles_bench.csv): N, engine and baseline rates
-// [collisions/s] and their ratio.
+// [collisions per CPU second and per wall second] and their ratios.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -29,10 +30,23 @@ constexpr double kR = 0.9;
 constexpr double kDelta = 1e-2;
 std::uint64_t g_collisions = 10'000'000;
 
+// Wall-clock and process CPU time: on a shared machine the CPU time is the
+// fairer measure (the process is descheduled while others run).
 struct Rate {
   double collisions = 0;
-  double seconds = 0;
+  double seconds = 0;      // wall clock
+  double cpu_seconds = 0;  // process CPU time
   double per_second() const { return seconds > 0 ? collisions / seconds : 0; }
+  double per_cpu_second() const { return cpu_seconds > 0 ? collisions / cpu_seconds : 0; }
+};
+
+struct Stopwatch {
+  std::chrono::steady_clock::time_point wall = std::chrono::steady_clock::now();
+  std::clock_t cpu = std::clock();
+  double wall_seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
+  }
+  double cpu_seconds() const { return static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC; }
 };
 std::map<std::pair<std::string, std::size_t>, Rate> g_rates;
 
@@ -44,11 +58,12 @@ shockgas::Bodies initial_bodies(std::size_t n) {
 }
 
 void record(benchmark::State& state, const std::string& engine, std::size_t n, double collisions,
-            double seconds) {
+            const Stopwatch& watch) {
   Rate& r = g_rates[{engine, n}];
   r.collisions += collisions;
-  r.seconds += seconds;
-  state.counters["collisions_per_second"] = benchmark::Counter(collisions / seconds);
+  r.seconds += watch.wall_seconds();
+  r.cpu_seconds += watch.cpu_seconds();
+  state.counters["collisions_per_cpu_second"] = benchmark::Counter(r.per_cpu_second());
 }
 
 void BM_Engine(benchmark::State& state) {
@@ -62,11 +77,10 @@ void BM_Engine(benchmark::State& state) {
   p.clusters = false;
   p.max_collisions = g_collisions;
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     const auto out = shockgas::particles::simulate(b, static_cast<double>(n), p);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     benchmark::DoNotOptimize(out.final_state.v.data());
-    record(state, "engine", n, static_cast<double>(out.collisions), s);
+    record(state, "engine", n, static_cast<double>(out.collisions), watch);
   }
 }
 
@@ -74,12 +88,11 @@ void BM_Baseline(benchmark::State& state) {
   const std::size_t n = static_cast<std::size_t>(state.range(0));
   const shockgas::Bodies b = initial_bodies(n);
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     shockgas::bench::BaselineEngine engine(b, static_cast<double>(n), kR, kDelta);
     const std::uint64_t done = engine.run(g_collisions);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     benchmark::DoNotOptimize(engine.momentum());
-    record(state, "baseline", n, static_cast<double>(done), s);
+    record(state, "baseline", n, static_cast<double>(done), watch);
   }
 }
 
@@ -93,14 +106,20 @@ BENCHMARK(BM_Baseline)
 
 void write_csv(const std::string& path) {
   std::ofstream out(path);
-  out << "N,collisions,engine_collisions_per_s,baseline_collisions_per_s,ratio\n";
+  out << "N,collisions,engine_per_cpu_s,baseline_per_cpu_s,ratio_cpu,engine_per_wall_s,baseline_per_wall_s,"
+         "ratio_wall\n";
   for (std::size_t n : {10'000, 100'000, 1'000'000}) {
-    const double e = g_rates[{"engine", n}].per_second();
-    const double b = g_rates[{"baseline", n}].per_second();
-    if (e == 0 && b == 0) continue;
-    out << n << ',' << g_collisions << ',' << e << ',' << b << ',' << (b > 0 ? e / b : 0) << '\n';
-    std::cout << "N = " << n << ": engine " << e / 1e6 << " M/s, baseline " << b / 1e6 << " M/s, ratio "
-              << (b > 0 ? e / b : 0) << '\n';
+    const Rate& e = g_rates[{"engine", n}];
+    const Rate& b = g_rates[{"baseline", n}];
+    if (e.collisions == 0 && b.collisions == 0) continue;
+    auto ratio = [](double x, double y) { return y > 0 ? x / y : 0.0; };
+    out << n << ',' << g_collisions << ',' << e.per_cpu_second() << ',' << b.per_cpu_second() << ','
+        << ratio(e.per_cpu_second(), b.per_cpu_second()) << ',' << e.per_second() << ',' << b.per_second()
+        << ',' << ratio(e.per_second(), b.per_second()) << '\n';
+    std::cout << "N = " << n << ": engine " << e.per_cpu_second() / 1e6 << " M/cpu-s ("
+              << e.per_second() / 1e6 << " M/wall-s), baseline " << b.per_cpu_second() / 1e6 << " M/cpu-s ("
+              << b.per_second() / 1e6 << " M/wall-s), ratio " << ratio(e.per_cpu_second(), b.per_cpu_second())
+              << " (cpu), " << ratio(e.per_second(), b.per_second()) << " (wall)\n";
   }
   std::cout << "wrote " << path << '\n';
 }
