@@ -106,21 +106,24 @@ class FiniteVolumeGrid {
     return s;
   }
 
-  // Second-order MUSCL-Hancock step with slope limiter Lim (limiters.hpp).
+  // Second-order MUSCL-Hancock step with slope limiter Lim (limiters.hpp), in
+  // place in one pass: the faces of cell i+1 are built from the old U_i, U_{i+1},
+  // U_{i+2} before U_i is overwritten.
   template <class Lim>
   StepSummary step_muscl_hancock(double dt) {
     fill_ghosts();
-    evolve_faces<Lim>(0.5 * dt / dx_);
     const double lambda = dt / dx_;
     State* u = u_.data() + ghosts;
-    // Face values of cell i live at index i + 1 of minus_ (left face), plus_ (right face).
-    State left_flux = Physics::riemann_flux(plus_[0], minus_[1]);
+    Faces here = evolved_faces<Lim>(u, 0.5 * lambda);
+    State left_flux = Physics::riemann_flux(evolved_faces<Lim>(u - 1, 0.5 * lambda).plus, here.minus);
     StepSummary s;
     for (std::size_t i = 0; i < n_; ++i) {
-      const State right_flux = Physics::riemann_flux(plus_[i + 1], minus_[i + 2]);
+      const Faces next = evolved_faces<Lim>(u + i + 1, 0.5 * lambda);
+      const State right_flux = Physics::riemann_flux(here.plus, next.minus);
       for (std::size_t k = 0; k < components; ++k) u[i][k] -= lambda * (right_flux[k] - left_flux[k]);
       account(s, u[i]);
       left_flux = right_flux;
+      here = next;
     }
     return s;
   }
@@ -147,36 +150,34 @@ class FiniteVolumeGrid {
     }
   }
 
-  // Limited reconstruction U_i -/+ dU_i / 2 in cells -1..n, each face moved half a
-  // step by the cell's own flux difference: U_face -= (dt / 2dx) (F(U+) - F(U-)).
+  struct Faces {
+    State minus, plus;  // values at the left and right face of a cell
+  };
+
+  // Limited reconstruction U_i -/+ dU_i / 2 of the cell at c (reads c[-1], c[0],
+  // c[1]), each face moved half a step by the cell's own flux difference:
+  // U_face -= (dt / 2dx) (F(U+) - F(U-)).
   template <class Lim>
-  void evolve_faces(double half_lambda) {
-    minus_.resize(n_ + 2);
-    plus_.resize(n_ + 2);
-    const State* u = u_.data() + ghosts;
-    for (std::ptrdiff_t i = -1; i <= static_cast<std::ptrdiff_t>(n_); ++i) {
-      State lo, hi;
-      for (std::size_t k = 0; k < components; ++k) {
-        const double half_slope = 0.5 * Lim::slope(u[i][k] - u[i - 1][k], u[i + 1][k] - u[i][k]);
-        lo[k] = u[i][k] - half_slope;
-        hi[k] = u[i][k] + half_slope;
-      }
-      const State f_lo = Physics::flux(lo), f_hi = Physics::flux(hi);
-      for (std::size_t k = 0; k < components; ++k) {
-        const double change = half_lambda * (f_hi[k] - f_lo[k]);
-        lo[k] -= change;
-        hi[k] -= change;
-      }
-      minus_[static_cast<std::size_t>(i + 1)] = lo;
-      plus_[static_cast<std::size_t>(i + 1)] = hi;
+  static Faces evolved_faces(const State* c, double half_lambda) {
+    Faces f;
+    for (std::size_t k = 0; k < components; ++k) {
+      const double half_slope = 0.5 * Lim::slope(c[0][k] - c[-1][k], c[1][k] - c[0][k]);
+      f.minus[k] = c[0][k] - half_slope;
+      f.plus[k] = c[0][k] + half_slope;
     }
+    const State f_minus = Physics::flux(f.minus), f_plus = Physics::flux(f.plus);
+    for (std::size_t k = 0; k < components; ++k) {
+      const double change = half_lambda * (f_plus[k] - f_minus[k]);
+      f.minus[k] -= change;
+      f.plus[k] -= change;
+    }
+    return f;
   }
 
   std::size_t n_;
   double dx_;
   Boundary boundary_;
-  std::vector<State> u_;             // cells with ghosts: u_[ghosts + i] is cell i
-  std::vector<State> minus_, plus_;  // evolved face values of cells -1..n (MUSCL-Hancock)
+  std::vector<State> u_;  // cells with ghosts: u_[ghosts + i] is cell i
 };
 
 // ---- The time loop and the input rules shared by the finite-volume solvers ----
