@@ -208,7 +208,7 @@ std::vector<KeySpec> build_schema() {
           "variant labels for tables and plots", SG_FIELD(sweep, labels)),
       key("sweep", "reference_key", "string", "", "a summary.json key, or empty",
           "the result compared with reference_values in the report", SG_FIELD(sweep, reference_key)),
-      key("sweep", "reference_values", "list of numbers", "", "one number per variant, or empty",
+      key("sweep", "reference_values", "list of strings", "", "one text per variant (\"\" for none), or empty",
           "published values of reference_key", SG_FIELD(sweep, reference_values)),
       key("sweep", "reference_source", "string", "", "any text", "where the reference values come from",
           SG_FIELD(sweep, reference_source)),

@@ -45,7 +45,13 @@ double l1_distance(const std::vector<double>& a, const std::vector<double>& b, d
   return s * dx;
 }
 
-void summarize(RunState& state, const ContinuumResult& r, const ContinuumResult* exact) {
+double total(const std::vector<double>& rho, double length) {
+  double sum = 0;
+  for (double x : rho) sum += x;
+  return sum * length / static_cast<double>(rho.size());
+}
+
+void summarize(RunState& state, const ContinuumResult& r, const ContinuumResult* exact, double mass0) {
   auto& s = state.summary["continuum"][r.solver];
   s["cells"] = r.x.size();
   s["t"] = r.t;
@@ -53,6 +59,7 @@ void summarize(RunState& state, const ContinuumResult& r, const ContinuumResult*
   s["method"] = r.method_note;
   for (const auto& [k, v] : r.stats) s["stats"][k] = v;
   if (r.has_shocks) s["n_shocks"] = r.shocks.size();
+  if (!r.rho.empty()) s["mass_drift"] = total(r.rho, r.length) / mass0 - 1;  // 0 up to rounding if conserved
   std::string line = "- `" + r.solver + "`: " + std::to_string(r.x.size()) + " cells, " + to_text(r.wall_seconds) +
                      " s";
   if (exact && exact != &r && exact->v.size() == r.v.size()) {
@@ -74,6 +81,7 @@ void run_continuum_stage(RunState& state) {
   const auto& scene = state.scene;
   const double t_end = scene.continuum_t_end();
   const InitialField field = make_initial_field(scene.initial, 0);
+  const double mass0 = total(continuum::cell_averages(field, scene.continuum.cells).rho, field.length);
   for (const auto& name : scene.continuum.solvers) {
     state.progress.stage("continuum/" + name);
     state.continuum.push_back(continuum::solve(name, field, scene.continuum, t_end, state.progress.callback()));
@@ -85,7 +93,7 @@ void run_continuum_stage(RunState& state) {
   state.report.push_back("## Continuum at t = " + to_text(t_end) + "\n");
   for (const auto& r : state.continuum) {
     write_result(state.h5, r, scene.output.fields);
-    summarize(state, r, exact);
+    summarize(state, r, exact, mass0);
   }
   state.report.push_back("");
 }

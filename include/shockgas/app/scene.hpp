@@ -31,7 +31,8 @@ struct SweepParams {
   std::vector<std::string> variants;        // overrides per variant, separated by ';'
   std::vector<std::string> labels;          // one per variant; empty = the overrides
   std::string reference_key;                // summary key compared with reference_values ("compare.T_exponent")
-  std::vector<double> reference_values;     // the literature's values, one per variant (or empty)
+  std::vector<std::string> reference_values;  // the literature's values as text, one per variant
+                                              // ("" where it gives none), or empty
   std::string reference_source;             // where they come from
 };
 
