@@ -100,15 +100,17 @@ Crossovers find_crossovers(const std::vector<double>& t, const std::vector<doubl
   c.t_dissip_theory = dissipation_time(r);
   c.t_stick_theory = sticking_time(r);
   c.t_dissip = c.t_stick = kNaN;
-  for (std::size_t i = 0; i + 1 < alpha.size(); ++i)
-    if (alpha[i] >= params.dissip_level && alpha[i + 1] < params.dissip_level) {
-      c.t_dissip = crossing_time(lt, alpha, i, params.dissip_level);
-      break;
-    }
   const std::size_t i_min =
       static_cast<std::size_t>(std::min_element(alpha.begin(), alpha.end()) - alpha.begin());
   c.min_exponent = alpha[i_min];
   c.t_min_exponent = t[i_min];
+  c.separated = c.min_exponent <= params.stick_level;
+  if (!c.separated) return c;
+  for (std::size_t i = i_min; i-- > 0;)
+    if (alpha[i] >= params.dissip_level && alpha[i + 1] < params.dissip_level) {
+      c.t_dissip = crossing_time(lt, alpha, i, params.dissip_level);
+      break;
+    }
   for (std::size_t i = i_min; i + 1 < alpha.size(); ++i)
     if (alpha[i] <= params.stick_level && alpha[i + 1] > params.stick_level) {
       c.t_stick = crossing_time(lt, alpha, i, params.stick_level);

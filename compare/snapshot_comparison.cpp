@@ -22,6 +22,14 @@ std::vector<double> eligible_cluster_positions(const std::vector<particles::Clus
   return x;
 }
 
+// 1 where a cell holds mass, 0 where it is empty: an empty cell's velocity is an
+// interpolation (deposits, the point-mass path of the exact solver), not data.
+std::vector<double> occupied(const std::vector<double>& mass_or_density) {
+  std::vector<double> w(mass_or_density.size());
+  for (std::size_t i = 0; i < w.size(); ++i) w[i] = mass_or_density[i] > 0 ? 1.0 : 0.0;
+  return w;
+}
+
 }  // namespace
 
 SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const continuum::ContinuumResult& field,
@@ -42,10 +50,11 @@ SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const co
   c.n_shocks = c.match.eligible_shocks;
   c.n_clusters = c.match.eligible_clusters;
   c.sawtooth = fit_sawtooth_slopes(field.v, L, field.t, eligible_shock_positions(c.shocks, c.min_mass),
-                                   params.sawtooth);
+                                   params.sawtooth, field.rho.size() == field.v.size() ? occupied(field.rho)
+                                                                                      : std::vector<double>{});
   c.particle_sawtooth = fit_sawtooth_slopes(c.particle_fields.v, L, field.t,
                                             eligible_cluster_positions(c.clusters, c.min_mass), params.sawtooth,
-                                            c.particle_fields.mass);
+                                            occupied(c.particle_fields.mass));
   c.shock_count_ratio = shock_count_ratio(c.n_shocks, static_cast<double>(N), field.t);
   return c;
 }

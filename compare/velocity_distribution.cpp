@@ -134,6 +134,19 @@ ScaledDistribution rescale_v_histogram(std::span<const double> v_edges, std::spa
   return normalise_z_histogram(z_edges, counts, t);
 }
 
+ScaledDistribution mean_distribution(const std::vector<ScaledDistribution>& d) {
+  require(!d.empty(), "compare.distributions", d.size(), ">= 1 distribution");
+  ScaledDistribution mean = d.front();
+  for (std::size_t k = 1; k < d.size(); ++k) {
+    require(d[k].z_edges == mean.z_edges && d[k].density.size() == mean.density.size(),
+            "compare.distributions", k, "the same z edges in every distribution");
+    for (std::size_t j = 0; j < mean.density.size(); ++j) mean.density[j] += d[k].density[j];
+    mean.t = d[k].t;
+  }
+  for (double& p : mean.density) p /= static_cast<double>(d.size());
+  return mean;
+}
+
 double collapse_distance(const std::vector<ScaledDistribution>& d, std::size_t grid_points) {
   require(d.size() >= 2, "compare.distributions", d.size(), ">= 2 distributions");
   require(grid_points >= 1, "compare.collapse_grid_points", grid_points, ">= 1");
@@ -178,7 +191,9 @@ TailFit fit_tail_exponent(std::span<const double> z, std::span<const double> phi
   fit.phi0 = std::exp(line.intercept);
   fit.rms_residual = std::sqrt(rss / static_cast<double>(fit.points));
   fit.exponent_error = kNaN;
-  if (fit.points > 3 && rss > 0) {
+  const double resolution = 1e-6 * (a_max - a_min);
+  fit.at_bound = fit.exponent - a_min < resolution || a_max - fit.exponent < resolution;
+  if (!fit.at_bound && fit.points > 3 && rss > 0) {
     const double h = 1e-3 * std::max(1.0, fit.exponent);
     const double curvature =
         (rss_at(p, fit.exponent + h) - 2 * rss + rss_at(p, fit.exponent - h)) / (h * h);

@@ -89,6 +89,24 @@ TEST(CoolingLaw, ThreeRegimesGiveBothCrossovers) {
   EXPECT_NEAR(std::log10(c.t_stick / c.t_stick_theory), 0.0, 0.05);
 }
 
+TEST(CoolingLaw, NoCoolingPlateauNoCrossover) {
+  // A sticky plateau alpha = -2/3 with 3% noise in T (a single small
+  // realization, 10 samples per decade): the raw alpha scatters by ~ 0.3 and
+  // may dip below -1 by chance; smoothed over +-0.2 decade its minimum stays
+  // above -4/3, so no crossover is reported.
+  Rng rng(37);
+  const auto t = log_times(0, 4, 41);
+  std::vector<double> T;
+  for (double ti : t) T.push_back(std::pow(ti, -2.0 / 3.0) * std::exp(0.03 * rng.normal()));
+  CrossoverParams p;
+  p.half_window_decades = 0.2;
+  const Crossovers c = find_crossovers(t, T, 0.5, p);
+  EXPECT_FALSE(c.separated);
+  EXPECT_TRUE(std::isnan(c.t_dissip));
+  EXPECT_TRUE(std::isnan(c.t_stick));
+  EXPECT_GT(c.min_exponent, -4.0 / 3.0);
+}
+
 TEST(CoolingLaw, RejectsBadSeries) {
   EXPECT_THROW(local_exponents({1, 1}, {1, 2}), InputError);
   EXPECT_THROW(local_exponents({1, 2}, {1, -2}), InputError);

@@ -68,6 +68,32 @@ TEST(VelocityDistribution, ScaledHistogramsOfAScalingFormCollapse) {
   EXPECT_GT(d_unscaled, 0.5);  // measured 0.87
 }
 
+TEST(VelocityDistribution, FlatTailIsFlaggedAtTheBound) {
+  // A density that does not decay: RSS is smallest for the smallest a tried.
+  std::vector<double> z, phi;
+  for (int i = 10; i <= 30; ++i) {
+    z.push_back(0.1 * i);
+    phi.push_back(0.2 + 0.01 * (i % 3));
+  }
+  const TailFit f = fit_tail_exponent(z, phi, 1.0);
+  EXPECT_TRUE(f.at_bound);
+  EXPECT_TRUE(std::isnan(f.exponent_error));
+  // The exact density is not at a bound.
+  std::vector<double> phi3;
+  for (double zi : z) phi3.push_back(phi_exact(zi));
+  EXPECT_FALSE(fit_tail_exponent(z, phi3, 1.0).at_bound);
+}
+
+TEST(VelocityDistribution, MeanOfDistributionsAveragesBins) {
+  ScaledDistribution a{1.0, {-1, 0, 1}, {0.2, 0.8}}, b{2.0, {-1, 0, 1}, {0.6, 0.4}};
+  const ScaledDistribution m = mean_distribution({a, b});
+  EXPECT_DOUBLE_EQ(m.density[0], 0.4);
+  EXPECT_DOUBLE_EQ(m.density[1], 0.6);
+  EXPECT_EQ(m.t, 2.0);
+  ScaledDistribution c{3.0, {-2, 0, 2}, {0.1, 0.1}};
+  EXPECT_THROW(mean_distribution({a, c}), InputError);
+}
+
 TEST(VelocityDistribution, NormalisationAndWeights) {
   // Two samples of weights 1 and 3 at t = 8 (t^(1/3) = 2): z = 0.5 and -1.5.
   const std::vector<double> v{0.25, -0.75}, w{1.0, 3.0};

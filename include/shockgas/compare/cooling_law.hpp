@@ -10,13 +10,17 @@
 // t_dissip, (eps t)^-2 and t^(-2/3) at t_stick; a smooth crossover between two
 // power laws passes the mean of their exponents near where they meet (exactly,
 // for T = A t^a + B t^b, at the meeting point). So:
-//   t_dissip = first time alpha falls through dissip_level (default -1, between 0 and -2);
-//   t_stick  = first time after the minimum of alpha that alpha rises through
-//              stick_level (default -4/3, between -2 and -2/3).
-// Crossings are interpolated linearly in ln t between samples. Either is NaN if
-// the curve never crosses its level (e.g. r = 0 or r near 1 when the window
-// between 1/eps and eps^(-3/2) is too short for alpha to reach -2, or a series
-// that starts or ends inside a regime).
+//   t_dissip = the last time before the minimum of alpha that alpha falls
+//              through dissip_level (default -1, between 0 and -2);
+//   t_stick  = the first time after the minimum of alpha that alpha rises
+//              through stick_level (default -4/3, between -2 and -2/3).
+// Both need evidence of the cooling regime: the regimes count as separated only
+// if min alpha <= stick_level (alpha went clearly below the sticky plateau -2/3);
+// otherwise both are NaN. A noisy sticky plateau (single realization, few
+// clusters) then reports no crossover instead of a spurious one; so do r = 0 and
+// r = 0.5, where eps^(-3/2) / eps^(-1) = eps^(-1/2) <= 2 leaves no cooling
+// plateau. Crossings are interpolated linearly in ln t between samples; either
+// is also NaN if the series starts or ends inside the regime it would leave.
 #include <cstddef>
 #include <vector>
 
@@ -46,7 +50,8 @@ PowerLawFit fit_power_law(const std::vector<double>& t, const std::vector<double
 struct CrossoverParams {
   double dissip_level = -1.0;        // alpha level marking t_dissip [1]
   double stick_level = -4.0 / 3.0;   // alpha level marking t_stick [1]
-  double half_window_decades = 0.0;  // smoothing of alpha, as in local_exponents [decades]
+  double half_window_decades = 0.0;  // smoothing of alpha, as in local_exponents [decades];
+                                     // ~ 0.1-0.2 for a single noisy realization
 };
 
 struct Crossovers {
@@ -56,6 +61,7 @@ struct Crossovers {
   double t_stick_theory = 0;    // eps^(-3/2) [time]
   double min_exponent = 0;      // the minimum of alpha [1]
   double t_min_exponent = 0;    // where it is reached [time]
+  bool separated = false;       // min alpha <= stick_level: the cooling regime is visible
 };
 // r: the restitution coefficient (for the theory values).
 Crossovers find_crossovers(const std::vector<double>& t, const std::vector<double>& T, double r,

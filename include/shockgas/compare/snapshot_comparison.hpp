@@ -38,8 +38,8 @@ struct SnapshotComparison {
   std::vector<particles::Cluster> clusters;    // all clusters of the particle state
   std::vector<continuum::Shock> shocks;        // all shocks of the continuum field
   MatchResult match;                           // shocks <-> clusters (eligible ones)
-  SawtoothFit sawtooth;                        // continuum v between its eligible shocks
-  SawtoothFit particle_sawtooth;               // deposited v (mass-weighted) between eligible clusters
+  SawtoothFit sawtooth;                        // continuum v between its eligible shocks, cells with rho > 0
+  SawtoothFit particle_sawtooth;               // deposited v between eligible clusters, cells with mass
   std::size_t n_shocks = 0;                    // eligible shocks
   std::size_t n_clusters = 0;                  // eligible clusters
   double shock_count_ratio = 0;                // n_shocks / (N t^(-2/3))

@@ -34,6 +34,11 @@ ScaledDistribution normalise_z_histogram(std::span<const double> z_edges, std::s
 ScaledDistribution rescale_v_histogram(std::span<const double> v_edges, std::span<const double> counts,
                                        double t);
 
+// The mean of distributions binned alike (same z edges; e.g. several late
+// times or realizations, to steady a tail fit): density averaged bin by bin, t
+// the last one's. Throws InputError if d is empty or the edges differ.
+ScaledDistribution mean_distribution(const std::vector<ScaledDistribution>& d);
+
 // How well distributions collapse: the mean, over all pairs, of the L1 distance
 //   D_ab = int |Phi_a(z) - Phi_b(z)| dz
 // on the z range common to all of them, evaluated at `grid_points` midpoints of
@@ -56,6 +61,8 @@ struct TailFit {
   double phi0 = 0;            // Phi0 [1/z]
   double rms_residual = 0;    // of ln Phi [1]
   std::size_t points = 0;     // points used
+  bool at_bound = false;      // the best a is at a_min or a_max: the tail does not
+                              // determine it (too few or too noisy points); error NaN
 };
 // Throws InputError if sizes differ, z_min < 0, the range is empty or fewer than 3 points qualify.
 TailFit fit_tail_exponent(std::span<const double> z, std::span<const double> phi, double z_min,
