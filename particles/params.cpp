@@ -9,12 +9,11 @@ namespace shockgas::particles {
 void validate(const ParticleParams& p) {
   require_in_range("particles.r", p.r, 0.0, 1.0);
   require(std::isfinite(p.delta) && p.delta >= 0, "particles.delta", p.delta, "a finite number >= 0");
-  require(p.subthreshold == "elastic" || p.subthreshold == "sticky", "particles.subthreshold",
-          p.subthreshold, "\"elastic\" or \"sticky\"");
+  require(p.subthreshold == "elastic" || p.subthreshold == "sticky", "particles.subthreshold", p.subthreshold,
+          "\"elastic\" or \"sticky\"");
   require(p.geometry == "ring" || p.geometry == "line", "particles.geometry", p.geometry,
           "\"ring\" or \"line\"");
-  require(p.solver == "events" || p.solver == "hull", "particles.solver", p.solver,
-          "\"events\" or \"hull\"");
+  require(p.solver == "events" || p.solver == "hull", "particles.solver", p.solver, "\"events\" or \"hull\"");
   require(p.solver != "hull" || p.r == 0.0, "particles.solver", p.solver,
           "\"hull\" only with particles.r = 0 (the exact sticky solution)");
   require_above("particles.t_end", p.t_end, 0.0);

@@ -12,10 +12,18 @@ namespace {
 
 const std::vector<double> kTimes = {1.0, 10.0, 100.0, 1000.0, 10000.0};
 
-TEST(HullAgreementSlow, LatticeLine) { testing::expect_engine_matches_hull(100000, "lattice", "line", kTimes, 1); }
-TEST(HullAgreementSlow, RandomLine) { testing::expect_engine_matches_hull(100000, "random", "line", kTimes, 2); }
-TEST(HullAgreementSlow, LatticeRing) { testing::expect_engine_matches_hull(100000, "lattice", "ring", kTimes, 3); }
-TEST(HullAgreementSlow, RandomRing) { testing::expect_engine_matches_hull(100000, "random", "ring", kTimes, 4); }
+TEST(HullAgreementSlow, LatticeLine) {
+  testing::expect_engine_matches_hull(100000, "lattice", "line", kTimes, 1);
+}
+TEST(HullAgreementSlow, RandomLine) {
+  testing::expect_engine_matches_hull(100000, "random", "line", kTimes, 2);
+}
+TEST(HullAgreementSlow, LatticeRing) {
+  testing::expect_engine_matches_hull(100000, "lattice", "ring", kTimes, 3);
+}
+TEST(HullAgreementSlow, RandomRing) {
+  testing::expect_engine_matches_hull(100000, "random", "ring", kTimes, 4);
+}
 
 TEST(ConservationSlow, MomentumOverTenMillionCollisions) {
   InitialParams ip;
