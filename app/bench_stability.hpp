@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.hpp"
 #include "bench_problems.hpp"
 #include "shockgas/particles/run_result.hpp"
 
@@ -13,18 +14,25 @@ namespace shockgas::app::bench {
 
 // ---- Finite volume against the Courant number ----
 
-// A run counts as failed if it stopped (RunError: non-finite or stalled), or its
-// total variation grew by more than 1 % (TVD schemes never increase it), or
-// max|v| exceeded max|v0| by more than 1 % (the maximum principle of Burgers).
+// The scheme is stepped here (godunov_scheme.hpp) so that every step is watched.
+// A run counts as failed if the total variation of v rises in any step by more
+// than 1e-8 TV(v0) (TVD schemes never raise it; rounding is ~1e-14), or v or rho
+// turn non-finite or |v| exceeds 10 max|v0| (then it stops: a blow-up). A
+// negative density is reported but is not by itself a failure of the velocity.
 struct CflPoint {
   double cfl = 0;
   bool failed = false;
-  double tv_ratio = 0;   // TV(v at t) / TV(v0 cell averages); 0 if the run stopped [1]
-  double max_ratio = 0;  // max|v at t| / max|v0|; 0 if the run stopped [1]
-  double l1 = 0;         // L1 error against Hopf-Lax; 0 if the run stopped [length^2/time]
-  std::string what;      // in words
+  bool blew_up = false;        // stopped: non-finite or |v| > 10 max|v0|
+  double max_tv_rise = 0;      // max over steps of (TV_{n+1} - TV_n) / TV_0 [1]
+  std::size_t rising_steps = 0;  // steps whose TV rise passed the threshold
+  double tv_ratio = 0;         // TV(v) at the end / TV(v0); NaN if it blew up [1]
+  double max_ratio = 0;        // max|v| at the end / max|v0|; NaN if it blew up [1]
+  double min_rho = 0;          // min density over the run [mass/length]
+  double l1 = 0;               // L1 error against Hopf-Lax at pb.t; NaN if it blew up [length^2/time]
+  double t_reached = 0;        // [time]
+  std::string what;            // in words
 };
-// solver: "godunov" | "godunov2"; limiter for godunov2.
+// solver: "godunov" | "godunov2"; limiter ("minmod" | "vanleer" | "mc") for godunov2.
 std::vector<CflPoint> cfl_scan(const Problem& pb, const std::string& solver, const std::string& limiter,
                                std::size_t cells, const std::vector<double>& cfls);
 
@@ -35,6 +43,9 @@ struct ScanLimit {
   double first_failed = 0;
 };
 ScanLimit cfl_limit(const std::vector<CflPoint>& points);
+
+// The CSV section (stability_cfl.csv, stability_cfl_limits.csv).
+void cfl_stability(const Context& ctx, FailureLog& failures);
 
 // ---- Explicit viscous Burgers against nu and dx ----
 

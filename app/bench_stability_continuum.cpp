@@ -1,6 +1,5 @@
 // Stability scans of the continuum methods (bench_stability.hpp):
-//  * stability_cfl.csv: Godunov and MUSCL-Hancock (each limiter) against the
-//    Courant number, run with allow_unstable; predicted limit 1 (godunov_scheme.hpp);
+//  (the Courant-number scan of the finite-volume schemes: bench_stability_cfl.cpp)
 //  * stability_viscous.csv: explicit viscous Burgers against nu, dx and dt (predicted
 //    dt <= h^2/2nu / (1 + |v| h/2nu), explicit_viscous.hpp), next to CVODE and ARKODE
 //    at the same nu and dx (no step limit: their mean step against h^2/2nu);
@@ -14,7 +13,6 @@
 #include "bench_stability.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/continuum/hopf_cole.hpp"
-#include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/continuum/solve.hpp"
 
 namespace shockgas::app::bench {
@@ -23,7 +21,7 @@ namespace {
 
 using continuum::ContinuumParams;
 
-constexpr double kGrowthTolerance = 0.01;  // 1 %: far above rounding, far below any real instability
+constexpr double kGrowthTolerance = 0.01;  // TV growth of 1 %: far above rounding, far below a blow-up
 
 double max_abs(const std::vector<double>& v) {
   double m = 0;
@@ -31,51 +29,7 @@ double max_abs(const std::vector<double>& v) {
   return m;
 }
 
-CflPoint cfl_point(const Problem& pb, const ContinuumParams& p, const std::string& solver,
-                   const continuum::CellAverages& v0, const continuum::CellAverages& exact) {
-  CflPoint pt;
-  pt.cfl = p.cfl;
-  try {
-    const auto r = continuum::solve(solver, pb.field, p, pb.t);
-    pt.tv_ratio = continuum::periodic_total_variation(r.v) / continuum::periodic_total_variation(v0.v);
-    pt.max_ratio = max_abs(r.v) / max_abs(v0.v);
-    pt.l1 = error_norms(r.v, exact.v, pb.field.length / double(p.cells)).l1;
-    pt.failed = pt.tv_ratio > 1 + kGrowthTolerance || pt.max_ratio > 1 + kGrowthTolerance;
-    pt.what = pt.failed ? "total variation x" + fmt(pt.tv_ratio) + ", max|v| x" + fmt(pt.max_ratio)
-                        : "stable (TV x" + fmt(pt.tv_ratio) + ")";
-  } catch (const std::exception& e) {
-    pt.failed = true;
-    pt.what = std::string("stopped: ") + e.what();
-  }
-  return pt;
-}
-
 }  // namespace
-
-std::vector<CflPoint> cfl_scan(const Problem& pb, const std::string& solver, const std::string& limiter,
-                               std::size_t cells, const std::vector<double>& cfls) {
-  ContinuumParams p;
-  p.cells = cells;
-  p.limiter = limiter;
-  p.allow_unstable = true;
-  const auto v0 = continuum::cell_averages(pb.field, cells);
-  const auto exact = continuum::exact_cell_averages(pb.field, cells, pb.t, {4, 2048, 64});
-  std::vector<CflPoint> out;
-  for (double c : cfls) {
-    p.cfl = c;
-    out.push_back(cfl_point(pb, p, solver, v0, exact));
-  }
-  return out;
-}
-
-ScanLimit cfl_limit(const std::vector<CflPoint>& points) {
-  ScanLimit s;
-  for (const auto& pt : points) {
-    if (pt.failed) return s.first_failed = pt.cfl, s;
-    s.last_stable = pt.cfl;
-  }
-  return s;
-}
 
 ViscousPoint explicit_viscous_point(const Problem& pb, double nu, std::size_t cells, double c, std::size_t steps) {
   const double h = pb.field.length / double(cells);
@@ -135,36 +89,6 @@ HopfColePoint hopf_cole_point(const Problem& pb, std::size_t cells, double ratio
 }
 
 namespace {
-
-std::vector<double> cfl_values(const Context& ctx) {
-  if (ctx.full) return {0.5, 0.8, 0.9, 0.95, 0.98, 1.0, 1.02, 1.05, 1.1, 1.2, 1.3, 1.5, 2.0};
-  return {0.5, 0.8, 0.9, 0.95, 1.0, 1.05, 1.1, 1.2, 1.5, 2.0};
-}
-
-void cfl_section(const Context& ctx, FailureLog& failures) {
-  CsvWriter csv(ctx.path("stability_cfl.csv"),
-                {"problem", "method", "cfl", "failed", "tv_ratio", "max_ratio", "l1", "what"});
-  CsvWriter limits(ctx.path("stability_cfl_limits.csv"),
-                   {"problem", "method", "predicted", "last_stable", "first_failed"});
-  const std::size_t cells = ctx.full ? 1024 : 256;
-  for (const Problem& pb : {problem_by_name("sine_post"), problem_by_name("noise")}) {
-    for (std::string method : {"godunov", "godunov2 (minmod)", "godunov2 (vanleer)", "godunov2 (mc)"}) {
-      ctx.log("stability", "CFL scan of " + method + ", " + pb.name);
-      const bool first = method == "godunov";
-      const std::string limiter = first ? "mc" : method.substr(10, method.size() - 11);
-      const auto points = cfl_scan(pb, first ? "godunov" : "godunov2", limiter, cells, cfl_values(ctx));
-      for (const auto& pt : points) {
-        csv << pb.name << method << pt.cfl << (pt.failed ? "yes" : "no") << pt.tv_ratio << pt.max_ratio << pt.l1
-            << pt.what;
-        csv.end_row();
-        if (pt.failed) failures.add({"cfl", method, pb.name + ", " + std::to_string(cells) + " cells, cfl = " + fmt(pt.cfl), pt.what});
-      }
-      const ScanLimit lim = cfl_limit(points);
-      limits << pb.name << method << 1.0 << lim.last_stable << lim.first_failed;
-      limits.end_row();
-    }
-  }
-}
 
 void explicit_rows(const Context& ctx, CsvWriter& csv, FailureLog& failures, const Problem& pb, double nu,
                    std::size_t cells) {
@@ -252,7 +176,7 @@ void hopf_cole_section(const Context& ctx, FailureLog& failures) {
 }  // namespace
 
 void continuum_stability(const Context& ctx, FailureLog& failures) {
-  cfl_section(ctx, failures);
+  cfl_stability(ctx, failures);
   viscous_section(ctx, failures);
   hopf_cole_section(ctx, failures);
 }

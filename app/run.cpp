@@ -109,7 +109,7 @@ std::string run_single(const Scene& scene, const fs::path& dir, const RunOptions
       run_analysis_stage(state);
     }
     if (scene.has_continuum) run_continuum_stage(state);
-    if (scene.has_compare) run_compare_stage(state);
+    if (scene.has_compare && scene.has_continuum) run_compare_stage(state);
     progress.finish();
     h5.close();
     write_report(dir, state);

@@ -125,10 +125,12 @@ std::vector<std::string> split_assignments(const std::string& text) {
   return out;
 }
 
-// The comparison needs both models at one time, on the ring, and the solver it names.
+// [compare] configures the particle analysis (cooling law, velocity
+// distribution); with [continuum] present it also compares the two models, which
+// needs both at one time, on the ring, and the solver it names.
 void validate_compare(const Scene& scene) {
-  require(scene.has_particles && scene.has_continuum, "compare", std::string("(table)"),
-          "[compare] only together with [particles] and [continuum]");
+  require(scene.has_particles, "compare", std::string("(table)"), "[compare] only together with [particles]");
+  if (!scene.has_continuum) return;
   const auto& solvers = scene.continuum.solvers;
   require(std::find(solvers.begin(), solvers.end(), scene.compare.solver) != solvers.end(), "compare.solver",
           scene.compare.solver, "one of continuum.solvers");

@@ -235,7 +235,7 @@ const std::vector<TableSpec>& scene_tables() {
       {"initial", "the one initial condition that feeds every model"},
       {"particles", "the event-driven gas (present = run it)"},
       {"continuum", "Burgers + continuity solvers (present = run them)"},
-      {"compare", "particles against continuum (present = compare)"},
+      {"compare", "the particle analysis, and particles against continuum (present with [continuum] = compare)"},
       {"sweep", "variants of the scene run side by side (present = sweep)"},
       {"output", "what is written besides result.h5 and summary.json"},
   };
