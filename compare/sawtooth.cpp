@@ -36,25 +36,31 @@ RampCells ramp_cells(const std::vector<double>& v, const std::vector<double>& we
 
 }  // namespace
 
-SawtoothFit fit_sawtooth_slopes(const std::vector<double>& v, double length, double t,
-                                std::vector<double> shock_x, const SawtoothParams& params,
-                                const std::vector<double>& weights) {
+SawtoothFit fit_sawtooth_between(const std::vector<double>& v, double length, double t,
+                                 const std::vector<Extent>& extents, const SawtoothParams& params,
+                                 const std::vector<double>& weights) {
   require(std::isfinite(length) && length > 0, "compare.length", length, "> 0");
   require(std::isfinite(t) && t > 0, "compare.t", t, "> 0");
   require(!v.empty(), "compare.cells", v.size(), ">= 1");
   require(weights.empty() || weights.size() == v.size(), "compare.weights", weights.size(),
           "empty or one per cell");
   require(params.min_cells >= 2, "compare.sawtooth.min_cells", params.min_cells, ">= 2");
-  for (double x : shock_x) require(x >= 0 && x < length, "compare.shock_x", x, "in [0, length)");
-  std::sort(shock_x.begin(), shock_x.end());
+  for (std::size_t k = 0; k < extents.size(); ++k) {
+    require(extents[k].left >= 0 && extents[k].left < length, "compare.extent.left", extents[k].left,
+            "in [0, length)");
+    require(extents[k].right >= extents[k].left, "compare.extent.right", extents[k].right, ">= left");
+    if (k > 0) require(extents[k].left >= extents[k - 1].right, "compare.extent.left", extents[k].left,
+                       "sorted, not overlapping the previous extent");
+  }
 
   const double dx = length / static_cast<double>(v.size());
   const double margin = (static_cast<double>(params.skip_cells) + 0.5) * dx;
   SawtoothFit fit;
   std::vector<double> products;
-  for (std::size_t k = 0; k < shock_x.size(); ++k) {
-    const double x_begin = shock_x[k];
-    const double x_end = k + 1 < shock_x.size() ? shock_x[k + 1] : shock_x[0] + length;
+  for (std::size_t k = 0; k < extents.size(); ++k) {
+    const double x_begin = extents[k].right;
+    const double x_end = k + 1 < extents.size() ? extents[k + 1].left : extents[0].left + length;
+    if (!(x_end > x_begin)) continue;  // a wrapping object reaching the first one
     const RampCells cells = ramp_cells(v, weights, dx, x_begin, x_end, margin);
     if (cells.x.size() < params.min_cells) continue;
     const LineFit line = fit_line(cells.x, cells.v, cells.w);
@@ -68,6 +74,16 @@ SawtoothFit fit_sawtooth_slopes(const std::vector<double>& v, double length, dou
     fit.slope_times_t = quartiles(products);
   }
   return fit;
+}
+
+SawtoothFit fit_sawtooth_slopes(const std::vector<double>& v, double length, double t,
+                                std::vector<double> shock_x, const SawtoothParams& params,
+                                const std::vector<double>& weights) {
+  for (double x : shock_x) require(x >= 0 && x < length, "compare.shock_x", x, "in [0, length)");
+  std::sort(shock_x.begin(), shock_x.end());
+  std::vector<Extent> points;
+  for (double x : shock_x) points.push_back(Extent{x, x});
+  return fit_sawtooth_between(v, length, t, points, params, weights);
 }
 
 }  // namespace shockgas::compare

@@ -14,12 +14,18 @@ std::vector<double> eligible_shock_positions(const std::vector<continuum::Shock>
   return x;
 }
 
-std::vector<double> eligible_cluster_positions(const std::vector<particles::Cluster>& clusters,
-                                               double min_mass) {
-  std::vector<double> x;
-  for (const auto& c : clusters)
-    if (c.m >= min_mass) x.push_back(c.x);
-  return x;
+// [first body, last body] of each eligible cluster (the last unrolled by +L if
+// the cluster wraps), in order of position.
+std::vector<Extent> eligible_cluster_extents(const Bodies& state, double L,
+                                             const std::vector<particles::Cluster>& clusters, double min_mass) {
+  const std::size_t n = state.size();
+  std::vector<Extent> extents;
+  for (const auto& c : clusters) {
+    if (c.m < min_mass || c.count == 0) continue;
+    const std::size_t last = c.first + c.count - 1;
+    extents.push_back(Extent{state.x[c.first], state.x[last % n] + (last >= n ? L : 0.0)});
+  }
+  return extents;
 }
 
 // 1 where a cell holds mass, 0 where it is empty: an empty cell's velocity is an
@@ -52,9 +58,9 @@ SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const co
   c.sawtooth = fit_sawtooth_slopes(field.v, L, field.t, eligible_shock_positions(c.shocks, c.min_mass),
                                    params.sawtooth, field.rho.size() == field.v.size() ? occupied(field.rho)
                                                                                       : std::vector<double>{});
-  c.particle_sawtooth = fit_sawtooth_slopes(c.particle_fields.v, L, field.t,
-                                            eligible_cluster_positions(c.clusters, c.min_mass), params.sawtooth,
-                                            occupied(c.particle_fields.mass));
+  c.particle_sawtooth = fit_sawtooth_between(c.particle_fields.v, L, field.t,
+                                             eligible_cluster_extents(state, L, c.clusters, c.min_mass),
+                                             params.sawtooth, occupied(c.particle_fields.mass));
   c.shock_count_ratio = shock_count_ratio(c.n_shocks, static_cast<double>(N), field.t);
   return c;
 }

@@ -70,6 +70,29 @@ TEST(Sawtooth, ZeroWeightCellsAreSkippedAndShortRampsDropped) {
   for (const RampFit& r : fit.ramps) EXPECT_NEAR(r.slope_times_t, 1.0, 1e-10);
 }
 
+TEST(Sawtooth, RampsBetweenExtendedObjects) {
+  // The sawtooth with flat "clusters" of width 1 centred on each shock: ramps
+  // from one cluster's right end to the next one's left end are still exact.
+  const auto saw = testing::five_shock_sawtooth();
+  auto field = saw.cell_averages(1000);
+  std::vector<Extent> extents;
+  for (double x : saw.X) {
+    const double left = x - 0.5 < 0 ? x - 0.5 + saw.L : x - 0.5;
+    extents.push_back(Extent{left, left + 1.0});
+  }
+  // Keep them sorted by left end (99.46 stays last; none wraps below 0 here).
+  const double dx = saw.L / 1000;
+  for (const auto& e : extents)
+    for (std::size_t i = 0; i < field.v.size(); ++i) {
+      const double x = (i + 0.5) * dx;
+      if (x >= e.left && x <= e.right) field.v[i] = 123.0;  // flat cluster interiors
+    }
+  const SawtoothFit fit = fit_sawtooth_between(field.v, field.length, field.t, extents);
+  ASSERT_EQ(fit.ramps.size(), 5u);
+  for (const RampFit& r : fit.ramps) EXPECT_NEAR(r.slope_times_t, 1.0, 1e-10);  // as above
+  EXPECT_NEAR(fit.ramps[4].x_begin, 100.46, 1e-12);  // the last cluster ends past L
+}
+
 TEST(Sawtooth, NoShocksNoRamps) {
   const SawtoothFit fit = fit_sawtooth_slopes(std::vector<double>(10, 0.0), 1.0, 1.0, {});
   EXPECT_TRUE(fit.ramps.empty());

@@ -44,4 +44,18 @@ SawtoothFit fit_sawtooth_slopes(const std::vector<double>& v, double length, dou
                                 std::vector<double> shock_x, const SawtoothParams& params = {},
                                 const std::vector<double>& weights = {});
 
+// The same with ramps given as intervals between objects of finite extent (the
+// clusters of an r > 0 gas spread over ~ delta t): ramp k runs from the right
+// end of object k to the left end of object k + 1 (the last one wraps).
+// extents: [left, right] of each object, left in [0, length), right >= left
+// (unrolled past length if the object wraps), sorted by left; they must not
+// overlap. A point object (left = right) gives fit_sawtooth_slopes.
+struct Extent {
+  double left = 0;   // [length]
+  double right = 0;  // [length]
+};
+SawtoothFit fit_sawtooth_between(const std::vector<double>& v, double length, double t,
+                                 const std::vector<Extent>& extents, const SawtoothParams& params = {},
+                                 const std::vector<double>& weights = {});
+
 }  // namespace shockgas::compare

@@ -39,7 +39,8 @@ struct SnapshotComparison {
   std::vector<continuum::Shock> shocks;        // all shocks of the continuum field
   MatchResult match;                           // shocks <-> clusters (eligible ones)
   SawtoothFit sawtooth;                        // continuum v between its eligible shocks, cells with rho > 0
-  SawtoothFit particle_sawtooth;               // deposited v between eligible clusters, cells with mass
+  SawtoothFit particle_sawtooth;               // deposited v on cells with mass, between the
+                                               // extents (first to last body) of eligible clusters
   std::size_t n_shocks = 0;                    // eligible shocks
   std::size_t n_clusters = 0;                  // eligible clusters
   double shock_count_ratio = 0;                // n_shocks / (N t^(-2/3))
