@@ -21,6 +21,7 @@ namespace shockgas::particles::detail {
 struct ChainState {
   std::vector<double> x, v, m;
   std::vector<std::size_t> first;
+  void reserve(std::size_t n) { x.reserve(n), v.reserve(n), m.reserve(n), first.reserve(n); }
   void push_back(std::size_t f, double xi, double vi, double mi) {
     first.push_back(f);
     x.push_back(xi);
