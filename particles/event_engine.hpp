@@ -182,12 +182,12 @@ class EventEngine {
       ++count_[static_cast<int>(kind)];
       if (kind == CollisionKind::merge) return merge(i, j);
       dissipated_ += bounce(a.v, c.v, mass_[i], mass_[j], rule_.restitution(kind));
-      refresh(left(i), i, j);
+      refresh(left(i), i, j, true);
     } else {
       const bool sub = g < rule_.delta;
       ++count_[sub];  // CollisionKind::inelastic = 0, elastic = 1
       dissipated_ += bounce_equal(a.v, c.v, m0_, sub ? 1.0 : rule_.r);
-      refresh(left(i), i, j);
+      refresh(left(i), i, j, true);
     }
   }
 
@@ -205,13 +205,14 @@ class EventEngine {
     tree_.set(j, EventTree::never);
     tree_.refresh_path(j);
     const std::size_t p = left(i);
-    refresh(p, i, none);
+    refresh(p, i, none, false);
   }
 
   // Recomputes slots p (left of i, may be none), i and j (right of i, may be none).
-  void refresh(std::size_t p, std::size_t i, std::size_t j) {
+  // bounced: i and j just bounced, so they separate (g -> -r g <= 0): no event.
+  void refresh(std::size_t p, std::size_t i, std::size_t j, bool bounced) {
     if (p != none) tree_.set(p, pair_time(p));
-    tree_.set(i, pair_time(i));
+    tree_.set(i, bounced ? EventTree::never : pair_time(i));
     if (j != none) tree_.set(j, pair_time(j));
     if (p != none && j != none && p + 1 == i && i + 1 == j) return tree_.refresh_range(p, j);
     if (p != none && p + 1 == i && j == none) return tree_.refresh_range(p, i);
