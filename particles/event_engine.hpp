@@ -10,10 +10,11 @@
 //
 // Two layouts, chosen once per run:
 //  * Linked = false: equal masses, no merges; neighbours are i +- 1 (mod N on the
-//    ring). 24 bytes per body + 32 per tree slot = 56 bytes per particle.
+//    ring). 24 bytes per body + 8 per slot time + 4 per slot for the tree over
+//    blocks of 8 slots = 36 bytes per particle.
 //  * Linked = true: masses and merges; the live bodies form a doubly linked list
 //    (a ring on the ring). A merge keeps the left body, unlinks the right one and
-//    sets its slot to +inf. 56 + 8 (mass) + 8 (links) bytes per particle.
+//    sets its slot to +inf. 36 + 8 (mass) + 8 (links) = 52 bytes per particle.
 //
 // Ring geometry: positions are unrolled (never wrapped while running); the pair
 // whose right body has the lower index wraps, the right body counted at x + L.
