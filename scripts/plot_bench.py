@@ -32,8 +32,9 @@ def num(row, key):
     return float(value) if value not in ("", None) else None
 
 
-def positive(xs, ys):
-    pts = sorted((x, y) for x, y in zip(xs, ys) if x and y and x > 0 and y > 0)
+def positive(xs, ys, keep_order=False):
+    pts = [(x, y) for x, y in zip(xs, ys) if x and y and x > 0 and y > 0]
+    pts = pts if keep_order else sorted(pts)
     return [p[0] for p in pts], [p[1] for p in pts]
 
 
@@ -57,15 +58,24 @@ def work_precision(directory, name, error, title):
     problems = list(grouped(rows, "problem"))
     fig, axes = plt.subplots(2, 2, figsize=(11, 8.5))
     for ax, problem in zip(axes.flat, problems):
+        exact = []
         for method, rs in grouped([r for r in rows if r["problem"] == problem], "method").items():
-            x, y = positive([num(r, "seconds") for r in rs], [num(r, error) for r in rs])
+            x, y = positive([num(r, "seconds") for r in rs], [num(r, error) for r in rs], keep_order=True)
             if x:
-                ax.loglog(x, y, "o-", ms=3, label=method)
+                label = method + (" (one point per nu)" if method.startswith("hopf_cole") and name == "wp_inviscid" else "")
+                ax.loglog(x, y, "o-", ms=3, label=label)
+            elif all(num(r, error) == 0 for r in rs):
+                exact += [(method, num(r, "seconds")) for r in rs]
+        if exact and ax.lines:
+            bottom = ax.get_ylim()[0]
+            ax.loglog([t for _, t in exact], [bottom * 1.3] * len(exact), "kv", ms=5,
+                      label=exact[0][0] + ": time only (error 0)")
         ax.set_title(f"{problem}: {title}")
         ax.set_xlabel("wall time, median of runs [s]")
         ax.set_ylabel(error)
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=6)
+        if ax.lines:
+            ax.legend(fontsize=6)
     save(fig, directory, name + ("" if error == "l1" else "_" + error))
 
 
@@ -151,7 +161,8 @@ def stability_viscous(directory):
         ax.set_xlabel("cells (h = 1/cells)")
         ax.set_ylabel("dt / (h^2 / 2 nu)")
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=6)
+        if ax.lines:
+            ax.legend(fontsize=6)
     save(fig, directory, "stability_viscous")
 
 
