@@ -89,6 +89,12 @@ void write_report(const fs::path& dir, const RunState& state) {
 
 }  // namespace
 
+std::string brief(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", value);
+  return buf;
+}
+
 std::string run_single(const Scene& scene, const fs::path& dir, const RunOptions& options) {
   std::error_code ec;
   fs::create_directories(dir, ec);

@@ -42,6 +42,9 @@ void run_analysis_stage(RunState& state);  // cooling law and velocity distribut
 void run_continuum_stage(RunState& state);
 void run_compare_stage(RunState& state);
 
+// A number for report.md: 4 significant digits ("nan" stays "nan").
+std::string brief(double value);
+
 // One scene (no sweep) into dir; returns dir.
 std::string run_single(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);
 // A [sweep] scene: each variant into dir/<k>-<label>/, the side-by-side table and plots into dir.

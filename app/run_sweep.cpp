@@ -49,7 +49,7 @@ void copy_series(const fs::path& variant_h5, Hdf5File& h5, const std::string& gr
 }
 
 std::string table_row(const std::string& label, const ordered_json* ours, const SweepParams& sweep, std::size_t k) {
-  std::string row = "| " + label + " | " + (ours && ours->is_number() ? to_text(ours->get<double>()) : "—");
+  std::string row = "| " + label + " | " + (ours && ours->is_number() ? brief(ours->get<double>()) : "—");
   if (!sweep.reference_values.empty())
     row += " | " + (sweep.reference_values[k].empty() ? std::string("—") : sweep.reference_values[k]);
   return row + " |";

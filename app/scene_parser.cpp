@@ -150,7 +150,8 @@ void validate_scene(const Scene& scene) {
   require(c.deposit == "ngp" || c.deposit == "cic", "compare.deposit", c.deposit, "\"ngp\" or \"cic\"");
   require(std::isfinite(c.match_distance) && c.match_distance >= 0, "compare.match_distance", c.match_distance,
           "a finite number >= 0");
-  require_above("compare.min_cluster_particles", c.min_cluster_particles, 0.0);
+  require(std::isfinite(c.min_cluster_particles) && c.min_cluster_particles >= 0, "compare.min_cluster_particles",
+          c.min_cluster_particles, "a finite number >= 0 (0 = automatic)");
   require(std::isfinite(c.cluster_gap) && c.cluster_gap >= 0, "compare.cluster_gap", c.cluster_gap,
           "a finite number >= 0");
   require(std::isfinite(c.cluster_dv) && c.cluster_dv >= 0, "compare.cluster_dv", c.cluster_dv,

@@ -39,16 +39,28 @@ void fit_cooling(RunState& state) {
   s["t_dissip_theory"] = cross.t_dissip_theory;
   s["t_stick_theory"] = cross.t_stick_theory;
   state.report.push_back("## Cooling law\n");
-  state.report.push_back("- T ~ t^a with a = " + to_text(fit.exponent) + " +- " + to_text(fit.exponent_error) +
-                         " on [" + to_text(fit.t_min) + ", " + to_text(fit.t_max) +
+  state.report.push_back("- T ~ t^a with a = " + brief(fit.exponent) + " +- " + brief(fit.exponent_error) +
+                         " on [" + brief(fit.t_min) + ", " + brief(fit.t_max) +
                          "] (sticky-gas regime theory: -2/3).");
-  state.report.push_back("- Crossovers read off d ln T / d ln t: t_dissip = " + to_text(cross.t_dissip) +
-                         " (theory ~ 1/eps = " + to_text(cross.t_dissip_theory) + "), t_stick = " +
-                         to_text(cross.t_stick) + " (theory ~ eps^(-3/2) = " + to_text(cross.t_stick_theory) +
+  state.report.push_back("- Crossovers read off d ln T / d ln t: t_dissip = " + brief(cross.t_dissip) +
+                         " (theory ~ 1/eps = " + brief(cross.t_dissip_theory) + "), t_stick = " +
+                         brief(cross.t_stick) + " (theory ~ eps^(-3/2) = " + brief(cross.t_stick_theory) +
                          "); NaN = not crossed in the sampled window.\n");
 }
 
 // Scaled distributions at the late half of the sample times (t >= compare.distribution_t_min).
+// Standard deviation of z under a scaled density (bins piecewise constant).
+double standard_deviation(const compare::ScaledDistribution& d) {
+  double w = 0, m1 = 0, m2 = 0;
+  for (std::size_t b = 0; b + 1 < d.z_edges.size(); ++b) {
+    const double z = 0.5 * (d.z_edges[b] + d.z_edges[b + 1]), p = d.density[b] * (d.z_edges[b + 1] - d.z_edges[b]);
+    w += p;
+    m1 += p * z;
+    m2 += p * z * z;
+  }
+  return w > 0 ? std::sqrt(std::max(0.0, m2 / w - (m1 / w) * (m1 / w))) : 0.0;
+}
+
 void measure_distribution(RunState& state) {
   const std::size_t bins = state.hist_z.size();
   if (bins < 4 || state.hist_t.empty()) return;
@@ -65,15 +77,28 @@ void measure_distribution(RunState& state) {
   if (late.size() < 2) return;
   auto& s = state.summary["compare"];
   s["velocity_collapse_distance"] = compare::collapse_distance(late);
-  const auto tail = compare::fit_tail_exponent(late.back(), 1.0);
-  s["velocity_tail_exponent"] = tail.exponent;
-  s["velocity_tail_exponent_error"] = tail.exponent_error;
   state.report.push_back("## Velocity distribution\n");
   state.report.push_back("- Collapse of P(v,t) t^(-1/3) against z = v t^(1/3) over " + std::to_string(late.size()) +
-                         " late times: mean L1 distance " + to_text(s["velocity_collapse_distance"].get<double>()) +
+                         " times in [" + brief(late.front().t) + ", " + brief(late.back().t) +
+                         "]: mean L1 distance " + brief(s["velocity_collapse_distance"].get<double>()) +
                          " (0 = perfect collapse, 2 = disjoint).");
-  state.report.push_back("- Tail ln Phi ~ -c |z|^a for |z| >= 1: a = " + to_text(tail.exponent) + " +- " +
-                         to_text(tail.exponent_error) + " (theory: 3).\n");
+  // The tail is fitted on the mean of the collapsed distributions (steadier than
+  // one time), beyond one standard deviation of z.
+  const auto mean = compare::mean_distribution(late);
+  const double z_min = standard_deviation(mean);
+  const auto tail = compare::fit_tail_exponent(mean, z_min);
+  s["velocity_tail_zmin"] = z_min;
+  if (tail.at_bound) {
+    s["velocity_tail_exponent"] = nullptr;
+    state.report.push_back("- Tail ln Phi ~ -c |z|^a for |z| >= " + brief(z_min) +
+                           ": not determined (the best a sits at the scan bound: too few or too noisy tail "
+                           "points; theory: 3).\n");
+    return;
+  }
+  s["velocity_tail_exponent"] = tail.exponent;
+  s["velocity_tail_exponent_error"] = tail.exponent_error;
+  state.report.push_back("- Tail ln Phi ~ -c |z|^a for |z| >= " + brief(z_min) + " (one standard deviation): a = " +
+                         brief(tail.exponent) + " +- " + brief(tail.exponent_error) + " (theory: 3).\n");
 }
 
 // An analysis that cannot be done on this run's data (too few samples in the

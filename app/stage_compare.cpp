@@ -1,5 +1,6 @@
 // Stage 3: shocks are clusters. The particle state and the continuum field at
 // the same time are compared (compare/snapshot_comparison.hpp).
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -16,12 +17,17 @@ using nlohmann::ordered_json;
 compare::SnapshotParams snapshot_params(const Scene& scene) {
   compare::SnapshotParams p;
   const double spacing = domain_length(scene.initial) / static_cast<double>(scene.initial.N);
+  const double t = scene.particles.t_end;
   p.clusters = scene.particles.r == 0 ? particles::merged_bodies_criteria()
-                                      : particles::default_cluster_criteria(scene.particles.delta, spacing);
+                                      : particles::default_cluster_criteria(scene.particles.delta, spacing, t);
   if (scene.compare.cluster_gap > 0) p.clusters.max_gap = scene.compare.cluster_gap;
   if (scene.compare.cluster_dv > 0) p.clusters.max_dv = scene.compare.cluster_dv;
   p.max_match_distance = scene.compare.match_distance;
-  p.min_cluster_particles = scene.compare.min_cluster_particles;
+  // Automatic: a tenth of the typical cluster mass t^(2/3) of the sticky regime
+  // (DESIGN.md §1), so that pairs of free particles do not count as clusters.
+  p.min_cluster_particles = scene.compare.min_cluster_particles > 0
+                                ? scene.compare.min_cluster_particles
+                                : std::max(2.0, 0.1 * std::pow(t, 2.0 / 3.0));
   p.deposit = compare::parse_deposit_scheme(scene.compare.deposit, "compare.deposit");
   return p;
 }
@@ -76,17 +82,17 @@ void summarize_snapshot(RunState& state, const compare::SnapshotComparison& c) {
   s["shock_count_ratio"] = c.shock_count_ratio;
   s["min_mass"] = c.min_mass;
   auto& rep = state.report;
-  rep.push_back("## Shocks and clusters at t = " + to_text(c.t) + " (solver `" + state.scene.compare.solver + "`)\n");
+  rep.push_back("## Shocks and clusters at t = " + brief(c.t) + " (solver `" + state.scene.compare.solver + "`)\n");
   rep.push_back("| figure of merit | value | theory / ideal |\n|---|---|---|");
-  rep.push_back("| shocks (mass >= " + to_text(c.min_mass) + ") | " + std::to_string(c.n_shocks) + " | N t^(-2/3) = " +
-                to_text(std::round(state.scene.initial.N * std::pow(c.t, -2.0 / 3.0))) + " (ratio " +
-                to_text(c.shock_count_ratio) + ") |");
-  rep.push_back("| clusters (mass >= " + to_text(c.min_mass) + ") | " + std::to_string(c.n_clusters) +
+  rep.push_back("| shocks (mass >= " + brief(c.min_mass) + ") | " + std::to_string(c.n_shocks) + " | N t^(-2/3) = " +
+                brief(std::round(state.scene.initial.N * std::pow(c.t, -2.0 / 3.0))) + " (ratio " +
+                brief(c.shock_count_ratio) + ") |");
+  rep.push_back("| clusters (mass >= " + brief(c.min_mass) + ") | " + std::to_string(c.n_clusters) +
                 " | = shocks |");
-  rep.push_back("| matched cluster mass fraction | " + to_text(c.match.matched_mass_fraction) + " | 1 |");
-  rep.push_back("| largest matched position error | " + to_text(c.match.max_position_error) + " | 0 |");
-  rep.push_back("| median sawtooth slope x t (continuum) | " + to_text(c.sawtooth.slope_times_t.median) + " | 1 |");
-  rep.push_back("| median sawtooth slope x t (particles) | " + to_text(c.particle_sawtooth.slope_times_t.median) +
+  rep.push_back("| matched cluster mass fraction | " + brief(c.match.matched_mass_fraction) + " | 1 |");
+  rep.push_back("| largest matched position error | " + brief(c.match.max_position_error) + " | 0 |");
+  rep.push_back("| median sawtooth slope x t (continuum) | " + brief(c.sawtooth.slope_times_t.median) + " | 1 |");
+  rep.push_back("| median sawtooth slope x t (particles) | " + brief(c.particle_sawtooth.slope_times_t.median) +
                 " | 1 |\n");
 }
 

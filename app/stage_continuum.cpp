@@ -60,15 +60,15 @@ void summarize(RunState& state, const ContinuumResult& r, const ContinuumResult*
   for (const auto& [k, v] : r.stats) s["stats"][k] = v;
   if (r.has_shocks) s["n_shocks"] = r.shocks.size();
   if (!r.rho.empty()) s["mass_drift"] = total(r.rho, r.length) / mass0 - 1;  // 0 up to rounding if conserved
-  std::string line = "- `" + r.solver + "`: " + std::to_string(r.x.size()) + " cells, " + to_text(r.wall_seconds) +
+  std::string line = "- `" + r.solver + "`: " + std::to_string(r.x.size()) + " cells, " + brief(r.wall_seconds) +
                      " s";
   if (exact && exact != &r && exact->v.size() == r.v.size()) {
     const double dx = r.length / static_cast<double>(r.v.size());
     s["l1_error_v"] = l1_distance(r.v, exact->v, dx);
-    line += "; L1 distance to the exact Hopf-Lax solution: v " + to_text(s["l1_error_v"].get<double>());
+    line += "; L1 distance to the exact Hopf-Lax solution: v " + brief(s["l1_error_v"].get<double>());
     if (r.rho.size() == exact->rho.size()) {
       s["l1_error_rho"] = l1_distance(r.rho, exact->rho, dx);
-      line += ", rho " + to_text(s["l1_error_rho"].get<double>());
+      line += ", rho " + brief(s["l1_error_rho"].get<double>());
     }
   }
   if (!r.method_note.empty()) line += " (" + r.method_note + ")";
@@ -90,7 +90,7 @@ void run_continuum_stage(RunState& state) {
   const ContinuumResult* exact = nullptr;
   for (const auto& r : state.continuum)
     if (r.solver == "hopf_lax") exact = &r;
-  state.report.push_back("## Continuum at t = " + to_text(t_end) + "\n");
+  state.report.push_back("## Continuum at t = " + brief(t_end) + "\n");
   for (const auto& r : state.continuum) {
     write_result(state.h5, r, scene.output.fields);
     summarize(state, r, exact, mass0);

@@ -93,14 +93,14 @@ void summarize(RunState& state, const EnsembleResult& e) {
     s["n_bodies_final"] = e.n_bodies.mean.back();
   }
   state.report.push_back("## Particles\n");
-  state.report.push_back("- " + std::to_string(state.scene.initial.N) + " particles, r = " + to_text(p.r) +
-                         ", delta = " + to_text(p.delta) + " (" + p.subthreshold + " below it), " +
+  state.report.push_back("- " + std::to_string(state.scene.initial.N) + " particles, r = " + brief(p.r) +
+                         ", delta = " + brief(p.delta) + " (" + p.subthreshold + " below it), " +
                          std::to_string(p.realizations) + " realization(s), solver `" + p.solver + "`.");
-  state.report.push_back("- " + std::to_string(e.total_collisions) + " collisions in " + to_text(e.wall_seconds) +
-                         " s (" + to_text(std::round(s["collisions_per_second"].get<double>())) + " per second).");
-  state.report.push_back("- Run ended: " + to_string(e.first.stop.reason) + " at t = " + to_text(e.first.stop.time) +
+  state.report.push_back("- " + std::to_string(e.total_collisions) + " collisions in " + brief(e.wall_seconds) +
+                         " s (" + brief(std::round(s["collisions_per_second"].get<double>())) + " per second).");
+  state.report.push_back("- Run ended: " + to_string(e.first.stop.reason) + " at t = " + brief(e.first.stop.time) +
                          (e.first.stop.reason == particles::StopReason::collapse
-                              ? " (inelastic collapse at x = " + to_text(e.first.stop.position) + ")"
+                              ? " (inelastic collapse at x = " + brief(e.first.stop.position) + ")"
                               : "") +
                          ".\n");
 }

@@ -18,8 +18,8 @@ struct CompareParams {
   std::string deposit = "cic";       // particles -> grid: "ngp" (nearest cell) | "cic" (cloud in cell)
   double distribution_t_min = 10.0;  // scaled velocity distributions compared at sample times >= this [time]
   double match_distance = 0.0;       // max shock-cluster distance for a match [length]; 0 = automatic
-  double min_cluster_particles = 2;  // clusters and shocks lighter than this many mean particle
-                                     // masses are not counted [1]
+  double min_cluster_particles = 0;  // clusters and shocks lighter than this many mean particle
+                                     // masses are not counted [1]; 0 = max(2, t^(2/3) / 10)
   double cluster_gap = 0.0;          // max gap inside a cluster [length]; 0 = derived from delta
   double cluster_dv = 0.0;           // max relative velocity inside a cluster [length/time]; 0 = derived
   double fit_window = 10.0;          // late window of the T(t) fit: [t_end / fit_window, t_end], > 1
