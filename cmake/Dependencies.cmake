@@ -2,11 +2,14 @@
 # configure step with one line naming the package; `scripts/setup` installs them all.
 find_package(PkgConfig QUIET)
 if(NOT PkgConfig_FOUND)
-  message(FATAL_ERROR "shockgas: pkg-config not found -- install the Debian package 'pkg-config' (or run scripts/setup)")
+  message(NOTICE "shockgas: pkg-config not found -- install the Debian package 'pkg-config' (or run scripts/setup)")
+  message(FATAL_ERROR "missing dependency: pkg-config")
 endif()
 
+# One unwrapped line naming the package, then the stop.
 function(shockgas_missing what package)
-  message(FATAL_ERROR "shockgas: ${what} not found -- install the Debian package '${package}' (or run scripts/setup)")
+  message(NOTICE "shockgas: ${what} not found -- install the Debian package '${package}' (or run scripts/setup)")
+  message(FATAL_ERROR "missing dependency: ${package}")
 endfunction()
 
 pkg_check_modules(FFTW3 QUIET IMPORTED_TARGET fftw3)
