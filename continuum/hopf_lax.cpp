@@ -344,28 +344,6 @@ std::size_t hopf_lax_samples(std::size_t cells, const HopfLaxOptions& options) {
 
 namespace {
 
-// Point masses: the sticky gas is the exact solution; its clusters of two or
-// more bodies are the shocks.
-ContinuumResult solve_bodies(const InitialField& f, std::size_t cells, double t) {
-  const Bodies& b = f.bodies;
-  const std::vector<StickyCluster> clusters = sticky_clusters_ring(b, f.length, t);
-  InitialField state;
-  state.length = f.length;
-  state.bodies = to_bodies(clusters);
-  const CellAverages a = cell_averages(state, cells);
-  ContinuumResult r;
-  r.v = a.v;
-  r.rho = a.rho;
-  for (const StickyCluster& c : clusters) {
-    if (c.count < 2) continue;
-    const std::size_t last = (c.first + c.count - 1) % b.size();
-    r.shocks.push_back({c.x, c.m, b.v[last] - b.v[c.first], c.v});
-  }
-  r.method_note = "exact: sticky-particle hull of " + std::to_string(b.size()) + " point masses";
-  r.stats = {{"bodies", static_cast<double>(b.size())}, {"clusters", static_cast<double>(clusters.size())}};
-  return r;
-}
-
 ContinuumResult solve_field(const InitialField& f, std::size_t cells, double t, const HopfLaxOptions& o) {
   const HopfLaxSolution s(f, t, hopf_lax_samples(cells, o));
   const CellAverages a = s.cell_averages(cells);
@@ -390,7 +368,7 @@ void check_grid(const InitialField& f, std::size_t cells, double t) {
 ContinuumResult solve_hopf_lax(const InitialField& f, std::size_t cells, double t,
                                const HopfLaxOptions& options) {
   check_grid(f, cells, t);
-  ContinuumResult r = f.from_bodies() ? solve_bodies(f, cells, t) : solve_field(f, cells, t, options);
+  ContinuumResult r = f.from_bodies() ? hopf_lax_point_masses(f, cells, t) : solve_field(f, cells, t, options);
   r.solver = "hopf_lax";
   r.t = t;
   r.length = f.length;
@@ -403,7 +381,7 @@ CellAverages exact_cell_averages(const InitialField& f, std::size_t cells, doubl
                                  const HopfLaxOptions& options) {
   check_grid(f, cells, t);
   if (f.from_bodies()) {
-    const ContinuumResult r = solve_bodies(f, cells, t);
+    const ContinuumResult r = hopf_lax_point_masses(f, cells, t);
     return {r.v, r.rho};
   }
   return HopfLaxSolution(f, t, hopf_lax_samples(cells, options)).cell_averages(cells);

@@ -22,7 +22,8 @@
 // nodes q_j = j L / n and treating each sample interval as a body of "mass" L/n at
 // its midpoint with the interval's mean velocity gives cumulative points that are
 // exactly (q_j, g(q_j)); one period of them goes through sticky_clusters_ring.
-// For point-mass data the solution is the sticky gas itself.
+// For point-mass data the shocks are the sticky gas's clusters and the ramps
+// between them have slope 1/t (hopf_lax_point_masses).
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -129,9 +130,7 @@ class HopfLaxSolution {
 
 // The exact solution on `cells` cells of [0, f.length) at time t: cell averages
 // of v and rho, and the shocks (has_shocks = true). Pointwise data go through
-// HopfLaxSolution; point masses (f.bodies) through sticky_clusters_ring, whose
-// clusters are deposited on the grid as in cell_averages() and whose clusters of
-// two or more bodies are the shocks (jump = u_last - u_first of their members).
+// HopfLaxSolution, point masses (f.bodies) through hopf_lax_point_masses.
 ContinuumResult solve_hopf_lax(const InitialField& f, std::size_t cells, double t,
                                const HopfLaxOptions& options = {});
 
@@ -139,6 +138,24 @@ ContinuumResult solve_hopf_lax(const InitialField& f, std::size_t cells, double 
 // of the finite-volume schemes.
 CellAverages exact_cell_averages(const InitialField& f, std::size_t cells, double t,
                                  const HopfLaxOptions& options = {});
+
+// The exact adhesion field of point masses f.bodies on the ring [0, f.length)
+// at time t (the fields and shocks of solve_hopf_lax; solver, t, x left unset).
+// Body i is the mass of its Lagrangian cell, the interval between the midpoints
+// to its ring neighbours; a cluster of the sticky gas (sticky_clusters_ring:
+// position, velocity = momentum / mass and mass unchanged) owns the union
+// [q_L, q_R] of its bodies' cells. Between clusters lies vacuum whose
+// Lagrangian preimage is the one boundary q_b between them, so there
+//     v(x, t) = (x - q_b) / t        (slope exactly 1/t; DESIGN.md §1),
+// and at a cluster v jumps by (q_L - q_R) / t. Cell averages: <v> integrates the
+// ramps exactly; rho = the clusters' masses / dx in the cell [i dx, (i+1) dx)
+// holding them (one exactly on an edge: the cell on its right), 0 in vacuum.
+// Shocks: the clusters of two or more bodies, jump (q_L - q_R) / t, velocity
+// the cluster's. At t = 0 the fields are the deposit cell_averages(f, cells).
+// O(N + cells). For lattice bodies with unit masses and data v0 = u_i on the
+// bodies' cells this is the Hopf-Lax field of that v0 once no body's cell is
+// split between a shock and a ramp.
+ContinuumResult hopf_lax_point_masses(const InitialField& f, std::size_t cells, double t);
 
 // Samples per period that solve_hopf_lax uses for `cells` cells.
 std::size_t hopf_lax_samples(std::size_t cells, const HopfLaxOptions& options = {});
