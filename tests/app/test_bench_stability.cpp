@@ -62,6 +62,21 @@ TEST(BenchStability, CollapseDetectedForThreeParticlesAtSmallR) {
   EXPECT_NEAR(collapse_particles_predicted(0.9), std::log(10.0) / 0.1, 1e-9);      // -ln(1-r)/(1-r)
 }
 
+TEST(BenchStability, MinmodMusclHancockIsTvdUpToOne) {
+  // Minmod keeps MUSCL-Hancock TVD up to Courant number 1 on this problem (the
+  // bench finds the steeper limiters failing earlier: docs/performance.md).
+  const auto lim = cfl_limit(cfl_scan(problem_by_name("sine_post"), "godunov2", "minmod", 128, {0.9, 1.0, 1.1, 1.2}));
+  EXPECT_EQ(lim.last_stable, 1.0);
+  EXPECT_GT(lim.first_failed, 1.0);
+}
+
+TEST(BenchStability, CollapseDetectedOnARingAboveTheCriticalSize) {
+  // r = 0.5: McNamara-Young N_c ~ 1.4; random ring data collapse from N ~ 12
+  // (the bench's scan), and 3 particles on a ring do not within t = 1000.
+  EXPECT_EQ(ring_stop(64, 0.5, 100, 1000.0).reason, particles::StopReason::collapse);
+  EXPECT_EQ(ring_stop(3, 0.5, 100, 1000.0).reason, particles::StopReason::completed);
+}
+
 TEST(BenchStability, CsvWritesNonFiniteAsEmptyCell) {
   const std::string path = (std::filesystem::temp_directory_path() / "shockgas_bench_csv_test.csv").string();
   {
