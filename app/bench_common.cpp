@@ -93,18 +93,36 @@ Norms error_norms(const std::vector<double>& a, const std::vector<double>& b, do
   return n;
 }
 
-double shock_position_error(const std::vector<double>& v, const std::vector<double>& exact, double length,
-                            double x_s, double jump, double half_width) {
+namespace {
+
+// Signed periodic offset of x from x_s, in (-length/2, length/2].
+double offset(double x, double x_s, double length) {
+  double d = std::fmod(x - x_s, length);
+  if (d > length / 2) d -= length;
+  if (d <= -length / 2) d += length;
+  return d;
+}
+
+// Offset from x_s of the downward crossing of v_mid nearest to x_s; NaN if none.
+double crossing(const std::vector<double>& v, double length, double x_s, double v_mid, double half_width) {
   const std::size_t n = v.size();
   const double h = length / static_cast<double>(n);
-  double sum = 0;
+  double best = NAN;
   for (std::size_t i = 0; i < n; ++i) {
-    const double x = (static_cast<double>(i) + 0.5) * h;
-    double d = std::abs(x - x_s);
-    d = std::min(d, length - d);  // periodic distance
-    if (d <= half_width) sum += (v[i] - exact[i]) * h;
+    const double a = v[i], b = v[(i + 1) % n];
+    if (!(a >= v_mid && b < v_mid)) continue;
+    const double x = (static_cast<double>(i) + 0.5 + (a - v_mid) / (a - b)) * h;
+    const double d = offset(x, x_s, length);
+    if (std::abs(d) <= half_width && !(std::abs(d) >= std::abs(best))) best = d;
   }
-  return std::abs(sum) / std::abs(jump);
+  return best;
+}
+
+}  // namespace
+
+double shock_position_error(const std::vector<double>& v, const std::vector<double>& exact, double length,
+                            double x_s, double v_mid, double half_width) {
+  return std::abs(crossing(v, length, x_s, v_mid, half_width) - crossing(exact, length, x_s, v_mid, half_width));
 }
 
 std::string fmt(double value, int digits) {

@@ -73,12 +73,14 @@ struct Norms {
 };
 Norms error_norms(const std::vector<double>& a, const std::vector<double>& b, double h);
 
-// Shock-position error from cell averages: over the cells within `half_width` of
-// the exact shock x_s (periodic domain of `length`), |sum (v - v_exact) h| / |jump|
-// is how far the numerical shock sits from x_s (a shock displaced by d moves
-// d |jump| of velocity across x_s). Exact for an isolated shock.
+// Shock-position error from cell averages: where the profile v falls through
+// v_mid (the mean of the shock's two sides, which for Burgers is the shock
+// speed), interpolated linearly between cell centres, nearest to the exact shock
+// x_s within half_width (periodic domain of `length`), against the same crossing
+// of the exact cell averages (so that the exact solver scores 0). NaN if either
+// profile has no such crossing in the window.
 double shock_position_error(const std::vector<double>& v, const std::vector<double>& exact, double length,
-                            double x_s, double jump, double half_width);
+                            double x_s, double v_mid, double half_width);
 
 // Short text for numbers in messages ("1.5e-03").
 std::string fmt(double value, int digits = 3);

@@ -77,6 +77,17 @@ TEST(BenchStability, CollapseDetectedOnARingAboveTheCriticalSize) {
   EXPECT_EQ(ring_stop(3, 0.5, 100, 1000.0).reason, particles::StopReason::completed);
 }
 
+TEST(BenchCommon, ShockPositionErrorIsTheShiftOfTheCrossing) {
+  // A step 1 -> 0 at x = 0.5 on 16 cells, and the same step one cell later: the
+  // crossing of v_mid = 0.5 moves by exactly one cell width (linear interpolation).
+  std::vector<double> exact(16, 0.0), shifted(16, 0.0);
+  for (std::size_t i = 0; i < 8; ++i) exact[i] = 1.0;
+  for (std::size_t i = 0; i < 9; ++i) shifted[i] = 1.0;
+  EXPECT_NEAR(shock_position_error(shifted, exact, 1.0, 0.5, 0.5, 0.1), 1.0 / 16, 1e-15);
+  EXPECT_EQ(shock_position_error(exact, exact, 1.0, 0.5, 0.5, 0.1), 0.0);
+  EXPECT_TRUE(std::isnan(shock_position_error(exact, exact, 1.0, 0.1, 0.5, 0.1)));  // no crossing near x = 0.1
+}
+
 TEST(BenchStability, CsvWritesNonFiniteAsEmptyCell) {
   const std::string path = (std::filesystem::temp_directory_path() / "shockgas_bench_csv_test.csv").string();
   {
