@@ -45,7 +45,7 @@ void fit_cooling(RunState& state) {
   state.report.push_back("- Crossovers read off d ln T / d ln t: t_dissip = " + brief(cross.t_dissip) +
                          " (theory ~ 1/eps = " + brief(cross.t_dissip_theory) + "), t_stick = " +
                          brief(cross.t_stick) + " (theory ~ eps^(-3/2) = " + brief(cross.t_stick_theory) +
-                         "); NaN = not crossed in the sampled window.\n");
+                         "); nan = the local exponent never reaches the t^-2 regime (none for moderately inelastic gases, e.g. r = 0.5) or the crossover is outside the sampled window.\n");
 }
 
 // Scaled distributions at the late half of the sample times (t >= compare.distribution_t_min).

@@ -28,8 +28,10 @@ std::vector<Extent> eligible_cluster_extents(const Bodies& state, double L,
   return extents;
 }
 
-// 1 where a cell holds mass, 0 where it is empty: an empty cell's velocity is an
-// interpolation (deposits, the point-mass path of the exact solver), not data.
+// 1 where a cell holds mass, 0 where it is empty: an empty cell's velocity in a
+// particle deposit is an interpolation, not data. (A continuum field's velocity
+// is data everywhere, vacuum included: the exact solver's vacuum carries the
+// ramp (x - q)/t, so continuum fits use every cell.)
 std::vector<double> occupied(const std::vector<double>& mass_or_density) {
   std::vector<double> w(mass_or_density.size());
   for (std::size_t i = 0; i < w.size(); ++i) w[i] = mass_or_density[i] > 0 ? 1.0 : 0.0;
@@ -56,8 +58,7 @@ SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const co
   c.n_shocks = c.match.eligible_shocks;
   c.n_clusters = c.match.eligible_clusters;
   c.sawtooth = fit_sawtooth_slopes(field.v, L, field.t, eligible_shock_positions(c.shocks, c.min_mass),
-                                   params.sawtooth, field.rho.size() == field.v.size() ? occupied(field.rho)
-                                                                                      : std::vector<double>{});
+                                   params.sawtooth);
   c.particle_sawtooth = fit_sawtooth_between(c.particle_fields.v, L, field.t,
                                              eligible_cluster_extents(state, L, c.clusters, c.min_mass),
                                              params.sawtooth, occupied(c.particle_fields.mass));
