@@ -18,9 +18,12 @@ import sys
 def lookup(summary, dotted):
     node = summary
     for part in dotted.split("."):
-        if not isinstance(node, dict) or part not in node:
+        if isinstance(node, list) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]  # "variants.0.summary..." in a sweep's summary
+        elif isinstance(node, dict) and part in node:
+            node = node[part]
+        else:
             raise KeyError(dotted)
-        node = node[part]
     return node
 
 
