@@ -134,8 +134,8 @@ void cfl_stability(const Context& ctx, FailureLog& failures) {
                    {"problem", "method", "predicted", "last_stable", "first_failed"});
   const std::size_t cells = ctx.full ? 1024 : 256;
   const std::vector<double> cfls = ctx.full
-      ? std::vector<double>{0.5, 0.8, 0.9, 0.95, 0.98, 1.0, 1.02, 1.05, 1.1, 1.2, 1.3, 1.5, 2.0}
-      : std::vector<double>{0.5, 0.8, 0.9, 0.95, 1.0, 1.05, 1.1, 1.2, 1.5, 2.0};
+      ? std::vector<double>{0.5, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95, 0.98, 1.0, 1.02, 1.05, 1.1, 1.2, 1.3, 1.5, 2.0}
+      : std::vector<double>{0.5, 0.8, 0.85, 0.9, 0.95, 1.0, 1.05, 1.1, 1.2, 1.5, 2.0};
   for (const Problem& pb : {problem_by_name("sine_post"), problem_by_name("noise")}) {
     for (std::string limiter : {"", "minmod", "vanleer", "mc"}) {
       const std::string method = limiter.empty() ? "godunov" : "godunov2 (" + limiter + ")";
