@@ -28,7 +28,8 @@ struct RunState {
 
   // Filled by the stages, read by later ones.
   Bodies initial_bodies;                                 // realization 0
-  std::optional<Bodies> final_bodies;                    // particles at t_end (realization 0)
+  std::optional<Bodies> final_bodies;                    // particles at final_time (realization 0)
+  double final_time = 0;                                 // t_end, or earlier if the run stopped early
   std::vector<double> t_series, T_series;                // ensemble-mean T(t)
   std::vector<double> hist_z, hist_t, hist_density;      // ensemble-mean scaled histogram (rows: t)
   std::vector<continuum::ContinuumResult> continuum;     // one per solver

@@ -6,6 +6,7 @@
 
 #include "run_state.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
+#include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -98,9 +99,21 @@ void summarize_snapshot(RunState& state, const compare::SnapshotComparison& c) {
 
 }  // namespace
 
+// Both models at one time: if the particles stopped before t_end (a collapse, a
+// limit), the compared solver is run again to the time they reached.
+continuum::ContinuumResult field_at_particle_time(RunState& state) {
+  const auto& field = compared_field(state);
+  if (state.final_time >= field.t) return field;
+  state.report.push_back("- The particles stopped at t = " + brief(state.final_time) + " < t_end: `" + field.solver +
+                         "` is compared at that time.\n");
+  state.summary["compare"]["note"] = "particles stopped early; continuum re-run to their final time";
+  const InitialField initial = make_initial_field(state.scene.initial, 0);
+  return continuum::solve(field.solver, initial, state.scene.continuum, state.final_time);
+}
+
 void run_compare_stage(RunState& state) {
   if (!state.final_bodies) throw RunError("compare: the particles did not run");
-  const auto& field = compared_field(state);
+  const auto field = field_at_particle_time(state);
   const auto c = compare::compare_snapshot(*state.final_bodies, state.scene.initial.N, field, snapshot_params(state.scene));
   write_snapshot(state.h5, c);
   summarize_snapshot(state, c);

@@ -120,6 +120,7 @@ void run_particles_stage(RunState& state) {
   if (stop.reason == particles::StopReason::collapse) state.h5.set_attribute("/particles", "collapse_x", stop.position);
   summarize(state, e);
   state.final_bodies = e.first.final_state;
+  state.final_time = e.first.stop.time;
   state.t_series = e.t;
   state.T_series = e.T.mean;
   if (e.first.histogram.bins > 0) {
