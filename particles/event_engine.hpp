@@ -31,8 +31,9 @@
 
 namespace shockgas::particles::detail {
 
-// Why run_until returned.
-enum class EngineStop { reached, collapse, halted };
+// Why run_until returned. stall: delta > 0 (or r = 0, 1), where no collapse is
+// possible, but time stopped advancing anyway (see run_until).
+enum class EngineStop { reached, collapse, stall, halted };
 
 template <bool Linked>
 class EventEngine {
@@ -42,6 +43,11 @@ class EventEngine {
   static constexpr std::uint64_t check_every = 1u << 14;
   // Consecutive collisions without time advancing that mean inelastic collapse.
   static constexpr int stall_limit = 256;
+  // Consecutive collisions at exactly the same time that mean a rounding stall
+  // when no collapse is possible: legitimate bursts (a multi-body contact of k
+  // bodies at one point resolves in ~k^2 / 2 collisions) stay far below, and
+  // 2^24 collisions take about a second.
+  static constexpr int frozen_limit = 1 << 24;
 
   // initial: sorted by x (ring: inside [0, L)); all masses equal unless Linked.
   EventEngine(const Bodies& initial, double L, bool ring, const CollisionRule& rule)
@@ -63,29 +69,46 @@ class EventEngine {
     tree_.reset(n_);
     for (std::size_t i = 0; i < n_; ++i) tree_.set(i, pair_time(i));
     tree_.rebuild();
+    // Inelastic collapse needs inelastic collisions at arbitrarily small approach
+    // speeds: delta = 0 and 0 < r < 1.
+    const bool collapse_possible = rule_.delta == 0.0 && rule_.r > 0.0 && rule_.r < 1.0;
+    step_scale_ = collapse_possible ? 1e-12 : 0.0;
+    window_scale_ = collapse_possible ? 1e-10 : -1.0;
+    step_limit_ = collapse_possible ? stall_limit : frozen_limit;
   }
 
   // Processes every collision at time <= t_stop; then now() = t_stop unless
   // stopped early. watch(now, collisions) is called every check_every collisions
   // and returns false to halt.
   //
-  // Inelastic collapse (delta = 0, r < 1): a few bodies collide ever faster, the
-  // gaps fall below rounding and the contact times stop advancing; left alone,
+  // Inelastic collapse (delta = 0, 0 < r < 1): a few bodies collide ever faster,
+  // the gaps fall below rounding and the contact times stop advancing; left alone,
   // rounding would eventually let the bodies escape with meaningless velocities.
   // Detected as `stall_limit` consecutive collisions that advance time by less
   // than 1e-12 max(1, t), or a window of check_every collisions advancing it by
   // less than 1e-10 max(1, t).
+  //
+  // With a threshold (delta > 0) there is no collapse: every collision either
+  // dissipates at least (1 - r^2) mu delta^2 / 2 or is sub-threshold (a merge, or
+  // an elastic bounce that sorts the velocities of bodies in contact), so only
+  // finitely many collisions happen at any instant. Dense clusters do squeeze
+  // their gaps to rounding level, and then hundreds of collisions legitimately
+  // fall within 1e-12 t (a gap of one ulp of x closed at speed ~delta); those are
+  // resolved, not stopped. Only `frozen_limit` consecutive collisions at exactly
+  // the same time stop the run, as EngineStop::stall, so that no rounding
+  // accident can hang it.
   template <class Watch>
   EngineStop run_until(double t_stop, Watch&& watch) {
     while (tree_.top_time() <= t_stop) {
       const std::size_t i = tree_.top();
       prefetch(i);
       const double t = tree_.top_time();
-      stall_ = t - now_ <= 1e-12 * std::max(1.0, std::abs(now_)) ? stall_ + 1 : 0;
-      if (stall_ >= stall_limit) return EngineStop::collapse;
+      stall_ = t - now_ <= step_scale_ * std::max(1.0, std::abs(now_)) ? stall_ + 1 : 0;
+      if (stall_ >= step_limit_) return step_scale_ > 0 ? EngineStop::collapse : EngineStop::stall;
       collide(i);
       if ((++count_[3] & (check_every - 1)) == 0) {
-        if (now_ - window_start_ <= 1e-10 * std::max(1.0, std::abs(now_))) return EngineStop::collapse;
+        if (now_ - window_start_ <= window_scale_ * std::max(1.0, std::abs(now_)))
+          return EngineStop::collapse;
         window_start_ = now_;
         if (!watch(now_, count_[3])) return EngineStop::halted;
       }
@@ -160,7 +183,9 @@ class EventEngine {
     const double g = a.v - c.v;
     const double tm = std::max(a.t, c.t);
     const double gap = (c.x + c.v * (tm - c.t) + shift) - (a.x + a.v * (tm - a.t));
-    const double t = tm + std::max(gap, 0.0) / g;
+    // Never before now: a gap closed by rounding is a contact now, so time never
+    // runs backwards.
+    const double t = std::max(tm + std::max(gap, 0.0) / g, now_);
     return g > 0 ? t : EventTree::never;
   }
 
@@ -234,7 +259,10 @@ class EventEngine {
   EventTree tree_;
   double now_ = 0.0;
   double window_start_ = 0.0;
-  int stall_ = 0;
+  int stall_ = 0;            // consecutive collisions advancing time by <= step_scale_ max(1, t)
+  double step_scale_ = 0;    // 1e-12 if collapse is possible, else 0 (exactly frozen)
+  double window_scale_ = 0;  // 1e-10 if collapse is possible, else -1 (never)
+  int step_limit_ = 0;       // stall_limit or frozen_limit
   double last_x_ = 0.0;
   double dissipated_ = 0.0;
   std::array<std::uint64_t, 4> count_{};  // inelastic, elastic, merge, all

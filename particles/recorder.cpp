@@ -160,7 +160,8 @@ double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }
 RunResult Recorder::finish(const ChainState& final_state, const RunStop& stop, const Counters& c) {
   out_.final_state = sorted_bodies(final_state, L_, ring_);
   out_.stop = stop;
-  out_.stop.position = stop.reason == StopReason::collapse ? wrap(stop.position) : 0.0;
+  out_.stop.position =
+      stop.reason == StopReason::collapse || stop.reason == StopReason::stall ? wrap(stop.position) : 0.0;
   out_.collisions = c.all;
   return std::move(out_);
 }

@@ -21,6 +21,8 @@ std::string to_string(StopReason reason) {
       return "event_limit";
     case StopReason::wall_limit:
       return "wall_limit";
+    case StopReason::stall:
+      return "rounding_stall";
   }
   return "unknown";
 }
@@ -104,6 +106,7 @@ RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleP
     const detail::EngineStop s = engine.run_until(t, watch);
     if (s == detail::EngineStop::collapse)
       stop = {StopReason::collapse, engine.now(), engine.last_position()};
+    if (s == detail::EngineStop::stall) stop = {StopReason::stall, engine.now(), engine.last_position()};
     if (s == detail::EngineStop::halted) stop = {watch.reason, engine.now(), 0.0};
     if (s != detail::EngineStop::reached) break;
     recorder.observe(t, chain_state(engine, t), counters(engine));

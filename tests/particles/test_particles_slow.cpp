@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "hull_agreement.hpp"
 #include "shockgas/core/initial_condition.hpp"
@@ -41,6 +42,32 @@ TEST(ConservationSlow, MomentumOverTenMillionCollisions) {
   // 1e7 collisions gives ~3e-13; 1e-9 would catch any systematic error.
   EXPECT_NEAR(total_momentum(out.final_state), total_momentum(b), 1e-9);
 }
+
+// The paper's Fig. 2 (small) at delta = 10^-3: N = 10^4, r = 0.9 to t = 10^4,
+// realization 0 of seed 1999. Dense clusters there collide hundreds of times within
+// 1e-12 t (sticky: from t ~ 5600, 7.3e5 collisions; elastic: 9.2e7 collisions), once
+// stopped as a false collapse. A threshold forbids collapse: the run must complete.
+void expect_fig2_threshold_completes(const std::string& subthreshold) {
+  InitialParams ip;
+  ip.N = 10000;
+  ip.seed = 1999;
+  ParticleParams p;
+  p.r = 0.9;
+  p.delta = 1e-3;
+  p.subthreshold = subthreshold;
+  p.t_end = 1e4;
+  p.samples = 10;
+  p.clusters = false;
+  const Bodies b = make_initial_bodies(ip, 0);
+  const RunResult out = simulate(b, 1e4, p);
+  EXPECT_EQ(out.stop.reason, StopReason::completed);
+  EXPECT_EQ(out.stop.time, 1e4);
+  // Momentum random walk of roundings (~1e-16 per collision, <= 10^8 collisions): ~1e-12.
+  EXPECT_NEAR(total_momentum(out.final_state), total_momentum(b), 1e-9);
+}
+
+TEST(ThresholdSlow, Fig2StickyDoesNotFalselyCollapse) { expect_fig2_threshold_completes("sticky"); }
+TEST(ThresholdSlow, Fig2ElasticDoesNotFalselyCollapse) { expect_fig2_threshold_completes("elastic"); }
 
 // Least-squares slope of log T against log t over t in [t0, t1].
 double temperature_exponent(const TimeSeries& s, double t0, double t1) {

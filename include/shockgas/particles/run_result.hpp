@@ -66,13 +66,15 @@ enum class StopReason : std::uint8_t {
   collapse,     // inelastic collapse (delta = 0, 0 < r < 1): time stopped advancing
   event_limit,  // params.max_collisions reached
   wall_limit,   // params.max_wall_seconds reached
+  stall,        // no collapse is possible (delta > 0, or r = 0 or 1), yet time stopped
+                // advancing through rounding (2^24 collisions at one time); not physics
 };
 std::string to_string(StopReason reason);
 
 struct RunStop {
   StopReason reason = StopReason::completed;
   double time = 0;      // simulated time reached [time] (collapse: the collapse time)
-  double position = 0;  // collapse: where (ring: in [0, L)); else 0 [length]
+  double position = 0;  // collapse or stall: where (ring: in [0, L)); else 0 [length]
 };
 
 struct RunResult {
