@@ -15,10 +15,10 @@ namespace {
 
 using nlohmann::ordered_json;
 
-compare::SnapshotParams snapshot_params(const Scene& scene) {
+// t: the time of the compared states.
+compare::SnapshotParams snapshot_params(const Scene& scene, double t) {
   compare::SnapshotParams p;
   const double spacing = domain_length(scene.initial) / static_cast<double>(scene.initial.N);
-  const double t = scene.particles.t_end;
   p.clusters = scene.particles.r == 0 ? particles::merged_bodies_criteria()
                                       : particles::default_cluster_criteria(scene.particles.delta, spacing, t);
   if (scene.compare.cluster_gap > 0) p.clusters.max_gap = scene.compare.cluster_gap;
@@ -114,7 +114,7 @@ continuum::ContinuumResult field_at_particle_time(RunState& state) {
 void run_compare_stage(RunState& state) {
   if (!state.final_bodies) throw RunError("compare: the particles did not run");
   const auto field = field_at_particle_time(state);
-  const auto c = compare::compare_snapshot(*state.final_bodies, state.scene.initial.N, field, snapshot_params(state.scene));
+  const auto c = compare::compare_snapshot(*state.final_bodies, state.scene.initial.N, field, snapshot_params(state.scene, field.t));
   write_snapshot(state.h5, c);
   summarize_snapshot(state, c);
 }
