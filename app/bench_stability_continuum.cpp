@@ -1,5 +1,5 @@
-// Stability scans of the continuum methods (bench_stability.hpp):
-//  (the Courant-number scan of the finite-volume schemes: bench_stability_cfl.cpp)
+// Stability scans of the continuum methods (bench_stability.hpp); the
+// Courant-number scan of the finite-volume schemes is bench_stability_cfl.cpp.
 //  * stability_viscous.csv: explicit viscous Burgers against nu, dx and dt (predicted
 //    dt <= h^2/2nu / (1 + |v| h/2nu), explicit_viscous.hpp), next to CVODE and ARKODE
 //    at the same nu and dx (no step limit: their mean step against h^2/2nu);
