@@ -15,15 +15,18 @@ std::string comment(const KeySpec& spec) {
   return c + ". Allowed: " + spec.allowed + ".";
 }
 
+// A table whose presence changes what runs ([sweep]) is printed commented out
+// unless the scene has it, so that the printed text runs what the scene runs.
 std::string print_tables(const Scene& scene, bool with_comments) {
   std::ostringstream out;
   for (const auto& table : scene_tables()) {
+    const std::string off = table.name == "sweep" && !scene.has_sweep ? "# " : "";
     if (with_comments) out << "\n# " << table.doc << "\n";
-    out << "[" << table.name << "]\n";
+    out << off << "[" << table.name << "]\n";
     for (const auto& spec : scene_schema()) {
       if (spec.table != table.name) continue;
       if (with_comments) out << comment(spec) << "\n";
-      out << spec.key << " = " << spec.print(scene) << "\n";
+      out << off << spec.key << " = " << spec.print(scene) << "\n";
     }
     if (!with_comments) out << "\n";
   }
