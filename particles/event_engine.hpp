@@ -102,6 +102,9 @@ class EventEngine {
     while (tree_.top_time() <= t_stop) {
       const std::size_t i = tree_.top();
       prefetch(i);
+      // Likely the event after this one (2/3 of the time): its memory loads
+      // overlap this event's work. Pays off only when the arrays miss the caches.
+      if (tree_.hinting()) prefetch(std::min(tree_.hint(), n_ - 1));
       const double t = tree_.top_time();
       stall_ = t - now_ <= step_scale_ * std::max(1.0, std::abs(now_)) ? stall_ + 1 : 0;
       if (stall_ >= step_limit_) return step_scale_ > 0 ? EngineStop::collapse : EngineStop::stall;
@@ -151,8 +154,8 @@ class EventEngine {
   // Starts the loads of an event's bodies and tree path at once (they miss at large N).
   void prefetch(std::size_t i) const {
     const Body* b = body_.data() + i;
-    __builtin_prefetch(b - (i > 0), 1);
-    __builtin_prefetch(b + 2 - (i + 2 >= n_) * 2, 1);
+    prefetch_line(b - (i > 0));
+    prefetch_line(b + 2 - (i + 2 >= n_) * 2);
     tree_.prefetch_path(i);
   }
   // Right neighbour of body i, or none.

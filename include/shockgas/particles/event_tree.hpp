@@ -18,6 +18,7 @@
 // refreshed. A collision changes at most three adjacent slots, nearly always in
 // one block: one line of times, then one path to the root. The tree is 4 bytes
 // per slot (8 for the times), so at N = 10^6 its upper levels stay in cache.
+#include <algorithm>
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
@@ -27,6 +28,17 @@
 #include "shockgas/particles/huge_page_allocator.hpp"
 
 namespace shockgas::particles {
+
+// Starts loading the cache line at p (any address; it is never dereferenced).
+// Inline assembly, because GCC 12 at -O2 finds a function whose only effect is
+// __builtin_prefetch "pure" and deletes the calls to it.
+inline void prefetch_line(const void* p) {
+#if defined(__x86_64__) || defined(__i386__)
+  asm volatile("prefetcht0 (%0)" : : "r"(p));
+#else
+  __builtin_prefetch(p, 1);
+#endif
+}
 
 class EventTree {
  public:
@@ -43,6 +55,8 @@ class EventTree {
     assert(n >= 1 && n < (std::size_t{1} << 31));
     n_ = n;
     nb_ = (n + block - 1) / block;
+    hinting_ = n >= hint_slots;
+    hint_ = 0;
     time_lines_.assign(nb_, TimeLine{});
     time_ = &time_lines_[0].t[0];
     for (std::size_t i = 0; i < nb_ * block; ++i) time_[i] = never;
@@ -62,6 +76,12 @@ class EventTree {
   double top_time() const { return node_[1].t; }
 
   void set(std::size_t slot, double t) { time_[slot] = t; }
+  // With hinting() (trees of hint_slots slots or more, too large for the caches):
+  // a slot likely to hold the second-earliest time after the last refresh (see
+  // climb), for prefetching only, never relied on. Otherwise 0.
+  static constexpr std::size_t hint_slots = std::size_t{1} << 18;
+  bool hinting() const { return hinting_; }
+  std::size_t hint() const { return hint_; }
 
   // Refreshes the path of one slot.
   void refresh_path(std::size_t slot) { refresh_blocks(slot / block, slot / block); }
@@ -72,8 +92,8 @@ class EventTree {
   }
   // Hints the cache about a slot's block and the deep part of its path.
   void prefetch_path(std::size_t slot) const {
-    __builtin_prefetch(&time_[slot], 1);
-    for (std::size_t k = nb_ + slot / block; k >= 4096; k >>= 1) __builtin_prefetch(&node_[k], 1);
+    prefetch_line(time_ + slot);
+    for (std::size_t k = nb_ + slot / block; k >= 4096; k >>= 1) prefetch_line(node_ + k);
   }
 
  private:
@@ -117,16 +137,36 @@ class EventTree {
   // Refreshes the ancestors of node k (k itself up to date). The winner so far
   // stays in registers; only the siblings are loaded, and their addresses do not
   // depend on the comparisons, so the loads overlap.
+  //
+  // On the way it keeps the runner-up among node k and the siblings (the winners
+  // of the subtrees that partition the rest of the tree): the slot of the event
+  // after the next one whenever that lies outside the next one's subtree (for
+  // random positions, with probability 1 - sum_j 4^-j = 2/3). hint() serves it
+  // for prefetching.
+  void climb(std::size_t k) { hinting_ ? climb<true>(k) : climb<false>(k); }
+  template <bool Hint>
   void climb(std::size_t k) {
     double t = node_[k].t;
     std::uint32_t slot = node_[k].slot;
+    double t2 = never;
+    std::uint32_t slot2 = slot;
     for (; k > 1; k >>= 1) {
       const Node& sib = node_[k ^ 1];
+      // Selects by min/max and masks: no branch to mispredict.
       const bool take = sib.t < t;  // ties: either is a valid winner
-      t = take ? sib.t : t;
-      slot ^= (slot ^ sib.slot) & (0u - static_cast<std::uint32_t>(take));  // no branch to mispredict
+      const std::uint32_t mask = 0u - static_cast<std::uint32_t>(take);
+      if constexpr (Hint) {
+        const double lose_t = std::max(t, sib.t);  // the loser of this match may be the runner-up
+        const std::uint32_t lose_slot = sib.slot ^ ((slot ^ sib.slot) & mask);
+        const std::uint32_t second = 0u - static_cast<std::uint32_t>(lose_t < t2);
+        t2 = std::min(t2, lose_t);
+        slot2 ^= (slot2 ^ lose_slot) & second;
+      }
+      t = std::min(t, sib.t);
+      slot ^= (slot ^ sib.slot) & mask;
       node_[k >> 1] = Node{t, slot, 0};
     }
+    if constexpr (Hint) hint_ = slot2;
   }
   // Node k := the earlier of its children (branch-free: select by index).
   void pull(std::size_t k) {
@@ -135,6 +175,8 @@ class EventTree {
   }
 
   std::size_t n_ = 0, nb_ = 0;
+  std::uint32_t hint_ = 0;
+  bool hinting_ = false;
   std::vector<TimeLine, HugePageAllocator<TimeLine>> time_lines_;  // slot times; padding slots stay at +inf
   std::vector<NodeLine, HugePageAllocator<NodeLine>>
       node_lines_;  // tree nodes, cache-line aligned: siblings share a line
