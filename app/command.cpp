@@ -52,7 +52,8 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     return kExitOk;
   }
   if (app.got_subcommand("bench")) {
-    std::cout << "bench results in " << run_bench(args.bench) << "/\n";
+    const std::string dir = run_bench(args.bench);
+    std::cout << "bench results in " << dir << "/\n";
     return kExitOk;
   }
   if (app.got_subcommand("scene")) {

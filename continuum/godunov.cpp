@@ -34,13 +34,20 @@ ContinuumResult make_result(const Grid& grid, const std::string& solver, double 
   return r;
 }
 
+// The stable Courant number of MUSCL-Hancock with the named limiter.
+double muscl_hancock_cfl_max(const std::string& limiter) {
+  if (limiter == "vanleer") return kMusclHancockVanLeerCflMax;
+  if (limiter == "mc") return kMusclHancockMcCflMax;
+  return kMusclHancockCflMax;
+}
+
 }  // namespace
 
 ContinuumResult solve_godunov(const InitialField& f, const ContinuumParams& p, double t_end, int order,
                               const ProgressCallback& progress) {
   require(order == 1 || order == 2, "godunov.order", order, "1 (godunov) or 2 (godunov2)");
   const std::string solver = order == 1 ? "godunov" : "godunov2";
-  check_finite_volume_input(p, t_end, order == 1 ? kGodunovCflMax : kMusclHancockCflMax, solver);
+  check_finite_volume_input(p, t_end, order == 1 ? kGodunovCflMax : muscl_hancock_cfl_max(p.limiter), solver);
   const Boundary boundary = boundary_from_name(p.boundary);
   const Limiter limiter = limiter_from_name(p.limiter);
   const CellAverages initial = cell_averages(f, p.cells);

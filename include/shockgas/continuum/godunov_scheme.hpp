@@ -184,7 +184,15 @@ class FiniteVolumeGrid {
 
 // Largest Courant number dt max|speed| / dx each scheme is stable for (see above).
 inline constexpr double kGodunovCflMax = 1.0;
-inline constexpr double kMusclHancockCflMax = 1.0;
+// MUSCL-Hancock keeps total variation bounded only while the limited slope stays
+// within the CFL-dependent TVD region (Toro, Riemann Solvers, 3rd ed., §14.4):
+// minmod never leaves it up to CFL 1; van Leer and MC, whose slopes reach twice
+// the one-sided difference, leave it earlier. The bounds below are where the
+// total-variation scan of `shockgas bench` (stability_cfl_limits.csv, tested in
+// BenchStability.*) first sees the variation grow: 0.9 and 0.85.
+inline constexpr double kMusclHancockCflMax = 1.0;  // minmod
+inline constexpr double kMusclHancockVanLeerCflMax = 0.9;
+inline constexpr double kMusclHancockMcCflMax = 0.85;
 
 // Checks continuum.cells (>= 8: a periodic stencil of 5 cells plus room for one
 // wave to be resolved), continuum.cfl (in (0, cfl_max] unless allow_unstable),
