@@ -11,6 +11,7 @@
 
 #include "plots.hpp"
 #include "run_state.hpp"
+#include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/version.hpp"
 
@@ -95,7 +96,22 @@ std::string brief(double value) {
   return buf;
 }
 
+// Every solver checks its own limits (CFL bound, cells against nu, ...) when it
+// starts; a zero-length solve runs those checks now, so that bad input stops
+// the run before any work and before anything is written.
+void preflight(const Scene& scene) {
+  if (!scene.has_continuum) return;
+  const InitialField field = make_initial_field(scene.initial, 0);
+  try {
+    for (const auto& name : scene.continuum.solvers) continuum::solve(name, field, scene.continuum, 0.0);
+  } catch (const InputError& e) {
+    const auto it = scene.key_origin.find(e.key());
+    throw e.located(it != scene.key_origin.end() ? it->second : scene.path);
+  }
+}
+
 std::string run_single(const Scene& scene, const fs::path& dir, const RunOptions& options) {
+  preflight(scene);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out", to_text(dir.string()), "a directory that can be created and written");

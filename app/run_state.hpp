@@ -46,6 +46,9 @@ void run_compare_stage(RunState& state);
 // A number for report.md: 4 significant digits ("nan" stays "nan").
 std::string brief(double value);
 
+// Runs each continuum solver's own input checks (a zero-length solve); throws InputError.
+void preflight(const Scene& scene);
+
 // One scene (no sweep) into dir; returns dir.
 std::string run_single(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);
 // A [sweep] scene: each variant into dir/<k>-<label>/, the side-by-side table and plots into dir.

@@ -79,6 +79,7 @@ void write_report(const fs::path& dir, const Scene& scene, const ordered_json& s
 
 std::string run_sweep(const Scene& scene, const fs::path& dir, const RunOptions& options) {
   const std::vector<Scene> variants = expand_sweep(scene);  // every variant valid before any work
+  for (const auto& v : variants) preflight(v);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out", to_text(dir.string()), "a directory that can be created and written");
