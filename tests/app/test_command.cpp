@@ -56,6 +56,17 @@ TEST(Command, BadOverrideExitsTwoAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(Command, SolverLimitIsCheckedBeforeAnyWork) {
+  const fs::path dir = temp_dir("preflight");
+  const fs::path scene = write_scene(dir, kSmallScene);
+  const fs::path out = dir / "out";
+  // MUSCL-Hancock with the mc limiter is stable only up to CFL 0.85 (godunov_scheme.hpp).
+  EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set", "continuum.solvers=[\"godunov2\"]",
+                 "--set", "continuum.cfl=0.95"}),
+            2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(Command, MissingSceneFileExitsTwo) {
   EXPECT_EQ(run({"run", "/nonexistent/scene.toml", "-q"}), 2);
 }
