@@ -1,13 +1,12 @@
 // `shockgas bench`: runs every section (bench_sections.hpp), writes the failure
 // table, then draws the charts from the CSV files with scripts/plot_bench.py.
-#include <sys/wait.h>
-
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
 #include "bench_sections.hpp"
+#include "plots.hpp"
 #include "shockgas/app/bench.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -15,29 +14,8 @@ namespace shockgas::app {
 
 namespace {
 
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
 // The charts read only the CSV files; a missing python or matplotlib is a warning.
-void plot(const std::string& dir) {
-  const char* env = std::getenv("SHOCKGAS_PLOT_BENCH_SCRIPT");
-  const std::string python = "/usr/bin/python3",
-                    script = env ? env : std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/plot_bench.py";
-  if (!std::filesystem::exists(python) || !std::filesystem::exists(script)) {
-    std::cerr << "shockgas: warning: no bench charts (" << (std::filesystem::exists(python) ? script : python)
-              << " not found)\n";
-    return;
-  }
-  const int status = std::system((python + " " + quoted(script) + " " + quoted(dir)).c_str());
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  if (code == 3)
-    std::cerr << "shockgas: warning: no bench charts (matplotlib missing for /usr/bin/python3; run scripts/setup)\n";
-  else if (code != 0)
-    std::cerr << "shockgas: warning: bench charts failed (exit " << code << "); the CSV files are complete\n";
-}
+void plot(const std::string& dir) { run_plot_script("plot_bench.py", "SHOCKGAS_PLOT_BENCH_SCRIPT", dir, "bench charts"); }
 
 // SHOCKGAS_BENCH_SECTIONS (comma-separated section names) runs only those
 // sections, for re-measuring one chart; unset runs them all.

@@ -16,27 +16,27 @@ std::string quoted(const std::string& s) {
   return q + "'";
 }
 
-std::string plot_script() {
-  if (const char* env = std::getenv("SHOCKGAS_PLOT_SCRIPT")) return env;
-  return std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/plot_result.py";
-}
-
 }  // namespace
 
-void make_plots(const std::string& dir) {
-  const std::string python = "/usr/bin/python3", script = plot_script();
-  if (!std::filesystem::exists(python) || !std::filesystem::exists(script)) {
-    std::cerr << "shockgas: warning: no plots (" << (std::filesystem::exists(python) ? script : python)
+void run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
+                     const std::string& what) {
+  const char* env = env_override ? std::getenv(env_override) : nullptr;
+  const std::string python = "/usr/bin/python3",
+                    path = env ? env : std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/" + script;
+  if (!std::filesystem::exists(python) || !std::filesystem::exists(path)) {
+    std::cerr << "shockgas: warning: no " << what << " (" << (std::filesystem::exists(python) ? path : python)
               << " not found; run scripts/setup)\n";
     return;
   }
-  const std::string cmd = python + " " + quoted(script) + " " + quoted(dir);
-  const int status = std::system(cmd.c_str());
+  const int status = std::system((python + " " + quoted(path) + " " + quoted(dir)).c_str());
   const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   if (code == 3)
-    std::cerr << "shockgas: warning: no plots (matplotlib or h5py missing for /usr/bin/python3; run scripts/setup)\n";
+    std::cerr << "shockgas: warning: no " << what
+              << " (matplotlib or h5py missing for /usr/bin/python3; run scripts/setup)\n";
   else if (code != 0)
-    std::cerr << "shockgas: warning: plotting failed (exit " << code << "); the results are complete\n";
+    std::cerr << "shockgas: warning: " << what << " failed (exit " << code << "); the results are complete\n";
 }
+
+void make_plots(const std::string& dir) { run_plot_script("plot_result.py", "SHOCKGAS_PLOT_SCRIPT", dir, "plots"); }
 
 }  // namespace shockgas::app

@@ -3,9 +3,15 @@
 
 namespace shockgas::app {
 
-// Draws the PNG plots of a result directory with scripts/plot_result.py
-// (Debian's /usr/bin/python3 with matplotlib and h5py). The plots read only
-// the result files. A missing plotting tool is a warning on stderr, not an error.
+// Runs scripts/<script> DIR with Debian's /usr/bin/python3 (matplotlib, h5py);
+// env_override names an environment variable that may give another script path.
+// A missing python, script or plotting library is a warning on stderr naming
+// `what`, never an error: the result files are complete without the pictures.
+void run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
+                     const std::string& what);
+
+// The PNG plots of a result directory (scripts/plot_result.py), read only from
+// its result files.
 void make_plots(const std::string& dir);
 
 }  // namespace shockgas::app

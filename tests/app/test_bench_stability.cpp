@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "../../app/bench_common.hpp"
-#include "../../app/bench_stability.hpp"
+#include "bench_common.hpp"
+#include "bench_stability.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/core/error.hpp"
 
