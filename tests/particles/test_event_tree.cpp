@@ -31,7 +31,7 @@ TEST(EventTree, TopIsTheMinimumAfterRandomUpdates) {
       } else {
         for (std::size_t i = lo; i <= hi; ++i) tree.refresh_path(i);
       }
-      if (n > 5000 && step % 64) continue;  // the brute-force minimum dominates at this size
+      if (n > 5000 && step % 256) continue;  // the brute-force minimum dominates at this size
       const double best = *std::min_element(t.begin(), t.end());
       ASSERT_EQ(tree.top_time(), best);  // exact: the tree only copies values
       ASSERT_EQ(t[tree.top()], best);
