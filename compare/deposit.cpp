@@ -53,23 +53,6 @@ void deposit_cloud_in_cell(GridFields& g, const Bodies& b, double dx) {
   }
 }
 
-// Empty cells: v interpolated linearly, periodically, between occupied cells.
-void fill_empty_velocities(GridFields& g) {
-  const std::size_t n = g.v.size();
-  std::vector<std::size_t> occupied;
-  for (std::size_t i = 0; i < n; ++i)
-    if (g.mass[i] > 0) occupied.push_back(i);
-  if (occupied.empty()) return;
-  for (std::size_t k = 0; k < occupied.size(); ++k) {
-    const std::size_t a = occupied[k], b = occupied[(k + 1) % occupied.size()];
-    const std::size_t gap = (b + n - a) % n == 0 ? n : (b + n - a) % n;
-    for (std::size_t j = 1; j < gap; ++j) {
-      const double w = static_cast<double>(j) / static_cast<double>(gap);
-      g.v[(a + j) % n] = (1 - w) * g.v[a] + w * g.v[b];
-    }
-  }
-}
-
 }  // namespace
 
 GridFields deposit_on_grid(const Bodies& b, double length, std::size_t cells, DepositScheme scheme) {
@@ -93,7 +76,7 @@ GridFields deposit_on_grid(const Bodies& b, double length, std::size_t cells, De
     g.rho[c] = g.mass[c] / dx;
     if (g.mass[c] > 0) g.v[c] = g.momentum[c] / g.mass[c];
   }
-  fill_empty_velocities(g);
+  continuum::fill_empty_cells(g.v, g.mass);  // empty cells: periodic linear interpolation
   return g;
 }
 

@@ -37,8 +37,9 @@ CellAverages from_functions(const InitialField& f, std::size_t cells) {
   return a;
 }
 
-// Fills cells without mass by periodic linear interpolation of v between occupied cells.
-void fill_empty(std::vector<double>& v, const std::vector<double>& mass) {
+}  // namespace
+
+void fill_empty_cells(std::vector<double>& v, const std::vector<double>& mass) {
   const std::size_t n = v.size();
   std::vector<std::size_t> occupied;
   for (std::size_t i = 0; i < n; ++i)
@@ -53,6 +54,8 @@ void fill_empty(std::vector<double>& v, const std::vector<double>& mass) {
     }
   }
 }
+
+namespace {
 
 CellAverages from_bodies(const InitialField& f, std::size_t cells) {
   CellAverages a{std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0)};
@@ -71,7 +74,7 @@ CellAverages from_bodies(const InitialField& f, std::size_t cells) {
     a.rho[c] = mass[c] / dx;
     a.v[c] = mass[c] > 0 ? momentum[c] / mass[c] : 0.0;
   }
-  fill_empty(a.v, mass);
+  fill_empty_cells(a.v, mass);
   return a;
 }
 

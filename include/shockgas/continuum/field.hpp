@@ -49,4 +49,8 @@ struct CellAverages {
 };
 CellAverages cell_averages(const InitialField& f, std::size_t cells);
 
+// Gives every cell without mass (mass[i] <= 0) the velocity interpolated
+// linearly, periodically, between the occupied cells around it.
+void fill_empty_cells(std::vector<double>& v, const std::vector<double>& mass);
+
 }  // namespace shockgas::continuum
