@@ -88,6 +88,7 @@ void summarize(RunState& state, const EnsembleResult& e) {
   s["stop"] = to_string(e.first.stop.reason);
   s["stop_time"] = e.first.stop.time;
   if (e.first.stop.reason == particles::StopReason::collapse) s["collapse_position"] = e.first.stop.position;
+  if (e.first.stop.reason == particles::StopReason::stall) s["stall_position"] = e.first.stop.position;
   if (!e.T.mean.empty()) {
     s["T_final"] = e.T.mean.back();
     s["n_bodies_final"] = e.n_bodies.mean.back();
@@ -101,6 +102,9 @@ void summarize(RunState& state, const EnsembleResult& e) {
   state.report.push_back("- Run ended: " + to_string(e.first.stop.reason) + " at t = " + brief(e.first.stop.time) +
                          (e.first.stop.reason == particles::StopReason::collapse
                               ? " (inelastic collapse at x = " + brief(e.first.stop.position) + ")"
+                          : e.first.stop.reason == particles::StopReason::stall
+                              ? " (time stopped advancing at x = " + brief(e.first.stop.position) +
+                                    " through rounding: results up to this time are kept)"
                               : "") +
                          ".\n");
 }
@@ -118,6 +122,7 @@ void run_particles_stage(RunState& state) {
   state.h5.set_attribute("/particles", "stop_reason", to_string(stop.reason));
   state.h5.set_attribute("/particles", "stop_time", stop.time);
   if (stop.reason == particles::StopReason::collapse) state.h5.set_attribute("/particles", "collapse_x", stop.position);
+  if (stop.reason == particles::StopReason::stall) state.h5.set_attribute("/particles", "stall_x", stop.position);
   summarize(state, e);
   state.final_bodies = e.first.final_state;
   state.final_time = e.first.stop.time;
