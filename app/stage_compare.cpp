@@ -49,6 +49,8 @@ std::vector<double> column(const std::vector<T>& items, F&& f) {
 
 void write_snapshot(Hdf5File& h5, const compare::SnapshotComparison& c) {
   const auto& g = c.particle_fields;
+  h5.set_attribute("/compare", "min_mass", c.min_mass);
+  h5.set_attribute("/compare", "t", c.t);
   h5.write("/compare/x", g.x, "length", "cell centres (the continuum grid)");
   h5.write("/compare/rho_particles", g.rho, "mass/length", "particle mass deposited on the grid");
   h5.write("/compare/v_particles", g.v, "length/time", "particle momentum / mass on the grid");

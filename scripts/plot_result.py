@@ -105,10 +105,13 @@ def plot_fields(f, out_dir):
         cmp = f["compare"]
         av.plot(cmp["x"][:], cmp["v_particles"][:], "k.", ms=2, label="particles")
         ar.plot(cmp["x"][:], cmp["rho_particles"][:], "k.", ms=2, label="particles")
-        for name, marker, color in [("clusters", "v", "tab:red"), ("shocks", "^", "tab:blue")]:
+        # the clusters and shocks counted by the comparison (mass >= min_mass)
+        min_mass = attr(cmp, "min_mass", 0.0)
+        for name, mass, marker, color in [("clusters", "clusters_m", "v", "tab:red"),
+                                          ("shocks", "shocks_mass", "^", "tab:blue")]:
             if name + "_x" in cmp:
-                xs = cmp[name + "_x"][:]
-                ar.plot(xs, np.zeros_like(xs), marker, color=color, ms=6, label=name)
+                xs = cmp[name + "_x"][:][cmp[mass][:] >= min_mass]
+                ar.plot(xs, np.zeros_like(xs), marker, color=color, ms=7, label=f"{name} (mass >= {min_mass:.3g})")
     ar.set_yscale("symlog", linthresh=1.0)
     av.set_ylabel("v")
     ar.set_ylabel("rho")
