@@ -2,7 +2,7 @@
 // generic finite-volume grid (godunov_scheme.hpp with BurgersContinuity) against
 // a plain hand-written loop of the same scheme in the same run. Counter
 // "cell_updates/s" per benchmark; the ratio of the two is the cost of the generic
-// design (issue 4 target: >= 2e8 cell updates/s, generic within 10% of plain).
+// design (target: >= 2e8 cell updates/s, generic within 10% of plain).
 //
 // Measured (Release, -O3 without -march=native, best CPU time of 15 repetitions on
 // a shared 2-core machine): plain 260 M, generic 251 M cell updates/s (generic /

@@ -1,4 +1,4 @@
-// Hopf-Cole speed (issue: "Hopf-Cole FFT on 2^20 points in well under a second").
+// Hopf-Cole speed (target: the FFT path on 2^20 points in well under a second).
 //
 // Problem: v0 = 0.5 + sin 2 pi x on [0, 1), t = 0.3 (after the shock forms).
 //  * BM_HopfColeFft/n: the fft path (theta0, r2c, heat propagator and shift, c2r,

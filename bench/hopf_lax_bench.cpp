@@ -1,4 +1,4 @@
-// Speed of the exact inviscid solvers (issue: "Hopf-Lax >= 1e7 points/s; 1e7
+// Speed of the exact inviscid solvers (targets: "Hopf-Lax >= 1e7 points/s; 1e7
 // points in about a second"). Points per second of CPU time (items_per_second).
 //
 //  * BM_StickyLine/N: sticky_clusters_line on N lattice bodies, velocities

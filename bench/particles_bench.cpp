@@ -1,6 +1,6 @@
 // Collisions per second of the particle engine against the priority-queue
 // baseline (particles_baseline.hpp), in the same run, at N = 10^4, 10^5, 10^6:
-// the configuration (ring, L = N, lattice positions, velocities uniform on
+// the reference configuration (ring, L = N, lattice positions, velocities uniform on
 // [-1, 1], r = 0.9, delta = 10^-2). Both engines start from the same state and
 // run the same number of collisions (10^7 by default); the engine is timed
 // whole (set-up, event loop, final state), as a run would be.
