@@ -21,37 +21,17 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Temporary files removed if the run is interrupted (SIGINT, SIGTERM).
-char g_partial_h5[4096] = "";
-char g_partial_json[4096] = "";
+// Temporary files of every open PartialOutputs (a sweep nests one per variant
+// inside its own), removed if the run is interrupted (SIGINT, SIGTERM).
+constexpr int kMaxPartial = 8;
+char g_partial[kMaxPartial][4096];
+volatile std::sig_atomic_t g_partial_count = 0;
 
 extern "C" void remove_partials_and_exit(int sig) {
-  if (g_partial_h5[0]) unlink(g_partial_h5);
-  if (g_partial_json[0]) unlink(g_partial_json);
+  for (int i = 0; i < g_partial_count; ++i) unlink(g_partial[i]);
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
-
-class PartialFiles {
- public:
-  PartialFiles(const fs::path& h5, const fs::path& json) : h5_(h5), json_(json) {
-    std::snprintf(g_partial_h5, sizeof g_partial_h5, "%s", h5.c_str());
-    std::snprintf(g_partial_json, sizeof g_partial_json, "%s", json.c_str());
-    std::signal(SIGINT, remove_partials_and_exit);
-    std::signal(SIGTERM, remove_partials_and_exit);
-  }
-  ~PartialFiles() {
-    std::error_code ec;
-    fs::remove(h5_, ec);  // no-op once renamed
-    fs::remove(json_, ec);
-    g_partial_h5[0] = g_partial_json[0] = '\0';
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-  }
-
- private:
-  fs::path h5_, json_;
-};
 
 std::string utc_now() {
   std::time_t now = std::time(nullptr);
@@ -110,19 +90,50 @@ void preflight(const Scene& scene) {
   }
 }
 
-std::string run_single(const Scene& scene, const fs::path& dir, const RunOptions& options) {
-  preflight(scene);
+PartialOutputs::PartialOutputs(const fs::path& dir) : dir_(dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw InputError("--out", to_text(dir.string()), "a directory that can be created and written");
   const std::string tag = ".partial-" + std::to_string(getpid());
-  const fs::path h5_path = dir / "result.h5", json_path = dir / "summary.json";
-  PartialFiles partial(h5_path.string() + tag, json_path.string() + tag);
+  h5_tmp_ = (dir / "result.h5").string() + tag;
+  json_tmp_ = (dir / "summary.json").string() + tag;
+  if (g_partial_count + 2 > kMaxPartial) throw RunError("too many nested result directories");
+  for (const auto& path : {h5_tmp_, json_tmp_}) {
+    const int slot = g_partial_count;
+    std::snprintf(g_partial[slot], sizeof g_partial[0], "%s", path.c_str());
+    g_partial_count = slot + 1;  // published after the path is complete
+  }
+  std::signal(SIGINT, remove_partials_and_exit);
+  std::signal(SIGTERM, remove_partials_and_exit);
+}
 
+PartialOutputs::~PartialOutputs() {
+  std::error_code ec;
+  fs::remove(h5_tmp_, ec);  // no-op once renamed
+  fs::remove(json_tmp_, ec);
+  g_partial_count = g_partial_count - 2;
+  if (g_partial_count == 0) {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+  }
+}
+
+void PartialOutputs::commit(const nlohmann::ordered_json& summary) {
+  {
+    std::ofstream out(json_tmp_);
+    out << summary.dump(2) << "\n";
+    if (!out) throw RunError("cannot write " + json_tmp_);
+  }
+  fs::rename(h5_tmp_, dir_ / "result.h5");
+  fs::rename(json_tmp_, dir_ / "summary.json");
+}
+
+std::string run_single(const Scene& scene, const fs::path& dir, const RunOptions& options) {
+  PartialOutputs outputs(dir);
   nlohmann::ordered_json summary;
   ProgressBar progress(options.progress);
   {
-    Hdf5File h5 = Hdf5File::create(h5_path.string() + tag);
+    Hdf5File h5 = Hdf5File::create(outputs.h5_path());
     RunState state{scene, h5, summary, progress};
     write_provenance(h5, summary, scene);
     run_initial_stage(state);
@@ -136,13 +147,7 @@ std::string run_single(const Scene& scene, const fs::path& dir, const RunOptions
     h5.close();
     write_report(dir, state);
   }
-  {
-    std::ofstream out(json_path.string() + tag);
-    out << summary.dump(2) << "\n";
-    if (!out) throw RunError("cannot write " + json_path.string());
-  }
-  fs::rename(h5_path.string() + tag, h5_path);
-  fs::rename(json_path.string() + tag, json_path);
+  outputs.commit(summary);
   if (options.plots && scene.output.plots) make_plots(dir.string());
   return dir.string();
 }
@@ -150,6 +155,7 @@ std::string run_single(const Scene& scene, const fs::path& dir, const RunOptions
 std::string run_scene(const Scene& scene, const RunOptions& options) {
   const fs::path dir = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
   if (scene.has_sweep) return run_sweep(scene, dir, options);
+  preflight(scene);
   return run_single(scene, dir, options);
 }
 

@@ -49,7 +49,25 @@ std::string brief(double value);
 // Runs each continuum solver's own input checks (a zero-length solve); throws InputError.
 void preflight(const Scene& scene);
 
-// One scene (no sweep) into dir; returns dir.
+// result.h5 and summary.json of one directory (created here; InputError if it
+// cannot be): written under temporary names, renamed by commit(); removed if
+// the run fails (destructor) or is interrupted (SIGINT, SIGTERM). Nests.
+class PartialOutputs {
+ public:
+  explicit PartialOutputs(const std::filesystem::path& dir);
+  ~PartialOutputs();
+  PartialOutputs(const PartialOutputs&) = delete;
+  PartialOutputs& operator=(const PartialOutputs&) = delete;
+  const std::string& h5_path() const { return h5_tmp_; }  // where to write result.h5 now
+  // Writes summary.json and renames both files to their final names.
+  void commit(const nlohmann::ordered_json& summary);
+
+ private:
+  std::filesystem::path dir_;
+  std::string h5_tmp_, json_tmp_;
+};
+
+// One scene (no sweep) into dir, after preflight(); returns dir.
 std::string run_single(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);
 // A [sweep] scene: each variant into dir/<k>-<label>/, the side-by-side table and plots into dir.
 std::string run_sweep(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);

@@ -80,20 +80,10 @@ void write_report(const fs::path& dir, const Scene& scene, const ordered_json& s
 std::string run_sweep(const Scene& scene, const fs::path& dir, const RunOptions& options) {
   const std::vector<Scene> variants = expand_sweep(scene);  // every variant valid before any work
   for (const auto& v : variants) preflight(v);
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError("--out", to_text(dir.string()), "a directory that can be created and written");
+  PartialOutputs outputs(dir);
   ordered_json summary;
-  const std::string partial = (dir / "result.h5").string() + ".partial-sweep";
-  struct RemoveOnFailure {
-    std::string path;
-    ~RemoveOnFailure() {
-      std::error_code ignored;
-      fs::remove(path, ignored);  // no-op once renamed
-    }
-  } guard{partial};
   {
-    Hdf5File h5 = Hdf5File::create(partial);
+    Hdf5File h5 = Hdf5File::create(outputs.h5_path());
     write_provenance(h5, summary, scene);
     for (std::size_t k = 0; k < variants.size(); ++k) {
       const std::string label = variants[k].name.substr(scene.name.size() + 1);
@@ -111,8 +101,7 @@ std::string run_sweep(const Scene& scene, const fs::path& dir, const RunOptions&
       h5.set_attribute(group, "set", scene.sweep.variants[k]);
     }
   }
-  std::ofstream(dir / "summary.json") << summary.dump(2) << "\n";
-  fs::rename(partial, dir / "result.h5");
+  outputs.commit(summary);
   write_report(dir, scene, summary);
   if (options.plots && scene.output.plots) make_plots(dir.string());
   return dir.string();
