@@ -136,6 +136,10 @@ std::vector<KeySpec> build_schema() {
           SG_FIELD(particles, geometry)),
       key("particles", "solver", "string", "", "\"events\" or \"hull\" (hull: r = 0 only)",
           "event-driven simulation, or the exact sticky solution by the convex hull", SG_FIELD(particles, solver)),
+      key("particles", "schedule", "string", "", "\"auto\", \"windows\" or \"global\"",
+          "event order: time windows over stretches of the chain (the same collisions; equal masses without "
+          "merges or collapse), the global queue, or auto = windows where they apply",
+          SG_FIELD(particles, schedule)),
       key("particles", "t_end", "number", "time", "a finite number > 0", "final time", SG_FIELD(particles, t_end)),
       key("particles", "samples", "integer", "1", "an integer >= 1", "log-spaced sample times in [1, t_end]",
           SG_FIELD(particles, samples)),

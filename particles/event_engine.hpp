@@ -11,7 +11,8 @@
 // Two layouts, chosen once per run:
 //  * Linked = false: equal masses, no merges; neighbours are i +- 1 (mod N on the
 //    ring). 24 bytes per body + 8 per slot time + 4 per slot for the tree over
-//    blocks of 8 slots = 36 bytes per particle.
+//    blocks of 8 slots = 36 bytes per particle (32 when a WindowScheduler drives
+//    it: no global tree, a slot time each).
 //  * Linked = true: masses and merges; the live bodies form a doubly linked list
 //    (a ring on the ring). A merge keeps the left body, unlinks the right one and
 //    sets its slot to +inf. 36 + 8 (mass) + 8 (links) = 52 bytes per particle.
@@ -30,6 +31,8 @@
 #include "shockgas/particles/huge_page_allocator.hpp"
 
 namespace shockgas::particles::detail {
+
+class WindowScheduler;
 
 // Why run_until returned. stall: delta > 0 (or r = 0, 1), where no collapse is
 // possible, but time stopped advancing anyway (see run_until).
@@ -50,7 +53,9 @@ class EventEngine {
   static constexpr int frozen_limit = 1 << 24;
 
   // initial: sorted by x (ring: inside [0, L)); all masses equal unless Linked.
-  EventEngine(const Bodies& initial, double L, bool ring, const CollisionRule& rule)
+  // global_queue = false leaves the global event queue empty, for a run that a
+  // WindowScheduler drives (Linked = false only); run_until needs it.
+  EventEngine(const Bodies& initial, double L, bool ring, const CollisionRule& rule, bool global_queue = true)
       : L_(L), ring_(ring), rule_(rule), n_(initial.size()), alive_(initial.size()) {
     body_.resize(n_);
     for (std::size_t i = 0; i < n_; ++i) body_[i] = {initial.x[i], initial.v[i], 0.0};
@@ -66,12 +71,8 @@ class EventEngine {
       next_[n_ - 1] = ring_ ? 0 : none;
       prev_[0] = ring_ ? static_cast<std::uint32_t>(n_ - 1) : none;
     }
-    tree_.reset(n_);
-    for (std::size_t i = 0; i < n_; ++i) tree_.set(i, pair_time(i));
-    tree_.rebuild();
-    // Inelastic collapse needs inelastic collisions at arbitrarily small approach
-    // speeds: delta = 0 and 0 < r < 1.
-    const bool collapse_possible = rule_.delta == 0.0 && rule_.r > 0.0 && rule_.r < 1.0;
+    if (global_queue) build_queue();
+    const bool collapse_possible = rule_.collapse_possible();
     step_scale_ = collapse_possible ? 1e-12 : 0.0;
     window_scale_ = collapse_possible ? 1e-10 : -1.0;
     step_limit_ = collapse_possible ? stall_limit : frozen_limit;
@@ -99,6 +100,7 @@ class EventEngine {
   // accident can hang it.
   template <class Watch>
   EngineStop run_until(double t_stop, Watch&& watch) {
+    assert(tree_.size() == n_);
     while (tree_.top_time() <= t_stop) {
       const std::size_t i = tree_.top();
       prefetch(i);
@@ -118,6 +120,11 @@ class EventEngine {
     }
     now_ = std::max(now_, t_stop);
     return EngineStop::reached;
+  }
+
+  // (Re)builds the global event queue from the bodies as they are at now().
+  void build_queue() {
+    tree_.assign(n_, [&](std::size_t i) { return pair_time(i, now_); });
   }
 
   double now() const { return now_; }
@@ -141,6 +148,7 @@ class EventEngine {
   }
 
  private:
+  friend class WindowScheduler;
   struct Body {
     double x;  // position at local time t [length], unrolled
     double v;  // velocity [length/time]
@@ -176,19 +184,21 @@ class EventEngine {
     return ring_ ? n_ - 1 : none;
   }
 
-  // Contact time of slot i: the gap closes at speed g = v_i - v_j.
-  double pair_time(std::size_t i) const {
+  // Contact time of slot i: the gap closes at speed g = v_i - v_j. now: the time
+  // of the collision being processed.
+  double pair_time(std::size_t i, double now) const {
     const std::size_t j = right(i);
     if (j == none) return EventTree::never;
-    const Body& a = body_[i];
-    const Body& c = body_[j];
-    const double shift = j <= i ? L_ : 0.0;
+    return contact_time(body_[i], body_[j], j <= i ? L_ : 0.0, now);
+  }
+  // Contact time of body a and its right neighbour c, counted at x + shift.
+  static double contact_time(const Body& a, const Body& c, double shift, double now) {
     const double g = a.v - c.v;
     const double tm = std::max(a.t, c.t);
     const double gap = (c.x + c.v * (tm - c.t) + shift) - (a.x + a.v * (tm - a.t));
     // Never before now: a gap closed by rounding is a contact now, so time never
     // runs backwards.
-    const double t = std::max(tm + std::max(gap, 0.0) / g, now_);
+    const double t = std::max(tm + std::max(gap, 0.0) / g, now);
     return g > 0 ? t : EventTree::never;
   }
 
@@ -196,6 +206,21 @@ class EventEngine {
     const std::size_t j = right(i);
     assert(j != none);
     const double t = tree_.top_time();
+    now_ = t;
+    if constexpr (Linked) {
+      const double g = body_[i].v - body_[j].v;
+      last_x_ = meet(i, j, t);
+      const CollisionKind kind = rule_.classify(g);
+      ++count_[static_cast<int>(kind)];
+      if (kind == CollisionKind::merge) return merge(i, j);
+      dissipated_ += bounce(body_[i].v, body_[j].v, mass_[i], mass_[j], rule_.restitution(kind));
+    } else {
+      ++count_[collide_equal(i, j, t, dissipated_, last_x_)];
+    }
+    refresh(left(i), i, j, true);
+  }
+  // Moves bodies i and j = right(i) to their contact point at time t; returns it.
+  double meet(std::size_t i, std::size_t j, double t) {
     Body& a = body_[i];
     Body& c = body_[j];
     const double x = a.x + a.v * (t - a.t);
@@ -203,21 +228,18 @@ class EventEngine {
     a.t = t;
     c.x = j <= i ? x - L_ : x;
     c.t = t;
-    now_ = t;
-    last_x_ = x;
-    const double g = a.v - c.v;
-    if constexpr (Linked) {
-      const CollisionKind kind = rule_.classify(g);
-      ++count_[static_cast<int>(kind)];
-      if (kind == CollisionKind::merge) return merge(i, j);
-      dissipated_ += bounce(a.v, c.v, mass_[i], mass_[j], rule_.restitution(kind));
-      refresh(left(i), i, j, true);
-    } else {
-      const bool sub = g < rule_.delta;
-      ++count_[sub];  // CollisionKind::inelastic = 0, elastic = 1
-      dissipated_ += bounce_equal(a.v, c.v, m0_, sub ? 1.0 : rule_.r);
-      refresh(left(i), i, j, true);
-    }
+    return x;
+  }
+  // The collision of equal-mass bodies i and j = right(i) at time t: adds the
+  // energy lost to dissipated, stores the contact point in x; returns the
+  // CollisionKind index (inelastic 0, elastic 1).
+  int collide_equal(std::size_t i, std::size_t j, double t, double& dissipated, double& x) {
+    x = meet(i, j, t);
+    double& v = body_[i].v;
+    double& u = body_[j].v;
+    const bool sub = v - u < rule_.delta;
+    dissipated += bounce_equal(v, u, m0_, sub ? 1.0 : rule_.r);
+    return sub;
   }
 
   // Body j joins body i (j = right(i)).
@@ -240,9 +262,9 @@ class EventEngine {
   // Recomputes slots p (left of i, may be none), i and j (right of i, may be none).
   // bounced: i and j just bounced, so they separate (g -> -r g <= 0): no event.
   void refresh(std::size_t p, std::size_t i, std::size_t j, bool bounced) {
-    if (p != none) tree_.set(p, pair_time(p));
-    tree_.set(i, bounced ? EventTree::never : pair_time(i));
-    if (j != none) tree_.set(j, pair_time(j));
+    if (p != none) tree_.set(p, pair_time(p, now_));
+    tree_.set(i, bounced ? EventTree::never : pair_time(i, now_));
+    if (j != none) tree_.set(j, pair_time(j, now_));
     if (p != none && j != none && p + 1 == i && i + 1 == j) return tree_.refresh_range(p, j);
     if (p != none && p + 1 == i && j == none) return tree_.refresh_range(p, i);
     if (p != none) tree_.refresh_path(p);

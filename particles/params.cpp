@@ -16,6 +16,8 @@ void validate(const ParticleParams& p) {
   require(p.solver == "events" || p.solver == "hull", "particles.solver", p.solver, "\"events\" or \"hull\"");
   require(p.solver != "hull" || p.r == 0.0, "particles.solver", p.solver,
           "\"hull\" only with particles.r = 0 (the exact sticky solution)");
+  require(p.schedule == "auto" || p.schedule == "windows" || p.schedule == "global", "particles.schedule",
+          p.schedule, "\"auto\", \"windows\" or \"global\"");
   require_above("particles.t_end", p.t_end, 0.0);
   require(p.samples >= 1, "particles.samples", p.samples, "an integer >= 1");
   require(p.realizations >= 1, "particles.realizations", p.realizations, "an integer >= 1");

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "event_engine.hpp"
 #include "hull_model.hpp"
 #include "recorder.hpp"
 #include "shockgas/core/error.hpp"
+#include "window_scheduler.hpp"
 
 namespace shockgas::particles {
 
@@ -94,16 +96,35 @@ detail::Counters counters(const detail::EventEngine<Linked>& e) {
           e.count(CollisionKind::merge), e.dissipated()};
 }
 
+// Time windows over domains when they are exact and worth it (particles.schedule).
+bool use_windows(std::size_t n, const CollisionRule& rule, const ParticleParams& p, bool linked) {
+  if (p.schedule == "global") return false;
+  const bool possible = !linked && detail::WindowScheduler::applicable(n, rule);
+  require(possible || p.schedule != "windows", "particles.schedule", p.schedule,
+          "\"windows\" only for equal masses without merges or inelastic collapse (delta > 0 or r = 1), "
+          "N >= 1024; else \"auto\" or \"global\"");
+  return possible;
+}
+
 template <bool Linked>
 RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleParams& p,
                      const ProgressCallback& progress) {
   const CollisionRule rule{p.r, p.delta, p.subthreshold == "sticky"};
+  const bool windows = use_windows(initial.size(), rule, p, Linked);
   detail::Recorder recorder(p, initial.size(), L, ring);
-  detail::EventEngine<Linked> engine(initial, L, ring, rule);
+  detail::EventEngine<Linked> engine(initial, L, ring, rule, !windows);
+  std::optional<detail::WindowScheduler> scheduler;
+  if constexpr (!Linked)
+    if (windows) scheduler.emplace(engine);
   Watch watch{p, progress};
+  auto advance = [&](double t) {
+    if constexpr (!Linked)
+      if (scheduler) return scheduler->run_until(t, watch);
+    return engine.run_until(t, watch);
+  };
   RunStop stop;
   for (double t = recorder.next_stop(); t != detail::Recorder::done; t = recorder.next_stop()) {
-    const detail::EngineStop s = engine.run_until(t, watch);
+    const detail::EngineStop s = advance(t);
     if (s == detail::EngineStop::collapse)
       stop = {StopReason::collapse, engine.now(), engine.last_position()};
     if (s == detail::EngineStop::stall) stop = {StopReason::stall, engine.now(), engine.last_position()};

@@ -35,6 +35,10 @@ struct CollisionRule {
   // True when some collision of this rule can merge bodies.
   bool can_merge() const { return r == 0.0 || (sticky_subthreshold && delta > 0.0); }
 
+  // Inelastic collapse needs inelastic collisions at arbitrarily small approach
+  // speeds: delta = 0 and 0 < r < 1.
+  bool collapse_possible() const { return delta == 0.0 && r > 0.0 && r < 1.0; }
+
   // Kind of a collision with approach speed g > 0.
   CollisionKind classify(double g) const {
     if (g < delta) return sticky_subthreshold ? CollisionKind::merge : CollisionKind::elastic;

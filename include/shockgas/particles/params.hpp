@@ -13,6 +13,7 @@ struct ParticleParams {
   std::string subthreshold = "elastic"; // sub-threshold collisions: "elastic" | "sticky" (merge)
   std::string geometry = "ring";        // "ring" (periodic, length L) | "line" (open)
   std::string solver = "events";        // "events" (event-driven) | "hull" (exact, r = 0 only)
+  std::string schedule = "auto";        // event order: "auto" | "windows" | "global" (window_scheduler.hpp)
   double t_end = 1000.0;                // final time [time], > 0
   std::size_t samples = 40;             // number of log-spaced sample times in [1, t_end], >= 1
   std::size_t realizations = 1;         // independent realizations (ensemble), >= 1

@@ -1,0 +1,121 @@
+// Time windows over domains (particles/window_scheduler.hpp) against the global
+// event queue: the same collisions, so the same final state to the last bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "shockgas/core/error.hpp"
+#include "shockgas/core/initial_condition.hpp"
+#include "shockgas/particles/simulate.hpp"
+
+namespace shockgas::particles {
+namespace {
+
+struct Case {
+  std::size_t N;
+  std::string positions, velocities, geometry;
+  double r, delta, t_end;
+};
+
+Bodies start(const Case& c) {
+  InitialParams ip;
+  ip.N = c.N;
+  ip.positions = c.positions;
+  ip.velocities = c.velocities;
+  ip.seed = 77;
+  return make_initial_bodies(ip);
+}
+
+ParticleParams params(const Case& c, const std::string& schedule) {
+  ParticleParams p;
+  p.r = c.r;
+  p.delta = c.delta;
+  p.geometry = c.geometry;
+  p.t_end = c.t_end;
+  p.samples = 12;  // every sample time ends a window
+  p.clusters = false;
+  p.schedule = schedule;
+  return p;
+}
+
+void expect_same_run(const Case& c) {
+  const Bodies b = start(c);
+  const double L = static_cast<double>(c.N);
+  const RunResult global = simulate(b, L, params(c, "global"));
+  const RunResult windows = simulate(b, L, params(c, "windows"));
+  ASSERT_EQ(global.stop.reason, StopReason::completed);
+  ASSERT_EQ(windows.stop.reason, StopReason::completed);
+  ASSERT_GT(global.collisions, 10 * c.N);  // long enough for many windows
+  EXPECT_EQ(windows.collisions, global.collisions);
+  EXPECT_EQ(windows.series.elastic, global.series.elastic);
+  EXPECT_EQ(windows.series.T, global.series.T);
+  ASSERT_EQ(windows.final_state.size(), global.final_state.size());
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < global.final_state.size(); ++i)
+    differ += windows.final_state.x[i] != global.final_state.x[i] ||
+              windows.final_state.v[i] != global.final_state.v[i];
+  EXPECT_EQ(differ, 0u) << "bodies whose x or v differ in any bit";
+  // The energy lost is summed in another order: equal to rounding of the sum.
+  const double lost = global.series.dissipated.back();
+  EXPECT_NEAR(windows.series.dissipated.back(), lost, 1e-12 * lost);
+}
+
+TEST(WindowScheduler, SameCollisionsAsTheGlobalQueueOnARing) {
+  expect_same_run({20000, "random", "uniform", "ring", 0.9, 1e-2, 300.0});
+}
+
+TEST(WindowScheduler, SameCollisionsOnALatticeWithGaussianVelocities) {
+  expect_same_run({12000, "lattice", "gaussian", "ring", 0.5, 1e-2, 300.0});
+}
+
+TEST(WindowScheduler, SameCollisionsOnALineElastic) {
+  expect_same_run({8000, "random", "uniform", "line", 1.0, 0.0, 100.0});
+}
+
+TEST(WindowScheduler, FallsBackToTheGlobalQueueWhenNoCutCanOpen) {
+  // Every body at the same point: every gap is 0, no window can advance, and the
+  // run continues on the global queue with the same result.
+  Bodies b = start({2048, "random", "uniform", "line", 0.9, 1e-2, 1.0});
+  for (double& x : b.x) x = 100.0;
+  Case c{2048, "", "", "line", 0.9, 1e-2, 20.0};
+  const RunResult global = simulate(b, 2048.0, params(c, "global"));
+  const RunResult windows = simulate(b, 2048.0, params(c, "windows"));
+  ASSERT_GT(global.collisions, 2048u);
+  EXPECT_EQ(windows.collisions, global.collisions);
+  EXPECT_EQ(windows.final_state.x, global.final_state.x);
+  EXPECT_EQ(windows.final_state.v, global.final_state.v);
+}
+
+TEST(WindowScheduler, HaltsOnlyBetweenWindowsWithMomentumKept) {
+  // A collision limit stops the run after the window in which it is reached: all
+  // domains then stand at one time, so the state is a state of the gas.
+  Case c{50000, "random", "uniform", "ring", 0.9, 1e-2, 1e6};
+  const Bodies b = start(c);
+  ParticleParams p = params(c, "windows");
+  p.max_collisions = 100000;
+  const RunResult out = simulate(b, 50000.0, p);
+  EXPECT_EQ(out.stop.reason, StopReason::event_limit);
+  EXPECT_GE(out.collisions, p.max_collisions);
+  EXPECT_LE(out.collisions, p.max_collisions + 5 * c.N);  // at most one window (~4 per body) more
+  double p0 = 0, p1 = 0;
+  for (double v : b.v) p0 += v;
+  for (double v : out.final_state.v) p1 += v;
+  EXPECT_NEAR(p1, p0, 1e-9 * c.N);  // rounding of ~10^5 collisions
+  for (std::size_t i = 1; i < out.final_state.size(); ++i)
+    ASSERT_LE(out.final_state.x[i - 1], out.final_state.x[i]) << "bodies out of order at " << i;
+}
+
+TEST(WindowScheduler, RefusedWhereItIsNotExact) {
+  Case c{4096, "random", "uniform", "ring", 0.0, 1e-2, 10.0};  // r = 0 merges
+  const Bodies b = start(c);
+  EXPECT_THROW(simulate(b, 4096.0, params(c, "windows")), InputError);
+  c.r = 0.5;
+  c.delta = 0.0;  // inelastic collapse possible
+  EXPECT_THROW(simulate(b, 4096.0, params(c, "windows")), InputError);
+  ParticleParams p = params({4096, "", "", "ring", 0.9, 1e-2, 10.0}, "sometimes");
+  EXPECT_THROW(simulate(b, 4096.0, p), InputError);
+}
+
+}  // namespace
+}  // namespace shockgas::particles
