@@ -117,6 +117,59 @@ class WindowScheduler {
     return std::max((1.0 - 1e-6) * gap(i, t) - slack, 0.0);
   }
 
+  // How long from t the cut c (pair c, c + 1) surely stays open. A chain of
+  // collisions carries velocity from a body k to body c by moving bodies (at most
+  // v_max) while c moves at least at v_min, so from body k it reaches c no sooner
+  // than (x_c - x_k) / dv, dv = v_max - v_min; likewise from the right to c + 1.
+  // Until t + D, then, c and c + 1 keep velocities within those of the bodies at
+  // most dv D away on their side (max_L on the left, min_R on the right), and the
+  // gap G closes at most at max_L - min_R: the cut holds while G > (max_L - min_R) D.
+  // (The first cut to close would have to break this bound first.) Scans up to
+  // `reach` bodies; never less than the global bound G / dv.
+  double cut_bound(std::size_t c, double t, double dv) const {
+    constexpr int reach = 64;
+    const double inf = std::numeric_limits<double>::infinity();
+    if (!(dv > 0)) return inf;
+    const double G = safe_gap(c, t);
+    const auto& body = e_.body_;
+    const std::size_t r = wrap(c + 1);
+    auto at = [&](std::size_t k) { return body[k].x + body[k].v * (t - body[k].t); };
+    const double xl = at(c), xr = at(r) + (r < c ? e_.L_ : 0.0);
+    double max_l = body[c].v, min_r = body[r].v;
+    // Next bodies outward and their distances (unrolled); +inf past a line's end.
+    std::size_t kl = c, kr = r;
+    double shift_l = 0, shift_r = r < c ? e_.L_ : 0.0;
+    auto step_left = [&]() {
+      if (kl == 0 && !e_.ring_) return inf;
+      if (kl == 0) shift_l -= e_.L_;
+      kl = kl == 0 ? n() - 1 : kl - 1;
+      return xl - (at(kl) + shift_l);
+    };
+    auto step_right = [&]() {
+      if (kr == n() - 1 && !e_.ring_) return inf;
+      if (kr == n() - 1) shift_r += e_.L_;
+      kr = kr == n() - 1 ? 0 : kr + 1;
+      return at(kr) + shift_r - xr;
+    };
+    double dl = step_left(), dr = step_right();
+    const double slack = 1e-12 * (e_.L_ + std::abs(xl));  // rounding of the distances, as in safe_gap
+    double bound = G / dv;
+    for (int k = 0; k < 2 * reach; ++k) {
+      const double horizon = (std::min(dl, dr) - slack) / dv;  // the sets are complete until then
+      const double d = max_l > min_r ? G / (max_l - min_r) : inf;
+      if (d <= horizon) return std::max(d, G / dv);
+      bound = std::max(bound, horizon);
+      if (dl <= dr) {
+        max_l = std::max(max_l, body[kl].v);
+        dl = std::max(dl, step_left());  // rounding aside, distances grow outward
+      } else {
+        min_r = std::min(min_r, body[kr].v);
+        dr = std::max(dr, step_right());
+      }
+    }
+    return bound;
+  }
+
   // The widest pair among slots c - w .. c + w (mod n on a ring, inside the line).
   std::size_t widest_near(std::size_t c, std::size_t w, double t) const {
     std::size_t best = c;
@@ -144,7 +197,7 @@ class WindowScheduler {
     for (std::size_t k = e_.ring_ ? 0 : 1; k < domains; ++k) {
       const std::size_t c = widest_near(k * n() / domains, w, t);
       cuts.push_back(c);
-      bound.push_back(dv > 0 ? safe_gap(c, t) / dv : std::numeric_limits<double>::infinity());
+      bound.push_back(cut_bound(c, t, dv));
     }
     std::vector<double> sorted = bound;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
