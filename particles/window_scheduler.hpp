@@ -19,9 +19,10 @@
 //    gap among the D/8 pairs on either side. Cuts whose bound is below a quarter
 //    of the median bound are dropped (their domains join), so that one dense
 //    cluster does not shorten every window;
-//  * T_w = T + min over cuts of G / (v_max - v_min), G less a margin for
-//    rounding (see safe_gap), at most about 4 collisions per body at the
-//    last window's rate, and at most t_stop;
+//  * T_w = T + min over cuts of their bound (cut_bound: G over the spread of the
+//    velocities near the cut, at least G / (v_max - v_min); G less a margin for
+//    rounding, see safe_gap), at most about 4 collisions per body at the last
+//    window's rate, and at most t_stop;
 //  * each domain (the bodies between two cuts) runs alone to T_w with its own
 //    tournament tree over its pairs, small enough for the core's caches. The
 //    contact times are computed by the same function from the same states as in
