@@ -12,6 +12,7 @@
 #include "plots.hpp"
 #include "run_state.hpp"
 #include "shockgas/continuum/solve.hpp"
+#include "shockgas/particles/simulate.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/version.hpp"
 
@@ -77,12 +78,15 @@ std::string brief(double value) {
 }
 
 // Every solver checks its own limits (CFL bound, cells against nu, ...) when it
-// starts; a zero-length solve runs those checks now, so that bad input stops
-// the run before any work and before anything is written.
+// starts; a zero-length solve runs those checks now, and the particle engine
+// checks a requested schedule against the initial bodies, so that bad input
+// stops the run before any work and before anything is written.
 void preflight(const Scene& scene) {
-  if (!scene.has_continuum) return;
-  const InitialField field = make_initial_field(scene.initial, 0);
   try {
+    if (scene.has_particles && scene.particles.solver == "events" && scene.particles.schedule == "windows")
+      particles::check_schedule(make_initial_bodies(scene.initial, 0), scene.particles);
+    if (!scene.has_continuum) return;
+    const InitialField field = make_initial_field(scene.initial, 0);
     for (const auto& name : scene.continuum.solvers) continuum::solve(name, field, scene.continuum, 0.0);
   } catch (const InputError& e) {
     const auto it = scene.key_origin.find(e.key());

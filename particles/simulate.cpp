@@ -96,21 +96,18 @@ detail::Counters counters(const detail::EventEngine<Linked>& e) {
           e.count(CollisionKind::merge), e.dissipated()};
 }
 
-// Time windows over domains when they are exact and worth it (particles.schedule).
-bool use_windows(std::size_t n, const CollisionRule& rule, const ParticleParams& p, bool linked) {
-  if (p.schedule == "global") return false;
-  const bool possible = !linked && detail::WindowScheduler::applicable(n, rule);
-  require(possible || p.schedule != "windows", "particles.schedule", p.schedule,
-          "\"windows\" only for equal masses without merges or inelastic collapse (delta > 0 or r = 1), "
-          "N >= 1024; else \"auto\" or \"global\"");
-  return possible;
+CollisionRule rule_of(const ParticleParams& p) { return {p.r, p.delta, p.subthreshold == "sticky"}; }
+
+// Time windows over domains where they are exact (particles.schedule).
+bool windows_possible(const Bodies& initial, const ParticleParams& p) {
+  return equal_masses(initial) && detail::WindowScheduler::applicable(initial.size(), rule_of(p));
 }
 
 template <bool Linked>
 RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleParams& p,
                      const ProgressCallback& progress) {
-  const CollisionRule rule{p.r, p.delta, p.subthreshold == "sticky"};
-  const bool windows = use_windows(initial.size(), rule, p, Linked);
+  const CollisionRule rule = rule_of(p);
+  const bool windows = !Linked && p.schedule != "global" && windows_possible(initial, p);
   detail::Recorder recorder(p, initial.size(), L, ring);
   detail::EventEngine<Linked> engine(initial, L, ring, rule, !windows);
   std::optional<detail::WindowScheduler> scheduler;
@@ -140,6 +137,12 @@ RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleP
 
 }  // namespace
 
+void check_schedule(const Bodies& initial, const ParticleParams& p) {
+  require(p.schedule != "windows" || windows_possible(initial, p), "particles.schedule", p.schedule,
+          "\"windows\" only for equal masses without merges or inelastic collapse (delta > 0 or r = 1), "
+          "N >= 1024; else \"auto\" or \"global\"");
+}
+
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
                    const ProgressCallback& progress) {
   validate(p);
@@ -148,7 +151,8 @@ RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
   require(!p.spacetime || initial.size() <= 100000, "particles.spacetime", std::string("true"),
           "a space-time record only for N <= 10^5");
   if (p.solver == "hull") return detail::simulate_hull(initial, L, ring, p);
-  const CollisionRule rule{p.r, p.delta, p.subthreshold == "sticky"};
+  check_schedule(initial, p);
+  const CollisionRule rule = rule_of(p);
   if (rule.can_merge() || !equal_masses(initial)) return run_events<true>(initial, L, ring, p, progress);
   return run_events<false>(initial, L, ring, p, progress);
 }

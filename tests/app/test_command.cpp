@@ -61,15 +61,29 @@ TEST(Command, SolverLimitIsCheckedBeforeAnyWork) {
   const fs::path scene = write_scene(dir, kSmallScene);
   const fs::path out = dir / "out";
   // MUSCL-Hancock with the mc limiter is stable only up to CFL 0.85 (godunov_scheme.hpp).
-  EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set", "continuum.solvers=[\"godunov2\"]",
-                 "--set", "continuum.cfl=0.95"}),
+  EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set",
+                 "continuum.solvers=[\"godunov2\"]", "--set", "continuum.cfl=0.95"}),
             2);
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(Command, MissingSceneFileExitsTwo) {
-  EXPECT_EQ(run({"run", "/nonexistent/scene.toml", "-q"}), 2);
+TEST(Command, ScheduleIsCheckedBeforeAnyWork) {
+  const fs::path dir = temp_dir("schedule");
+  const fs::path scene = write_scene(dir, kSmallScene);
+  const fs::path out = dir / "out";
+  // r = 0 merges bodies: the time windows do not apply (window_scheduler.hpp).
+  EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set",
+                 "particles.schedule=\"windows\"", "--set", "initial.N=2048", "--set", "particles.r=0"}),
+            2);
+  EXPECT_FALSE(fs::exists(out));
+  // The same with r = 0.5 runs.
+  EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set",
+                 "particles.schedule=\"windows\"", "--set", "initial.N=2048", "--set", "particles.t_end=2"}),
+            0);
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
 }
+
+TEST(Command, MissingSceneFileExitsTwo) { EXPECT_EQ(run({"run", "/nonexistent/scene.toml", "-q"}), 2); }
 
 TEST(Command, UnknownSubcommandOrOptionExitsTwo) {
   EXPECT_EQ(run({"frobnicate"}), 2);

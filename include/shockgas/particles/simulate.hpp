@@ -26,6 +26,10 @@ namespace shockgas::particles {
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& params,
                    const ProgressCallback& progress = {});
 
+// Throws InputError when params.schedule = "windows" cannot be honoured for
+// these bodies (windows need equal masses, no merges and no inelastic collapse).
+void check_schedule(const Bodies& initial, const ParticleParams& params);
+
 // Mean and standard error (sample standard deviation / sqrt(count)) over the
 // realizations that reached each sample.
 struct SeriesStats {
