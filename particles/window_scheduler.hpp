@@ -31,8 +31,8 @@
 //    overlapping pairs at exactly the same time: test WindowScheduler.*);
 //  * two domains run at once, interleaved event by event, so that their serial
 //    chains overlap in the core.
-// If a window cannot advance (every cut candidate closed), the run continues on
-// the global queue.
+// If a window cannot advance (every cut candidate closed), or 8 windows in a row
+// hold fewer than N/64 collisions, the run continues on the global queue.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -74,8 +74,13 @@ class WindowScheduler {
         e_.build_queue();
         break;
       }
+      const std::uint64_t before = e_.count_[3];
       if (run_window(w, watch, halt)) return EngineStop::stall;
       e_.now_ = std::max(e_.now_, w.end);
+      // Windows that stay thin (cuts barely open: a gas in contact everywhere)
+      // cost O(N) each for a few collisions; the global queue is cheaper then.
+      thin_ = !w.last && e_.count_[3] - before < n() / 64 ? thin_ + 1 : 0;
+      if (thin_ >= 8) global_ = true, e_.build_queue();
       if (halt) return EngineStop::halted;
       if (w.last) return EngineStop::reached;
     }
@@ -381,6 +386,7 @@ class WindowScheduler {
   bool v_known_ = false;
   bool refold_ = false;  // this window gathers the range anew
   std::uint64_t windows_ = 0;
+  int thin_ = 0;         // consecutive thin windows
   bool global_ = false;  // continued on the global queue
 };
 
