@@ -89,6 +89,21 @@ TEST(WindowScheduler, FastBodiesDoNotCrossTheCuts) {
   EXPECT_EQ(windows.final_state.v, global.final_state.v);
 }
 
+TEST(WindowScheduler, FastElasticBodiesCrossingTheGasDoNotCrossTheCuts) {
+  // r = 1: a fast velocity passes from body to body (equal masses exchange
+  // velocities) and crosses the gas at 20 times the thermal speed with few
+  // collisions. The cuts' bounds must see it coming from far away.
+  Case c{8000, "random", "uniform", "ring", 1.0, 0.0, 50.0};
+  Bodies b = start(c);
+  for (std::size_t i = 300; i < b.size(); i += 400) b.v[i] = i % 800 == 300 ? 20.0 : -20.0;
+  const RunResult global = simulate(b, 8000.0, params(c, "global"));
+  const RunResult windows = simulate(b, 8000.0, params(c, "windows"));
+  ASSERT_GT(global.collisions, 10 * c.N);
+  EXPECT_EQ(windows.collisions, global.collisions);
+  EXPECT_EQ(windows.final_state.x, global.final_state.x);
+  EXPECT_EQ(windows.final_state.v, global.final_state.v);
+}
+
 TEST(WindowScheduler, FallsBackToTheGlobalQueueWhenNoCutCanOpen) {
   // Every body at the same point: every gap is 0, no window can advance, and the
   // run continues on the global queue with the same result.
