@@ -137,19 +137,6 @@ class EventTree {
     t = take ? u : t;
 #endif
   }
-  // (t, slot) := (u, at) if u > t.
-  static void take_later(Key& t, std::uint32_t& slot, Key u, std::uint32_t at) {
-#if defined(__x86_64__)
-    asm("cmpq %[u], %[t]\n\tcmovlq %[u], %[t]\n\tcmovll %[at], %[slot]"
-        : [t] "+r"(t), [slot] "+r"(slot)
-        : [u] "r"(u), [at] "r"(at)
-        : "cc");
-#else
-    const bool take = u > t;
-    slot = take ? at : slot;
-    t = take ? u : t;
-#endif
-  }
   struct Node {
     Key t;               // winner's event time, as key_of
     std::uint32_t slot;  // winner's slot
@@ -215,14 +202,13 @@ class EventTree {
     for (; k > 1; k >>= 1) {
       const Key sib_t = key_[k ^ 1];
       const std::uint32_t sib_slot = win_[k ^ 1];
-      if constexpr (Hint) {
-        // The loser of this match may be the runner-up.
-        Key lose_t = sib_t;
-        std::uint32_t lose_slot = sib_slot;
-        take_later(lose_t, lose_slot, t, slot);
-        take_earlier(t2, slot2, lose_t, lose_slot);
-      }
+      const Key old_t = t;
+      const std::uint32_t old_slot = slot;
       take_earlier(t, slot, sib_t, sib_slot);
+      if constexpr (Hint) {
+        // The loser of this match (the one of the two not kept) may be the runner-up.
+        take_earlier(t2, slot2, old_t ^ sib_t ^ t, old_slot ^ sib_slot ^ slot);
+      }
       key_[k >> 1] = t;
       win_[k >> 1] = slot;
     }
