@@ -11,11 +11,11 @@
 // Two layouts, chosen once per run:
 //  * Linked = false: equal masses, no merges; neighbours are i +- 1 (mod N on the
 //    ring). 24 bytes per body + 8 per slot time + 4 per slot for the tree over
-//    blocks of 8 slots = 36 bytes per particle (32 when a WindowScheduler drives
+//    blocks of 8 slots = 35 bytes per particle (32 when a WindowScheduler drives
 //    it: no global tree, a slot time each).
 //  * Linked = true: masses and merges; the live bodies form a doubly linked list
 //    (a ring on the ring). A merge keeps the left body, unlinks the right one and
-//    sets its slot to +inf. 36 + 8 (mass) + 8 (links) = 52 bytes per particle.
+//    sets its slot to +inf. 35 + 8 (mass) + 8 (links) = 51 bytes per particle.
 //
 // Ring geometry: positions are unrolled (never wrapped while running); the pair
 // whose right body has the lower index wraps, the right body counted at x + L.
@@ -143,16 +143,17 @@ class EventEngine {
       if constexpr (Linked)
         if (mass_[i] == 0.0) continue;
       const Body& b = body_[i];
-      f(i, b.x + b.v * (t - b.t), b.v, mass(i));
+      f(i, b.at(t), b.v, mass(i));
     }
   }
 
  private:
   friend class WindowScheduler;
   struct Body {
-    double x;  // position at local time t [length], unrolled
-    double v;  // velocity [length/time]
-    double t;  // local time [time]
+    double x;                                              // position at local time t [length], unrolled
+    double v;                                              // velocity [length/time]
+    double t;                                              // local time [time]
+    double at(double s) const { return x + v * (s - t); }  // position at time s
   };
 
   double mass(std::size_t i) const {
@@ -189,13 +190,19 @@ class EventEngine {
   double pair_time(std::size_t i, double now) const {
     const std::size_t j = right(i);
     if (j == none) return EventTree::never;
-    return contact_time(body_[i], body_[j], j <= i ? L_ : 0.0, now);
+    return contact_time(i, j, now);
   }
+  // Contact time of the pair (i, j = right(i)), which exists.
+  double contact_time(std::size_t i, std::size_t j, double now) const {
+    return contact_time(body_[i], body_[j], shift(i, j), now);
+  }
+  // Where the ring's wrapping pair counts its right body: at x + L.
+  double shift(std::size_t i, std::size_t j) const { return j <= i ? L_ : 0.0; }
   // Contact time of body a and its right neighbour c, counted at x + shift.
   static double contact_time(const Body& a, const Body& c, double shift, double now) {
     const double g = a.v - c.v;
     const double tm = std::max(a.t, c.t);
-    const double gap = (c.x + c.v * (tm - c.t) + shift) - (a.x + a.v * (tm - a.t));
+    const double gap = (c.at(tm) + shift) - a.at(tm);
     // Never before now: a gap closed by rounding is a contact now, so time never
     // runs backwards.
     const double t = std::max(tm + std::max(gap, 0.0) / g, now);
@@ -223,10 +230,10 @@ class EventEngine {
   double meet(std::size_t i, std::size_t j, double t) {
     Body& a = body_[i];
     Body& c = body_[j];
-    const double x = a.x + a.v * (t - a.t);
+    const double x = a.at(t);
     a.x = x;
     a.t = t;
-    c.x = j <= i ? x - L_ : x;
+    c.x = x - shift(i, j);
     c.t = t;
     return x;
   }

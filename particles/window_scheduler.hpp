@@ -110,10 +110,7 @@ class WindowScheduler {
   // Gap of pair slot i at time t (i < n - 1 on a line).
   double gap(std::size_t i, double t) const {
     const std::size_t j = wrap(i + 1);
-    const auto& a = e_.body_[i];
-    const auto& c = e_.body_[j];
-    const double shift = j <= i ? e_.L_ : 0.0;
-    return (c.x + c.v * (t - c.t) + shift) - (a.x + a.v * (t - a.t));
+    return (e_.body_[j].at(t) + e_.shift(i, j)) - e_.body_[i].at(t);
   }
 
   // The gap of slot i at t less its rounding: a few ulps of the positions (they
@@ -139,12 +136,12 @@ class WindowScheduler {
     const double G = safe_gap(c, t);
     const auto& body = e_.body_;
     const std::size_t r = wrap(c + 1);
-    auto at = [&](std::size_t k) { return body[k].x + body[k].v * (t - body[k].t); };
-    const double xl = at(c), xr = at(r) + (r < c ? e_.L_ : 0.0);
+    auto at = [&](std::size_t k) { return body[k].at(t); };
+    const double xl = at(c), xr = at(r) + e_.shift(c, r);
     double max_l = body[c].v, min_r = body[r].v;
     // Next bodies outward and their distances (unrolled); +inf past a line's end.
     std::size_t kl = c, kr = r;
-    double shift_l = 0, shift_r = r < c ? e_.L_ : 0.0;
+    double shift_l = 0, shift_r = e_.shift(c, r);
     auto step_left = [&]() {
       if (kl == 0 && !e_.ring_) return inf;
       if (kl == 0) shift_l -= e_.L_;
@@ -291,21 +288,13 @@ class WindowScheduler {
     const std::size_t k = s.tree.top();
     const std::size_t m = s.tree.size();
     const std::size_t i = wrap(s.base + k);
-    const std::size_t j = i + 1 < n() ? i + 1 : 0;  // internal pair: on a line i + 1 < n
+    const std::size_t j = e_.right(i);  // an internal pair: never none
     s.frozen = t == s.now ? s.frozen + 1 : 0;
     s.now = t;
     ++s.count[e_.collide_equal(i, j, t, s.dissipated, s.last_x)];
-    const auto& body = e_.body_;
-    const double L = e_.L_;
-    if (k > 0) {  // pair (i - 1, i), inside the domain
-      const std::size_t p = i > 0 ? i - 1 : n() - 1;
-      s.tree.set(k - 1, Engine::contact_time(body[p], body[i], i > 0 ? 0.0 : L, t));
-    }
-    s.tree.set(k, EventTree::never);  // i and j separate
-    if (k + 1 < m) {                  // pair (j, j + 1), inside the domain
-      const std::size_t q = j + 1 < n() ? j + 1 : 0;
-      s.tree.set(k + 1, Engine::contact_time(body[j], body[q], q > j ? 0.0 : L, t));
-    }
+    if (k > 0) s.tree.set(k - 1, e_.contact_time(e_.left(i), i, t));  // pair (i - 1, i), inside the domain
+    s.tree.set(k, EventTree::never);                                  // i and j separate
+    if (k + 1 < m) s.tree.set(k + 1, e_.contact_time(j, e_.right(j), t));  // pair (j, j + 1), inside
     s.tree.refresh_range(k > 0 ? k - 1 : k, k + 1 < m ? k + 1 : k);
     return true;
   }
