@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "shockgas/core/error.hpp"
@@ -61,6 +62,18 @@ void expect_same_run(const Case& c) {
   EXPECT_NEAR(windows.series.dissipated.back(), lost, 1e-12 * lost);
 }
 
+// Bodies b from scratch on both schedules: at least `min_collisions`, and the
+// same collisions and final state to the bit.
+void expect_same_final_state(const Bodies& b, const Case& c, std::uint64_t min_collisions) {
+  const double L = static_cast<double>(c.N);
+  const RunResult global = simulate(b, L, params(c, "global"));
+  const RunResult windows = simulate(b, L, params(c, "windows"));
+  ASSERT_GT(global.collisions, min_collisions);
+  EXPECT_EQ(windows.collisions, global.collisions);
+  EXPECT_EQ(windows.final_state.x, global.final_state.x);
+  EXPECT_EQ(windows.final_state.v, global.final_state.v);
+}
+
 TEST(WindowScheduler, SameCollisionsAsTheGlobalQueueOnARing) {
   expect_same_run({20000, "random", "uniform", "ring", 0.9, 1e-2, 300.0});
 }
@@ -81,12 +94,7 @@ TEST(WindowScheduler, FastBodiesDoNotCrossTheCuts) {
   Bodies b = start(c);
   for (std::size_t i = 1550; i < 1700; ++i) b.v[i] = 20.0;   // toward the cut near body 2000
   for (std::size_t i = 6300; i < 6450; ++i) b.v[i] = -20.0;  // toward the cut near body 6000
-  const RunResult global = simulate(b, 8000.0, params(c, "global"));
-  const RunResult windows = simulate(b, 8000.0, params(c, "windows"));
-  ASSERT_GT(global.collisions, 10 * c.N);
-  EXPECT_EQ(windows.collisions, global.collisions);
-  EXPECT_EQ(windows.final_state.x, global.final_state.x);
-  EXPECT_EQ(windows.final_state.v, global.final_state.v);
+  expect_same_final_state(b, c, 10 * c.N);
 }
 
 TEST(WindowScheduler, FastElasticBodiesCrossingTheGasDoNotCrossTheCuts) {
@@ -96,12 +104,7 @@ TEST(WindowScheduler, FastElasticBodiesCrossingTheGasDoNotCrossTheCuts) {
   Case c{8000, "random", "uniform", "ring", 1.0, 0.0, 50.0};
   Bodies b = start(c);
   for (std::size_t i = 300; i < b.size(); i += 400) b.v[i] = i % 800 == 300 ? 20.0 : -20.0;
-  const RunResult global = simulate(b, 8000.0, params(c, "global"));
-  const RunResult windows = simulate(b, 8000.0, params(c, "windows"));
-  ASSERT_GT(global.collisions, 10 * c.N);
-  EXPECT_EQ(windows.collisions, global.collisions);
-  EXPECT_EQ(windows.final_state.x, global.final_state.x);
-  EXPECT_EQ(windows.final_state.v, global.final_state.v);
+  expect_same_final_state(b, c, 10 * c.N);
 }
 
 TEST(WindowScheduler, FallsBackToTheGlobalQueueWhenNoCutCanOpen) {
@@ -109,13 +112,7 @@ TEST(WindowScheduler, FallsBackToTheGlobalQueueWhenNoCutCanOpen) {
   // run continues on the global queue with the same result.
   Bodies b = start({2048, "random", "uniform", "line", 0.9, 1e-2, 1.0});
   for (double& x : b.x) x = 100.0;
-  Case c{2048, "", "", "line", 0.9, 1e-2, 20.0};
-  const RunResult global = simulate(b, 2048.0, params(c, "global"));
-  const RunResult windows = simulate(b, 2048.0, params(c, "windows"));
-  ASSERT_GT(global.collisions, 2048u);
-  EXPECT_EQ(windows.collisions, global.collisions);
-  EXPECT_EQ(windows.final_state.x, global.final_state.x);
-  EXPECT_EQ(windows.final_state.v, global.final_state.v);
+  expect_same_final_state(b, {2048, "", "", "line", 0.9, 1e-2, 20.0}, 2048);
 }
 
 TEST(WindowScheduler, HaltsOnlyBetweenWindowsWithMomentumKept) {
