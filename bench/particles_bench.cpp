@@ -103,26 +103,20 @@ void BM_Baseline(benchmark::State& state) {
   }
 }
 
-BENCHMARK(BM_Engine)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond)->Iterations(2);
-BENCHMARK(BM_EngineGlobalQueue)
-    ->Arg(10'000)
-    ->Arg(100'000)
-    ->Arg(1'000'000)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
-BENCHMARK(BM_Baseline)
-    ->Arg(10'000)
-    ->Arg(100'000)
-    ->Arg(1'000'000)
-    ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
+constexpr std::size_t kSizes[] = {10'000, 100'000, 1'000'000};
+void sizes(benchmark::internal::Benchmark* b) {
+  for (std::size_t n : kSizes) b->Arg(static_cast<std::int64_t>(n));
+  b->Unit(benchmark::kMillisecond);
+}
+BENCHMARK(BM_Engine)->Apply(sizes)->Iterations(2);
+BENCHMARK(BM_EngineGlobalQueue)->Apply(sizes)->Iterations(1);
+BENCHMARK(BM_Baseline)->Apply(sizes)->Iterations(1);
 
 void write_csv(const std::string& path) {
   std::ofstream out(path);
-  out << "N,collisions,engine_per_cpu_s,global_queue_per_cpu_s,baseline_per_cpu_s,ratio_cpu,engine_per_wall_"
-         "s,"
-         "global_queue_per_wall_s,baseline_per_wall_s,ratio_wall\n";
-  for (std::size_t n : {10'000, 100'000, 1'000'000}) {
+  out << "N,collisions,engine_per_cpu_s,global_queue_per_cpu_s,baseline_per_cpu_s,ratio_cpu,"
+         "engine_per_wall_s,global_queue_per_wall_s,baseline_per_wall_s,ratio_wall\n";
+  for (std::size_t n : kSizes) {
     const Rate& e = g_rates[{"engine", n}];
     const Rate& q = g_rates[{"global", n}];
     const Rate& b = g_rates[{"baseline", n}];
