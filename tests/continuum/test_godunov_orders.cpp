@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "convergence_order.hpp"
 #include "shockgas/continuum/godunov.hpp"
 #include "shockgas/continuum/hopf_lax.hpp"
 
@@ -53,22 +54,8 @@ Errors errors(int order, const std::string& limiter, double t) {
   return e;
 }
 
-// Least-squares slope of -log(error) against log(cells).
-double order_of(const std::vector<double>& error) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(kGrids.size());
-  for (std::size_t k = 0; k < kGrids.size(); ++k) {
-    const double x = std::log(static_cast<double>(kGrids[k])), y = -std::log(error[k]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 double report(const std::string& what, const std::vector<double>& error) {
-  const double rate = order_of(error);
+  const double rate = convergence_order(kGrids, error);
   std::printf("  %-34s L1 %.3e (64 cells) .. %.3e (1024 cells), order %.3f\n", what.c_str(), error.front(),
               error.back(), rate);
   return rate;

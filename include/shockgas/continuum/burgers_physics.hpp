@@ -75,7 +75,9 @@ struct BurgersContinuity {
   // x/t = 0. The mass flux is rho_upwind * v(0): left density if the solution at
   // the interface is the left state (a shock with s > 0, or vL >= 0), right if it
   // is the right state, 0 inside a transonic fan (v(0) = 0), and the mean of both
-  // one-sided fluxes on a stationary shock (s = 0).
+  // one-sided fluxes on a stationary shock (s = 0). The transonic zero is also
+  // the smooth solution's rho v at a sonic point; what a first-order scheme makes
+  // of the density there is in godunov.hpp.
   static State riemann_flux(const State& L, const State& R) {
     const BurgersRiemannSample w = burgers_riemann(L[0], R[0], 0.0);
     switch (w.side) {

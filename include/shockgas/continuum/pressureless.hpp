@@ -21,7 +21,11 @@ namespace shockgas::continuum {
 // like a contact, over ~sqrt(dx |u| t) (about 15 cells at 1024 cells, t = 0.5),
 // while its peak and its momentum / mass stay on the exact cluster. The velocity
 // error after shocks therefore falls only as dx^0.64 (sine, t = 0.5), against
-// dx^1 for solve_godunov, whose Burgers shock stays two cells wide.
+// dx^1 for solve_godunov, whose Burgers shock stays two cells wide. At a sonic
+// point of smooth data the two cells beside the transonic face are isolated
+// blocks, as in solve_godunov (godunov.hpp): u_k stays u_k(0) and
+// rho_k(t) = rho_k(0) exp(-|u_k(0)| t / dx), an O(1) density error on every grid
+// (order 0 in the maximum norm, 1 in L1; tests/continuum/test_godunov_sonic.cpp).
 // Returns x, v = m / rho (0 in vacuum), rho at t_end and stats["steps"].
 // Errors as solve_godunov.
 ContinuumResult solve_pressureless(const InitialField& f, const ContinuumParams& p, double t_end,
