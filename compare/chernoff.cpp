@@ -149,6 +149,8 @@ double chernoff_log_density(double z) {
 
 double chernoff_density(double z) { return std::exp(chernoff_log_density(z)); }
 
+double chernoff_integral(double a, double b) { return integrate_density(a, b); }
+
 double chernoff_survival(double z) {
   if (z < 0) return 1.0 - chernoff_survival(-z);
   return integrate_density(z, tail_end(z));
