@@ -21,12 +21,12 @@
 // write the same constant as 4^(4/3) / (2 Ai'(a_1))).
 #include "shockgas/compare/chernoff.hpp"
 
-#include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
 #include <numbers>
 
+#include "gauss_legendre.hpp"
 #include "shockgas/compare/airy.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -67,42 +67,16 @@ double line_for(double x) { return std::max(kCbrt4 * x * x, kMinLine); }
 
 double between_first_zeros() { return 0.5 * (zero(1).a + zero(2).a); }
 
-// Gauss-Legendre nodes and weights on [-1, 1], by Newton on P_n (exact for degree 2n - 1).
-constexpr int kGaussPoints = 16;
-struct GaussRule {
-  std::array<double, kGaussPoints> x{}, w{};
-};
-GaussRule make_gauss_rule() {
-  GaussRule rule;
-  constexpr int n = kGaussPoints;
-  for (int i = 0; i < n; ++i) {
-    double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      double p0 = 1, p1 = x;  // P_0, P_1; recurrence (j+1) P_{j+1} = (2j+1) x P_j - j P_{j-1}
-      for (int j = 1; j < n; ++j) {
-        const double p2 = ((2.0 * j + 1) * x * p1 - j * p0) / (j + 1.0);
-        p0 = p1, p1 = p2;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1);
-      const double step = p1 / dp;
-      x -= step;
-      if (std::abs(step) < 1e-16) break;
-    }
-    rule.x[i] = x;
-    rule.w[i] = 2.0 / ((1 - x * x) * dp * dp);
-  }
-  return rule;
-}
-
 // int_a^b f by Gauss-Legendre on panels of width <= 1/8.
 double integrate_density(double a, double b) {
-  static const GaussRule rule = make_gauss_rule();
+  static const GaussRule rule = gauss_legendre(16);
   const int panels = std::max(1, static_cast<int>(std::ceil(std::abs(b - a) * 8.0)));
   const double width = (b - a) / panels;
   double sum = 0;
   for (int p = 0; p < panels; ++p) {
     const double mid = a + (p + 0.5) * width;
-    for (int i = 0; i < kGaussPoints; ++i) sum += rule.w[i] * chernoff_density(mid + 0.5 * width * rule.x[i]);
+    for (std::size_t i = 0; i < rule.x.size(); ++i)
+      sum += rule.w[i] * chernoff_density(mid + 0.5 * width * rule.x[i]);
   }
   return 0.5 * width * sum;
 }
