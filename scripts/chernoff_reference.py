@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Reference values for the tests of compare/airy.cpp and compare/chernoff.cpp.
 
-Writes two tables into tests/compare/data/ (or the directory given):
+Writes three tables into tests/compare/data/ (or the directory given):
 
   airy_reference.csv      Ai(z) and Ai'(z) at complex z from SciPy (scipy.special.airy,
                           the AMOS library): rings |z| = r over all arguments, so that
@@ -14,8 +14,12 @@ Writes two tables into tests/compare/data/ (or the directory given):
                           on lines c that airy.cpp / chernoff.cpp do not use (c = -1 for
                           x < 0, which needs no residue, and c = 1.1 * 2^(2/3) x^2 + 0.3 for
                           x >= 0), with mpmath's own Airy function and quadrature.
+  cluster_mass_reference.csv  the mass-weighted cluster velocity density P_mass(u) of
+                          cluster_velocity_law.hpp from scripts/exact_laws.py (SciPy's
+                          Airy function and zeros, the zero sum with the density of the
+                          far zeros instead of a small-mu expansion).
 
-Run with Debian's Python (it has numpy, scipy and mpmath):
+Run with Debian's Python (it has numpy, scipy and mpmath); about 4 minutes:
     /usr/bin/python3 scripts/chernoff_reference.py [out_dir]
 """
 import os
@@ -64,12 +68,25 @@ def write_g(path):
             f.write("%s,%s\n" % (repr(float(x)), mp.nstr(g_reference(x), 20)))
 
 
+U_POINTS = [-2.5, -1.5, -0.7, 0, 0.3, 0.5, 1, 1.5, 2, 2.5, 3]
+
+
+def write_cluster(path):
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import exact_laws
+    with open(path, "w") as f:
+        f.write("# u,P_mass(u)  (scripts/exact_laws.py, scipy %s)\n" % __import__("scipy").__version__)
+        for u in U_POINTS:
+            f.write("%s,%.15g\n" % (repr(float(u)), exact_laws.cluster_mass_density(u)))
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "tests", "compare", "data")
     os.makedirs(out, exist_ok=True)
     write_airy(os.path.join(out, "airy_reference.csv"))
     write_g(os.path.join(out, "chernoff_g_reference.csv"))
+    write_cluster(os.path.join(out, "cluster_mass_reference.csv"))
 
 
 if __name__ == "__main__":
