@@ -8,6 +8,7 @@
 #include "gauss_legendre.hpp"
 #include "shockgas/compare/airy.hpp"
 #include "shockgas/compare/chernoff_table.hpp"
+#include "shockgas/compare/eulerian_velocity_law.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {
@@ -143,34 +144,23 @@ const ClusterVelocityLaw& cluster_velocity_law() {
   return law;
 }
 
-namespace {
-double scale_of(double D) {
-  require_above("compare.white_noise_intensity", D, 0.0);
-  return std::cbrt(4.0 * D);
-}
-}  // namespace
-
 double cluster_velocity_density(double z, double D) {
-  const double s = scale_of(D);
+  const double s = eulerian_velocity_scale(D);
   return cluster_velocity_law().mass_density(z / s) / s;
 }
 
-double cluster_velocity_cdf(double z, double D) { return cluster_velocity_law().mass_cdf(z / scale_of(D)); }
+double cluster_velocity_cdf(double z, double D) {
+  return cluster_velocity_law().mass_cdf(z / eulerian_velocity_scale(D));
+}
 
 double cluster_velocity_quantile(double p, double D) {
-  return scale_of(D) * cluster_velocity_law().mass_quantile(p);
+  return eulerian_velocity_scale(D) * cluster_velocity_law().mass_quantile(p);
 }
 
 std::vector<double> cluster_law_on_bins(std::span<const double> z_edges, double D) {
-  require(z_edges.size() >= 2, "compare.histogram_edges", z_edges.size(), ">= 2 edges");
-  const double s = scale_of(D);
-  std::vector<double> mean(z_edges.size() - 1);
-  for (std::size_t j = 0; j < mean.size(); ++j) {
-    const double width = z_edges[j + 1] - z_edges[j];
-    require(width > 0, "compare.histogram_edges", z_edges[j + 1], "increasing");
-    mean[j] = cluster_velocity_law().mass_integral(z_edges[j] / s, z_edges[j + 1] / s) / width;
-  }
-  return mean;
+  const ClusterVelocityLaw& law = cluster_velocity_law();
+  return scaled_law_on_bins(z_edges, eulerian_velocity_scale(D),
+                            [&](double a, double b) { return law.mass_integral(a, b); });
 }
 
 std::vector<double> cluster_velocity_samples(const std::vector<StickyCluster>& clusters, std::size_t bodies,

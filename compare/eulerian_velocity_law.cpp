@@ -60,16 +60,20 @@ double eulerian_velocity_cdf(double z, double D) { return chernoff_cdf(z / check
 
 double eulerian_velocity_quantile(double p, double D) { return checked_scale(D) * chernoff_quantile(p); }
 
-std::vector<double> eulerian_law_on_bins(std::span<const double> z_edges, double D) {
+std::vector<double> scaled_law_on_bins(std::span<const double> z_edges, double s,
+                                       const std::function<double(double, double)>& integral) {
   require(z_edges.size() >= 2, "compare.histogram_edges", z_edges.size(), ">= 2 edges");
-  const double s = checked_scale(D);
   std::vector<double> mean(z_edges.size() - 1);
   for (std::size_t j = 0; j < mean.size(); ++j) {
     const double width = z_edges[j + 1] - z_edges[j];
     require(width > 0, "compare.histogram_edges", z_edges[j + 1], "increasing");
-    mean[j] = chernoff_integral(z_edges[j] / s, z_edges[j + 1] / s) / width;
+    mean[j] = integral(z_edges[j] / s, z_edges[j + 1] / s) / width;
   }
   return mean;
+}
+
+std::vector<double> eulerian_law_on_bins(std::span<const double> z_edges, double D) {
+  return scaled_law_on_bins(z_edges, checked_scale(D), chernoff_integral);
 }
 
 DensityCurve eulerian_law_curve(double D, double z_max, std::size_t points) {

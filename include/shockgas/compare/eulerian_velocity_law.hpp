@@ -31,6 +31,7 @@
 // The law is the one-point law at a fixed Eulerian point (volume-weighted); the
 // mass-weighted law of the clusters' velocities (the paper's Fig. 4) differs.
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -47,8 +48,15 @@ double white_noise_intensity(double velocity_variance, double spacing);
 // (not white noise) and for positions other than "lattice".
 double white_noise_intensity(const InitialParams& p);
 
-// s = (4 D)^(1/3).
+// s = (4 D)^(1/3): z = s u for every law of cluster_velocity_law.hpp too.
+// Throws InputError unless D > 0.
 double eulerian_velocity_scale(double D);
+
+// Bin means of a law of z = s u given through its integral in u:
+// integral(a, b) = int_a^b P(u) du, mean_j = integral(e_j / s, e_(j+1) / s) / (e_(j+1) - e_j).
+// Throws InputError unless the edges increase (>= 2 of them).
+std::vector<double> scaled_law_on_bins(std::span<const double> z_edges, double s,
+                                       const std::function<double(double, double)>& integral);
 
 // The law of z: density f(z/s)/s, CDF, p-quantile.
 double eulerian_velocity_density(double z, double D);
