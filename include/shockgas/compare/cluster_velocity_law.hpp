@@ -21,22 +21,22 @@
 // changes by -2 s dxi (up to a constant), so the minimiser jumps from s_L to s_R
 // within dxi iff F(s_R) - F(s_L) is in [0, 2 mu dxi): the factor mu. (ii) Given
 // the two touchings at the level m, the path falls into three independent
-// pieces (Markov property). Outside [s_L, s_R], W stays above the parabola
-// m - (xi - s)^2: with X = W + (xi - s)^2 - m, Brownian motion with drift 2(s - xi)
-// killed at 0, each side gives the entrance density at its touching point, which
-// with its Girsanov weight exp(-(2/3)(s - xi)^3) is g(alpha) on the left and
-// g(beta) on the right (the same split gives Chernoff's f = g(z) g(-z) / 2 for
-// one touching). Between s_L and s_R, X makes an excursion; Girsanov turns the
-// drift into the potential 2x, and the kernel of (1/2) d^2/dx^2 - 2x on x > 0
-// with X = 0 absorbing has eigenfunctions Ai(4^(1/3) x + a_k), eigenvalues
-// 2^(1/3) a_k and norms 4^(-1/3) Ai'(a_k)^2, so the excursion density (d/dx d/dy
-// of the kernel at x = y = 0) is 4 K(mu), times the Girsanov weight
-// exp(-(2/3)(alpha^3 + beta^3)) that completes g(alpha) g(beta).
+// pieces (Markov property). X = W + (s - xi)^2 - m >= 0 is Brownian motion with
+// drift 2(s - xi), zero at s_L and s_R. Right of s_R it stays positive, which
+// gives the entrance factor h(beta) = d/dx P_x(X > 0 on (s_R, inf)) at x = 0; left
+// of s_L, by the reflection s -> 2 xi - s, h(alpha). Between them X makes an
+// excursion: by Girsanov its density is exp(-(2/3)(alpha^3 + beta^3)) times that
+// of Brownian motion killed at 0 and at rate 2x, whose kernel has the
+// eigenfunctions Ai(4^(1/3) x + a_k), eigenvalues 2^(1/3) a_k and norms
+// 4^(-1/3) Ai'(a_k)^2, so d/dx d/dy of it at x = y = 0 is 4 K(mu). Groeneboom's
+// g is h(s) exp(-(2/3) s^3) (one touching gives Chernoff's f = h(z) h(-z) / 2 =
+// g(z) g(-z) / 2, and h(s) -> 4 s, g(s) -> 4 s exp(-(2/3) s^3) as s -> inf), so the
+// three pieces make g(alpha) g(beta) K(alpha + beta).
 // (iii) The constant 2: the particle at s = 0 lies in the shock at xi iff
 // s_L < 0 < s_R, and its cluster is right of xi iff q*(xi) < 0, so
 //     int_{alpha > xi} int_{beta > -xi} n(alpha, beta) = f(xi)  (Chernoff's density)
 // for every xi; this switching identity holds with the constant 2 (and only
-// with it) to 1e-10 (tests/compare/test_cluster_velocity_law.cpp), and
+// with it) to 1e-14 (tests/compare/test_cluster_velocity_law.cpp), and
 // integrating it over xi gives mass conservation, int int (alpha + beta) n = 1.
 //
 // Hence the velocity of the cluster holding a randomly picked particle
@@ -50,7 +50,7 @@
 // mass integral is dominated by mu ~ u^(-2) and P_mass(u) ~ f(u) / (sqrt(2) |u|^3):
 // the same exp(-(2/3)|u|^3) tail as the Eulerian law, with a power fewer of |u|.
 // E_mass u^2 = 0.17571 (Eulerian: 0.26356): the r = 0 gas's temperature is
-// T t^(2/3) -> (4 D)^(2/3) 0.17571, 0.2128 for uniform velocities on [-1, 1].
+// T t^(2/3) -> (4 D)^(2/3) 0.17571, 0.2129 for uniform velocities on [-1, 1].
 // (Frachebourg & Martin, J. Fluid Mech. 417 (2000) 323, derive the shock
 // statistics of this problem; the formulas here were derived independently in
 // this form and are checked by the switching identity and by the exact hull.)
