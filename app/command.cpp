@@ -4,11 +4,12 @@
 
 #include <iostream>
 
-#include "shockgas/app/bench.hpp"
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
+#include "plots.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/studies/studies.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app {
@@ -21,7 +22,7 @@ struct Arguments {
   std::string scene_path, out_dir, result_path;
   std::vector<std::string> overrides;
   bool defaults = false, quiet = false, no_plots = false;
-  BenchOptions bench;
+  studies::StudyOptions bench;
 };
 
 void add_run(CLI::App& app, Arguments& args) {
@@ -52,7 +53,8 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     return kExitOk;
   }
   if (app.got_subcommand("bench")) {
-    const std::string dir = run_bench(args.bench);
+    const std::string dir = studies::run_studies(args.bench);
+    make_bench_charts(dir);
     std::cout << "bench results in " << dir << "/\n";
     return kExitOk;
   }

@@ -1,6 +1,6 @@
 // Work-precision of the continuum solvers (docs/performance.md): for each method
 // and setting, the error of the cell averages against the exact solution and the
-// median wall time of repeated runs, on the reference problems (bench_problems.hpp).
+// median wall time of repeated runs, on the reference problems (problems.hpp).
 //
 // Two references, never mixed in one chart:
 //  * wp_inviscid.csv: the exact inviscid solution (Hopf-Lax cell averages). The
@@ -15,13 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "bench_problems.hpp"
-#include "bench_sections.hpp"
+#include "problems.hpp"
+#include "sections.hpp"
 #include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/error.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 namespace {
 
@@ -192,4 +192,4 @@ void continuum_work_precision(const Context& ctx, FailureLog& failures) {
   viscous(ctx, failures);
 }
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

@@ -1,4 +1,4 @@
-// Stability of the particle engine against delta -> 0 (bench_stability.hpp):
+// Stability of the particle engine against delta -> 0 (stability.hpp):
 //  * stability_collapse.csv: with delta = 0 inelastic collapse stops a run.
 //    Three particles on a line collapse iff r < 7 - 4 sqrt(3) ~ 0.072; on a ring of
 //    N particles collapse needs about N_c = -ln(1-r)/(1-r) particles (McNamara &
@@ -10,12 +10,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bench_sections.hpp"
-#include "bench_stability.hpp"
+#include "sections.hpp"
+#include "stability.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/particles/simulate.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 using particles::ParticleParams;
 using particles::RunStop;
@@ -183,4 +183,4 @@ void particle_stability(const Context& ctx, FailureLog& failures) {
   threshold_rows(ctx, threshold, failures);
 }
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

@@ -13,7 +13,7 @@
 
 #include "shockgas/core/initial_condition.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 struct Problem {
   std::string name;
@@ -27,4 +27,4 @@ struct Problem {
 std::vector<Problem> reference_problems();
 Problem problem_by_name(const std::string& name);  // throws InputError for an unknown name
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

@@ -7,12 +7,12 @@
 #include <fstream>
 #include <string>
 
-#include "bench_common.hpp"
-#include "bench_stability.hpp"
+#include "common.hpp"
+#include "stability.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/core/error.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 namespace {
 
 TEST(BenchStability, CflScanFindsTheFirstOrderLimitAtOne) {
@@ -106,4 +106,4 @@ TEST(BenchStability, CsvWritesNonFiniteAsEmptyCell) {
 }
 
 }  // namespace
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

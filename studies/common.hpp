@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 // The size of a bench run and where it writes.
 struct Context {
@@ -85,4 +85,4 @@ double shock_position_error(const std::vector<double>& v, const std::vector<doub
 // Short text for numbers in messages ("1.5e-03").
 std::string fmt(double value, int digits = 3);
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

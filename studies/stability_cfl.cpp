@@ -1,4 +1,4 @@
-// Godunov and MUSCL-Hancock against the Courant number (bench_stability.hpp).
+// Godunov and MUSCL-Hancock against the Courant number (stability.hpp).
 // Both are TVD for Courant numbers <= 1 (godunov_scheme.hpp: Godunov 1959; Sweby
 // 1984 for the limited second-order scheme), so the predicted limit is 1. The
 // steps are taken here, on the same grid class the solvers use, so that the total
@@ -8,14 +8,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bench_stability.hpp"
+#include "stability.hpp"
 #include "shockgas/continuum/burgers_physics.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/continuum/godunov_scheme.hpp"
 #include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/continuum/limiters.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 namespace {
 
@@ -159,4 +159,4 @@ void cfl_stability(const Context& ctx, FailureLog& failures) {
   }
 }
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

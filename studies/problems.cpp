@@ -1,5 +1,5 @@
-// The reference problems of the work-precision charts: see bench_problems.hpp.
-#include "bench_problems.hpp"
+// The reference problems of the work-precision charts: see problems.hpp.
+#include "problems.hpp"
 
 #include <cmath>
 #include <memory>
@@ -8,7 +8,7 @@
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 namespace {
 
@@ -55,4 +55,4 @@ Problem problem_by_name(const std::string& name) {
   throw InputError("bench.problem", to_text(name), "riemann, sine_pre, sine_post or noise");
 }
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

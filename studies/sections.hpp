@@ -1,9 +1,9 @@
 #pragma once
 // The sections of `shockgas bench`, each writing its CSV files into ctx.out_dir
 // and adding what failed to the failure log (docs/performance.md lists the files).
-#include "bench_common.hpp"
+#include "common.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 // wp_inviscid.csv, wp_viscous.csv: error against the exact solution and median
 // wall time of every continuum method and setting on the reference problems.
@@ -13,10 +13,10 @@ void continuum_work_precision(const Context& ctx, FailureLog& failures);
 // particle; statistical error of T(t) and of the fitted exponent against CPU time.
 void particle_work_precision(const Context& ctx, FailureLog& failures);
 
-// stability_cfl.csv, stability_viscous.csv, stability_hopf_cole.csv (bench_stability.hpp).
+// stability_cfl.csv, stability_viscous.csv, stability_hopf_cole.csv (stability.hpp).
 void continuum_stability(const Context& ctx, FailureLog& failures);
 
-// stability_collapse.csv, stability_threshold.csv (bench_stability.hpp).
+// stability_collapse.csv, stability_threshold.csv (stability.hpp).
 void particle_stability(const Context& ctx, FailureLog& failures);
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

@@ -1,5 +1,5 @@
-// Shared machinery of `shockgas bench`: see bench_common.hpp.
-#include "bench_common.hpp"
+// Shared machinery of `shockgas bench`: see common.hpp.
+#include "common.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "shockgas/core/error.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 void Context::log(const std::string& section, const std::string& text) const {
   if (progress) std::cerr << "bench: " << section << ": " << text << std::endl;
@@ -131,4 +131,4 @@ std::string fmt(double value, int digits) {
   return buf;
 }
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

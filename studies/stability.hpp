@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "bench_common.hpp"
-#include "bench_problems.hpp"
+#include "common.hpp"
+#include "problems.hpp"
 #include "shockgas/particles/run_result.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 // ---- Finite volume against the Courant number ----
 
@@ -93,4 +93,4 @@ particles::RunStop ring_stop(std::size_t N, double r, std::uint64_t seed, double
 // McNamara-Young estimate of the particles a collapse needs: -ln(1 - r) / (1 - r).
 double collapse_particles_predicted(double r);
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

@@ -1,5 +1,5 @@
-// Stability scans of the continuum methods (bench_stability.hpp); the
-// Courant-number scan of the finite-volume schemes is bench_stability_cfl.cpp.
+// Stability scans of the continuum methods (stability.hpp); the
+// Courant-number scan of the finite-volume schemes is stability_cfl.cpp.
 //  * stability_viscous.csv: explicit viscous Burgers against nu, dx and dt (predicted
 //    dt <= h^2/2nu / (1 + |v| h/2nu), explicit_viscous.hpp), next to CVODE and ARKODE
 //    at the same nu and dx (no step limit: their mean step against h^2/2nu);
@@ -9,13 +9,13 @@
 #include <cmath>
 #include <limits>
 
-#include "bench_sections.hpp"
-#include "bench_stability.hpp"
+#include "sections.hpp"
+#include "stability.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/continuum/hopf_cole.hpp"
 #include "shockgas/continuum/solve.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 namespace {
 
@@ -181,4 +181,4 @@ void continuum_stability(const Context& ctx, FailureLog& failures) {
   hopf_cole_section(ctx, failures);
 }
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies

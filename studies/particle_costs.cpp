@@ -14,12 +14,12 @@
 #include <numeric>
 #include <vector>
 
-#include "bench_sections.hpp"
+#include "sections.hpp"
 #include "shockgas/compare/cooling_law.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/particles/simulate.hpp"
 
-namespace shockgas::app::bench {
+namespace shockgas::studies {
 
 namespace {
 
@@ -161,4 +161,4 @@ void particle_work_precision(const Context& ctx, FailureLog& failures) {
   statistics(ctx, failures);
 }
 
-}  // namespace shockgas::app::bench
+}  // namespace shockgas::studies
