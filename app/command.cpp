@@ -21,7 +21,7 @@ constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 struct Arguments {
   std::string scene_path, out_dir, result_path;
   std::vector<std::string> overrides;
-  bool defaults = false, quiet = false, no_plots = false;
+  bool defaults = false, markdown = false, quiet = false, no_plots = false;
   studies::StudyOptions bench;
 };
 
@@ -59,7 +59,7 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     return kExitOk;
   }
   if (app.got_subcommand("scene")) {
-    std::cout << default_scene_text();
+    std::cout << (args.markdown ? scene_reference_markdown() : default_scene_text());
     return kExitOk;
   }
   std::cout << app.help();
@@ -77,7 +77,9 @@ int run_command(int argc, char** argv) {
   auto* info = app.add_subcommand("info", "What a result file holds, its scene and its provenance");
   info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5")->required();
   auto* scene = app.add_subcommand("scene", "Print the complete commented scene with every key and its default");
-  scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range")->required();
+  scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range");
+  scene->add_flag("--markdown", args.markdown, "print the reference of every key as markdown (docs/scenes.md)");
+  scene->require_option(1);
   auto* bench = app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
   bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)");
   bench->add_flag("--full", args.bench.full, "the record size (long) instead of the quick one");

@@ -83,7 +83,8 @@ std::string brief(double value) {
 // stops the run before any work and before anything is written.
 void preflight(const Scene& scene) {
   try {
-    if (scene.has_particles && scene.particles.solver == "events" && scene.particles.schedule == "windows")
+    if (scene.has_particles && scene.particles.solver == particles::ParticleSolver::events &&
+        scene.particles.schedule == particles::Schedule::windows)
       particles::check_schedule(make_initial_bodies(scene.initial, 0), scene.particles);
     if (!scene.has_continuum) return;
     const InitialField field = make_initial_field(scene.initial, 0);

@@ -23,13 +23,13 @@ compare::SnapshotParams snapshot_params(const Scene& scene, double t) {
                                       : particles::default_cluster_criteria(scene.particles.delta, spacing, t);
   if (scene.compare.cluster_gap > 0) p.clusters.max_gap = scene.compare.cluster_gap;
   if (scene.compare.cluster_dv > 0) p.clusters.max_dv = scene.compare.cluster_dv;
-  p.max_match_distance = scene.compare.match_distance;
+  p.match_distance = scene.compare.match_distance;
   // Automatic: a tenth of the typical cluster mass t^(2/3) of the sticky regime
   // (DESIGN.md §1), so that pairs of free particles do not count as clusters.
   p.min_cluster_particles = scene.compare.min_cluster_particles > 0
                                 ? scene.compare.min_cluster_particles
                                 : std::max(2.0, 0.1 * std::pow(t, 2.0 / 3.0));
-  p.deposit = compare::parse_deposit_scheme(scene.compare.deposit, "compare.deposit");
+  p.deposit = scene.compare.deposit;
   return p;
 }
 

@@ -9,8 +9,8 @@ void run_initial_stage(RunState& state) {
   const auto& p = state.scene.initial;
   state.summary["initial"] = {{"N", p.N},
                               {"length", domain_length(p)},
-                              {"positions", p.positions},
-                              {"velocities", p.velocities},
+                              {"positions", name_of(p.positions)},
+                              {"velocities", name_of(p.velocities)},
                               {"seed", p.seed}};
   if (!state.scene.has_particles) return;
   state.initial_bodies = make_initial_bodies(p, 0);

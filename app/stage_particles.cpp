@@ -78,7 +78,7 @@ void write_records(Hdf5File& h5, const EnsembleResult& e, const particles::Parti
 void summarize(RunState& state, const EnsembleResult& e) {
   const auto& p = state.scene.particles;
   auto& s = state.summary["particles"];
-  s["solver"] = p.solver;
+  s["solver"] = name_of(p.solver);
   s["r"] = p.r;
   s["delta"] = p.delta;
   s["realizations"] = p.realizations;
@@ -95,8 +95,8 @@ void summarize(RunState& state, const EnsembleResult& e) {
   }
   state.report.push_back("## Particles\n");
   state.report.push_back("- " + std::to_string(state.scene.initial.N) + " particles, r = " + brief(p.r) +
-                         ", delta = " + brief(p.delta) + " (" + p.subthreshold + " below it), " +
-                         std::to_string(p.realizations) + " realization(s), solver `" + p.solver + "`.");
+                         ", delta = " + brief(p.delta) + " (" + name_of(p.subthreshold) + " below it), " +
+                         std::to_string(p.realizations) + " realization(s), solver `" + name_of(p.solver) + "`.");
   state.report.push_back("- " + std::to_string(e.total_collisions) + " collisions in " + brief(e.wall_seconds) +
                          " s (" + brief(std::round(s["collisions_per_second"].get<double>())) + " per second).");
   state.report.push_back("- Run ended: " + to_string(e.first.stop.reason) + " at t = " + brief(e.first.stop.time) +

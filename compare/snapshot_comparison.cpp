@@ -54,7 +54,7 @@ SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const co
   c.clusters = particles::find_clusters(state, L, params.clusters);
   c.shocks = find_shocks(field, params.shocks);
   c.particle_fields = deposit_on_grid(state, L, field.v.size(), params.deposit);
-  c.match = match_shocks_to_clusters(c.shocks, c.clusters, L, MatchParams{params.max_match_distance, c.min_mass});
+  c.match = match_shocks_to_clusters(c.shocks, c.clusters, L, MatchParams{params.match_distance, c.min_mass});
   c.n_shocks = c.match.eligible_shocks;
   c.n_clusters = c.match.eligible_clusters;
   c.sawtooth = fit_sawtooth_slopes(field.v, L, field.t, eligible_shock_positions(c.shocks, c.min_mass),

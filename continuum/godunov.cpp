@@ -35,9 +35,9 @@ ContinuumResult make_result(const Grid& grid, const std::string& solver, double 
 }
 
 // The stable Courant number of MUSCL-Hancock with the named limiter.
-double muscl_hancock_cfl_max(const std::string& limiter) {
-  if (limiter == "vanleer") return kMusclHancockVanLeerCflMax;
-  if (limiter == "mc") return kMusclHancockMcCflMax;
+double muscl_hancock_cfl_max(Limiter limiter) {
+  if (limiter == Limiter::vanleer) return kMusclHancockVanLeerCflMax;
+  if (limiter == Limiter::mc) return kMusclHancockMcCflMax;
   return kMusclHancockCflMax;
 }
 
@@ -48,8 +48,8 @@ ContinuumResult solve_godunov(const InitialField& f, const ContinuumParams& p, d
   require(order == 1 || order == 2, "godunov.order", order, "1 (godunov) or 2 (godunov2)");
   const std::string solver = order == 1 ? "godunov" : "godunov2";
   check_finite_volume_input(p, t_end, order == 1 ? kGodunovCflMax : muscl_hancock_cfl_max(p.limiter), solver);
-  const Boundary boundary = boundary_from_name(p.boundary);
-  const Limiter limiter = limiter_from_name(p.limiter);
+  const Boundary boundary = p.boundary;
+  const Limiter limiter = p.limiter;
   const CellAverages initial = cell_averages(f, p.cells);
   check_initial_averages(initial, f.length);
 
@@ -67,7 +67,7 @@ ContinuumResult solve_godunov(const InitialField& f, const ContinuumParams& p, d
 
   ContinuumResult r = make_result(grid, solver, f.length, t_end);
   r.method_note = order == 1 ? "first-order Godunov, exact Riemann flux"
-                             : "MUSCL-Hancock, " + limiter_name(limiter) + " limiter, exact Riemann flux";
+                             : "MUSCL-Hancock, " + name_of(limiter) + " limiter, exact Riemann flux";
   r.stats["steps"] = static_cast<double>(steps);
   r.stats["cells"] = static_cast<double>(p.cells);
   r.stats["cfl"] = p.cfl;

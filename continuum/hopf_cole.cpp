@@ -15,8 +15,6 @@ namespace {
 void check_input(const ContinuumParams& p, double t_end) {
   require_above("continuum.nu", p.nu, 0.0);
   require(p.cells >= 8, "continuum.cells", p.cells, "an integer >= 8");
-  require(p.hopf_cole_path == "auto" || p.hopf_cole_path == "fft" || p.hopf_cole_path == "log",
-          "continuum.hopf_cole_path", p.hopf_cole_path, "\"auto\", \"fft\" or \"log\"");
   require(std::isfinite(t_end) && t_end >= 0, "continuum.t_end", t_end, "a finite time >= 0");
 }
 
@@ -43,7 +41,7 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
   const double shift = psi0.mean_velocity * t;
   const std::string spread = "DeltaPsi/2nu = " + text(r.stats["spread_over_2nu"]);
   const double tolerance = p.rtol * scale;
-  if (p.hopf_cole_path != "log") {
+  if (p.hopf_cole_path != HopfColePath::log) {
     LogTheta fft = log_theta_fft(psi0, p.nu, t, shift);
     const double bound = fft.velocity_error_bound;
     r.stats["fft_velocity_error_bound"] = bound;
@@ -55,10 +53,10 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
       r.method_note = "Hopf-Cole, fft path (" + why + ")";
       return fft.values;
     }
-    if (p.hopf_cole_path == "fft" && !usable)
+    if (p.hopf_cole_path == HopfColePath::fft && !usable)
       throw RunError("hopf_cole: the forced fft path lost its digits at t = " + text(t) + " (" + why +
                      "); use continuum.hopf_cole_path = \"log\" or \"auto\"");
-    if (p.hopf_cole_path == "fft" || (usable && terms > kLogPathBudget)) {
+    if (p.hopf_cole_path == HopfColePath::fft || (usable && terms > kLogPathBudget)) {
       r.method_note = "Hopf-Cole, fft path above tolerance (" + why + "; the log path would sum ~" +
                       text(terms) + " kernel terms)";
       return fft.values;

@@ -110,7 +110,7 @@ CflPoint scan_point(const Problem& pb, const std::string& solver, continuum::Lim
 
 std::vector<CflPoint> cfl_scan(const Problem& pb, const std::string& solver, const std::string& limiter,
                                std::size_t cells, const std::vector<double>& cfls) {
-  const auto lim = continuum::limiter_from_name(limiter);
+  const auto lim = parse_enum<continuum::Limiter>(limiter, "continuum.limiter");
   const auto v0 = continuum::cell_averages(pb.field, cells);
   const auto exact = continuum::exact_cell_averages(pb.field, cells, pb.t, {4, 2048, 64});
   std::vector<CflPoint> out;

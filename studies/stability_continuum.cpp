@@ -72,14 +72,14 @@ HopfColePoint hopf_cole_point(const Problem& pb, std::size_t cells, double ratio
   ContinuumParams p;
   p.cells = cells;
   p.nu = pt.nu;
-  p.hopf_cole_path = "fft";
+  p.hopf_cole_path = continuum::HopfColePath::fft;
   try {
     const auto r = continuum::solve("hopf_cole", pb.field, p, pb.t);
     pt.solver_fft = "accepted: " + r.method_note;
   } catch (const std::exception& e) {
     pt.solver_fft = std::string("refused: ") + e.what();
   }
-  p.hopf_cole_path = "auto";
+  p.hopf_cole_path = continuum::HopfColePath::automatic;
   try {
     pt.solver_auto = continuum::solve("hopf_cole", pb.field, p, pb.t).method_note;
   } catch (const std::exception& e) {

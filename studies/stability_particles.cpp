@@ -29,7 +29,7 @@ RunStop three_particle_stop(double r) {
   ParticleParams p;
   p.r = r;
   p.delta = 0.0;
-  p.geometry = "line";
+  p.geometry = particles::Geometry::line;
   p.t_end = 100.0;
   p.samples = 2;
   p.clusters = false;

@@ -50,9 +50,9 @@ std::vector<Setting> inviscid_settings(const Context& ctx) {
     ContinuumParams p;
     p.cells = cells;
     s.push_back({"godunov", "godunov", p, double(cells)});
-    for (std::string lim : {"minmod", "vanleer", "mc"}) {
+    for (continuum::Limiter lim : {continuum::Limiter::minmod, continuum::Limiter::vanleer, continuum::Limiter::mc}) {
       p.limiter = lim;
-      s.push_back({"godunov2 (" + lim + ")", "godunov2", p, double(cells)});
+      s.push_back({"godunov2 (" + name_of(lim) + ")", "godunov2", p, double(cells)});
     }
     s.push_back({"hopf_lax (exact)", "hopf_lax", p, double(cells)});
   }
@@ -61,9 +61,9 @@ std::vector<Setting> inviscid_settings(const Context& ctx) {
     ContinuumParams p;
     p.cells = hc_cells;
     p.nu = nu;
-    for (std::string path : {"fft", "log"}) {
+    for (continuum::HopfColePath path : {continuum::HopfColePath::fft, continuum::HopfColePath::log}) {
       p.hopf_cole_path = path;
-      s.push_back({"hopf_cole " + path, "hopf_cole", p, nu});
+      s.push_back({"hopf_cole " + name_of(path), "hopf_cole", p, nu});
     }
   }
   return s;
@@ -81,7 +81,7 @@ std::vector<Setting> viscous_settings(const Context& ctx, double nu) {
     s.push_back({"arkode", "arkode", p, rtol});
   }
   p.rtol = 1e-6;
-  p.hopf_cole_path = "fft";
+  p.hopf_cole_path = continuum::HopfColePath::fft;
   s.push_back({"hopf_cole fft", "hopf_cole", p, double(cells)});
   return s;
 }
@@ -179,7 +179,7 @@ void viscous(const Context& ctx, FailureLog& failures) {
     ctx.log("work-precision", "viscous (nu = " + fmt(nu) + "), problem " + pb.name);
     const std::vector<Setting> settings = viscous_settings(ctx, nu);
     ContinuumParams ref = settings.front().params;
-    ref.hopf_cole_path = "log";
+    ref.hopf_cole_path = continuum::HopfColePath::log;
     const ContinuumResult exact = continuum::solve("hopf_cole", pb.field, ref, pb.t);
     for (const Setting& s : settings) run_setting(ctx, failures, csv, pb, s, exact, "hopf_cole log");
   }

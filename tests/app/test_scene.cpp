@@ -108,7 +108,7 @@ TEST(Scene, OverrideSetsValuesReadAsToml) {
   EXPECT_EQ(s.initial.N, 1000u);
   ASSERT_EQ(s.continuum.solvers.size(), 1u);
   EXPECT_EQ(s.continuum.solvers[0], "godunov");
-  EXPECT_EQ(s.initial.positions, "random");  // a bare word is a string
+  EXPECT_EQ(name_of(s.initial.positions), "random");  // a bare word is a string
   EXPECT_TRUE(s.has_continuum);               // --set creates the table
 }
 

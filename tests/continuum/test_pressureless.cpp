@@ -38,7 +38,7 @@ ContinuumParams params(std::size_t cells, const std::string& boundary) {
   ContinuumParams p;
   p.cells = cells;
   p.cfl = 0.8;
-  p.boundary = boundary;
+  p.boundary = parse_enum<Boundary>(boundary, "continuum.boundary");
   return p;
 }
 

@@ -54,7 +54,7 @@ void expect_fig2_threshold_completes(const std::string& subthreshold) {
   ParticleParams p;
   p.r = 0.9;
   p.delta = 1e-3;
-  p.subthreshold = subthreshold;
+  p.subthreshold = parse_enum<Subthreshold>(subthreshold, "particles.subthreshold");
   p.t_end = 1e4;
   p.samples = 10;
   p.clusters = false;

@@ -25,7 +25,7 @@ struct SnapshotParams {
   particles::ClusterCriteria clusters;  // default_cluster_criteria(delta, L / N) for r > 0,
                                         // merged_bodies_criteria() for r = 0
   ShockDetectionParams shocks;          // used only if the solver has no shock list
-  double max_match_distance = 0;        // [length]; 0 = automatic (MatchParams)
+  double match_distance = 0;            // [length]; 0 = automatic (MatchParams)
   double min_cluster_particles = 2;     // clusters and shocks lighter than this many mean
                                         // particle masses (total mass / N) are ignored [1]
   SawtoothParams sawtooth;              // ramp fits

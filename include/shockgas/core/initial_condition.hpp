@@ -1,29 +1,48 @@
 #pragma once
-// The one initial condition that feeds every model (DESIGN.md §3): the particles
-// see it as point masses, the continuum as pointwise data or cell averages.
+// The one initial condition that feeds every model (docs/design.md, "One initial
+// condition"): the particles see it as point masses, the continuum as pointwise
+// data or cell averages.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 
 #include "shockgas/core/bodies.hpp"
+#include "shockgas/core/parameters.hpp"
 
 namespace shockgas {
 
-// Scene table [initial].
+enum class Positions { lattice, random };
+constexpr std::array<EnumName<Positions>, 2> enum_names(Positions) {
+  return {{{Positions::lattice, "lattice"}, {Positions::random, "random"}}};
+}
+
+enum class Velocities { uniform, gaussian, file, expression };
+constexpr std::array<EnumName<Velocities>, 4> enum_names(Velocities) {
+  return {{{Velocities::uniform, "uniform"},
+           {Velocities::gaussian, "gaussian"},
+           {Velocities::file, "file"},
+           {Velocities::expression, "expression"}}};
+}
+
+// Scene table [initial]. Unit, allowed range and meaning of every member are
+// declared once in initial_parameters() (core/initial_condition.cpp).
 struct InitialParams {
-  std::size_t N = 10000;               // number of particles [1], N >= 2
-  std::string positions = "lattice";   // "lattice" (equal spacing) | "random" (uniform, sorted)
-  std::string velocities = "uniform";  // "uniform" on [-amplitude, amplitude] | "gaussian"
-                                       // (sd amplitude) | "file" | "expression" (v0)
-  double amplitude = 1.0;              // velocity scale [length/time], > 0
-  bool remove_mean = false;            // subtract the mean velocity (zero total momentum)
-  std::string file;                    // text file, columns `x v [m]`, sorted by x
-  std::uint64_t seed = 1;              // random seed; realization k uses realization_seed(seed, k)
-  double L = 0.0;                      // ring length / line extent [length]; 0 means L = N
-  std::string v0 = "0.5 + sin(2*pi*x)";  // v0(x) for velocities = "expression" [length/time]
-  std::string rho0 = "1";                // rho0(x) for velocities = "expression" [mass/length]
-  double domain = 1.0;                   // period of v0, rho0: the domain is [0, domain) [length]
+  std::size_t N = 10000;
+  Positions positions = Positions::lattice;
+  Velocities velocities = Velocities::uniform;
+  double amplitude = 1.0;
+  bool remove_mean = false;
+  std::string file;
+  std::uint64_t seed = 1;                // realization k uses realization_seed(seed, k)
+  double L = 0.0;                        // 0 means L = N
+  std::string v0 = "0.5 + sin(2*pi*x)";
+  std::string rho0 = "1";
+  double domain = 1.0;
 };
+
+// The declarations of [initial]: key, unit, allowed values, doc.
+const ParameterTable<InitialParams>& initial_parameters();
 
 // Pointwise initial data on [0, length): what the continuum solvers discretise.
 struct InitialField {
@@ -46,8 +65,10 @@ Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization = 0
 // velocities = "expression", else the particles as point masses.
 InitialField make_initial_field(const InitialParams& p, std::uint64_t realization = 0);
 
-// Checks every key of p (throws InputError naming the key); called by the scene
-// parser and by anyone building InitialParams in code.
+// Checks every key of p (throws InputError naming the key): the declared rules,
+// then the rules between keys (the file exists for velocities = "file", the
+// expressions parse and are finite, rho0 > 0). Called by the scene parser and by
+// anyone building InitialParams in code.
 void validate(const InitialParams& p);
 
 }  // namespace shockgas
