@@ -11,7 +11,7 @@
 
 #include "plots.hpp"
 #include "run_state.hpp"
-#include "shockgas/continuum/solve.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/particles/simulate.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/version.hpp"
@@ -77,10 +77,10 @@ std::string brief(double value) {
   return buf;
 }
 
-// Every solver checks its own limits (CFL bound, cells against nu, ...) when it
-// starts; a zero-length solve runs those checks now, and the particle engine
-// checks a requested schedule against the initial bodies, so that bad input
-// stops the run before any work and before anything is written.
+// Every solver's own limits (CFL bound, cells against nu, ...) are checked by its
+// registered preflight, without solving, and the particle engine checks a
+// requested schedule against the initial bodies, so that bad input stops the
+// run before any work and before anything is written.
 void preflight(const Scene& scene) {
   try {
     if (scene.has_particles && scene.particles.solver == particles::ParticleSolver::events &&
@@ -88,7 +88,8 @@ void preflight(const Scene& scene) {
       particles::check_schedule(make_initial_bodies(scene.initial, 0), scene.particles);
     if (!scene.has_continuum) return;
     const InitialField field = make_initial_field(scene.initial, 0);
-    for (const auto& name : scene.continuum.solvers) continuum::solve(name, field, scene.continuum, 0.0);
+    for (const auto& name : scene.continuum.solvers)
+      continuum::preflight(name, field, scene.continuum, scene.continuum_t_end());
   } catch (const InputError& e) {
     const auto it = scene.key_origin.find(e.key());
     throw e.located(it != scene.key_origin.end() ? it->second : scene.path);

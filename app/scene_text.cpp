@@ -5,6 +5,7 @@
 
 #include "scene_schema.hpp"
 #include "shockgas/app/scene.hpp"
+#include "shockgas/continuum/registry.hpp"
 
 namespace shockgas::app {
 
@@ -52,6 +53,20 @@ std::string sentence(std::string text) {
   return text + ".";
 }
 
+const char* yes_no(bool b) { return b ? "yes" : ""; }
+
+// The registered continuum solvers: what continuum.solvers may name.
+std::string solver_table() {
+  std::ostringstream out;
+  out << "\n## Continuum solvers\n\nThe names `continuum.solvers` and `compare.solver` accept, as registered "
+         "(continuum/registry.hpp).\n\n| solver | method | density | shocks | uses nu | exact | default |\n"
+         "|---|---|---|---|---|---|---|\n";
+  for (const auto& s : continuum::registered_solvers())
+    out << "| `" << s.name << "` | " << cell(s.summary) << " | " << yes_no(s.density) << " | " << yes_no(s.shocks)
+        << " | " << yes_no(s.viscous) << " | " << yes_no(s.exact) << " | " << yes_no(s.by_default) << " |\n";
+  return out.str();
+}
+
 }  // namespace
 
 std::string default_scene_text() {
@@ -87,6 +102,7 @@ std::string scene_reference_markdown() {
           << (i.unit.empty() ? "" : cell(i.unit)) << " | " << cell(i.allowed()) << " | " << cell(i.doc) << " |\n";
     }
   }
+  out << solver_table();
   return out.str();
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "run_state.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -33,6 +34,9 @@ void write_result(Hdf5File& h5, const ContinuumResult& r, bool fields) {
     h5.write(g + "/shocks/jump", jump, "length/time", "velocity jump v_right - v_left (< 0)");
     h5.write(g + "/shocks/v", v, "length/time", "shock velocities");
   }
+  const auto& info = continuum::solver_info(r.solver);
+  h5.set_attribute(g, "label", info.label);
+  h5.set_attribute(g, "colour", info.colour);
   h5.set_attribute(g, "t", r.t);
   h5.set_attribute(g, "method", r.method_note);
   h5.set_attribute(g, "wall_seconds", r.wall_seconds);
@@ -89,7 +93,7 @@ void run_continuum_stage(RunState& state) {
   }
   const ContinuumResult* exact = nullptr;
   for (const auto& r : state.continuum)
-    if (r.solver == "hopf_lax") exact = &r;
+    if (continuum::solver_info(r.solver).exact) exact = &r;
   state.report.push_back("## Continuum at t = " + brief(t_end) + "\n");
   for (const auto& r : state.continuum) {
     write_result(state.h5, r, scene.output.fields);

@@ -1,15 +1,12 @@
 // The declarations of scene table [continuum] and the rules between its keys.
 #include "shockgas/continuum/params.hpp"
 
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::continuum {
 
 namespace {
-
-std::vector<std::string> solver_names() {
-  return {"godunov", "godunov2", "pressureless", "hopf_lax", "hopf_cole", "cvode", "arkode"};
-}
 
 ParameterTable<ContinuumParams> declare() {
   using P = ContinuumParams;
@@ -18,7 +15,7 @@ ParameterTable<ContinuumParams> declare() {
   t.add(&P::cells, "cells", "1", "grid cells on the domain", allowed(at_least(8)));
   t.add(&P::cfl, "cfl", "1", "Courant number of the finite-volume schemes",
         Allowed{above(0), {}, "a Courant number in (0, 1] (set continuum.allow_unstable = true to go beyond)"});
-  t.add(&P::nu, "nu", "length^2/time", "viscosity of the viscous solvers", allowed(above(0)));
+  t.add(&P::nu, "nu", "length^2/time", "viscosity of the viscous solvers (docs/scenes.md lists them)", allowed(above(0)));
   t.add(&P::t_end, "t_end", "time", "final time; 0 = particles.t_end", allowed(at_least(0)));
   t.add(&P::rtol, "rtol", "1", "relative tolerance of the adaptive integrators", allowed(between(1e-12, 0.1)));
   t.add(&P::hopf_cole_path, "hopf_cole_path", "",
@@ -31,7 +28,15 @@ ParameterTable<ContinuumParams> declare() {
 
 }  // namespace
 
-std::vector<std::string> ContinuumParams::default_solver_names() { return {"hopf_lax", "godunov2"}; }
+// The registered solvers marked by_default, the exact one first.
+std::vector<std::string> ContinuumParams::default_solver_names() {
+  std::vector<std::string> names;
+  for (const auto& s : registered_solvers())
+    if (s.by_default && s.exact) names.push_back(s.name);
+  for (const auto& s : registered_solvers())
+    if (s.by_default && !s.exact) names.push_back(s.name);
+  return names;
+}
 
 const ParameterTable<ContinuumParams>& parameters() {
   static const ParameterTable<ContinuumParams> table = declare();

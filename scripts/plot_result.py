@@ -92,15 +92,18 @@ def plot_spacetime(f, out_dir):
 
 
 def plot_fields(f, out_dir):
+    """Every solver's v and rho, each in the label and colour its registration gives
+    (attributes `label`, `colour` of /continuum/<solver>), over the particles."""
     c = f["continuum"]
     fig, (av, ar) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
     for name in c:
         g = c[name]
         if "x" not in g:
             continue
-        av.plot(g["x"][:], g["v"][:], lw=1, label=name)
+        style = {"lw": 1, "label": attr(g, "label", name), "color": attr(g, "colour")}
+        av.plot(g["x"][:], g["v"][:], **style)
         if "rho" in g and g["rho"].shape == g["x"].shape:
-            ar.plot(g["x"][:], g["rho"][:], lw=1, label=name)
+            ar.plot(g["x"][:], g["rho"][:], **style)
     if "compare" in f and "x" in f["compare"]:
         cmp = f["compare"]
         av.plot(cmp["x"][:], cmp["v_particles"][:], "k.", ms=2, label="particles")
@@ -118,6 +121,8 @@ def plot_fields(f, out_dir):
     ar.set_xlabel("x")
     av.set_title(f"fields at t = {attr(next(iter(c.values())), 't', 0):.4g}")
     av.legend(fontsize=7)
+    if ar.get_legend_handles_labels()[0]:
+        ar.legend(fontsize=7)
     save(fig, out_dir, "fields.png")
 
 

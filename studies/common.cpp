@@ -6,7 +6,13 @@
 #include <cstdio>
 #include <iostream>
 
+#include "shockgas/continuum/godunov.hpp"
+#include "shockgas/continuum/hopf_cole.hpp"
+#include "shockgas/continuum/hopf_lax.hpp"
+#include "shockgas/continuum/pressureless.hpp"
+#include "shockgas/continuum/viscous_mol.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/particles/params.hpp"
 
 namespace shockgas::studies {
 
@@ -129,6 +135,14 @@ std::string fmt(double value, int digits) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.*g", digits, value);
   return buf;
+}
+
+const SolverNames& solver_names() {
+  static const SolverNames names{continuum::godunov_solver().name,      continuum::godunov2_solver().name,
+                                 continuum::pressureless_solver().name, continuum::hopf_lax_solver().name,
+                                 continuum::hopf_cole_solver().name,    continuum::cvode_solver().name,
+                                 continuum::arkode_solver().name,       name_of(particles::ParticleSolver::events)};
+  return names;
 }
 
 }  // namespace shockgas::studies

@@ -85,4 +85,11 @@ double shock_position_error(const std::vector<double>& v, const std::vector<doub
 // Short text for numbers in messages ("1.5e-03").
 std::string fmt(double value, int digits = 3);
 
+// The names of the solvers the studies measure, as registered (continuum/registry.hpp).
+struct SolverNames {
+  std::string godunov, godunov2, pressureless, hopf_lax, hopf_cole, cvode, arkode;
+  std::string events;  // the particle engine (particles::ParticleSolver::events)
+};
+const SolverNames& solver_names();
+
 }  // namespace shockgas::studies

@@ -130,7 +130,7 @@ void statistics(const Context& ctx, FailureLog& failures) {
   for (std::size_t k = 0; k < R; ++k) {
     const RunResult r = particles::simulate(gas(N, k), double(N), gas_params(t_end, 30, 60.0));
     if (r.stop.reason != particles::StopReason::completed) {
-      failures.add({"particles_statistics", "events", "realization " + std::to_string(k),
+      failures.add({"particles_statistics", solver_names().events, "realization " + std::to_string(k),
                     "stopped early: " + particles::to_string(r.stop.reason)});
       continue;
     }

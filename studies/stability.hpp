@@ -32,7 +32,7 @@ struct CflPoint {
   double t_reached = 0;        // [time]
   std::string what;            // in words
 };
-// solver: "godunov" | "godunov2"; limiter ("minmod" | "vanleer" | "mc") for godunov2.
+// solver: the registered name of godunov or godunov2; limiter: its scene name, for godunov2.
 std::vector<CflPoint> cfl_scan(const Problem& pb, const std::string& solver, const std::string& limiter,
                                std::size_t cells, const std::vector<double>& cfls);
 
@@ -69,7 +69,7 @@ struct HopfColePoint {
   double fft_error = 0;       // max |v_fft - v_log| of the raw FFT path; NaN if non-finite [length/time]
   bool fft_finite = true;     // the raw FFT path gave finite values everywhere
   double fft_bound = 0;       // the path's own roundoff bound [length/time]
-  std::string solver_fft;     // what solve("hopf_cole", path fft) did: "accepted" or the error
+  std::string solver_fft;     // what solving hopf_cole on the fft path did: "accepted" or the error
   std::string solver_auto;    // the method_note of path auto
   double log_seconds = 0;     // wall time of the log path [s]
 };

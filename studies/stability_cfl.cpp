@@ -85,7 +85,7 @@ CflPoint scan_point(const Problem& pb, const std::string& solver, continuum::Lim
   w.tv0 = continuum::periodic_total_variation(v0.v);
   for (double x : v0.v) w.v0max = std::max(w.v0max, std::abs(x));
   w.pt.min_rho = *std::min_element(v0.rho.begin(), v0.rho.end());
-  if (solver == "godunov") {
+  if (solver == solver_names().godunov) {
     run(g, cfl, pb.t, w, [&](double dt) { return g.step_godunov(dt); });
   } else {
     continuum::with_limiter(limiter, [&](auto lim) {
@@ -138,9 +138,10 @@ void cfl_stability(const Context& ctx, FailureLog& failures) {
       : std::vector<double>{0.5, 0.8, 0.85, 0.9, 0.95, 1.0, 1.05, 1.1, 1.2, 1.5, 2.0};
   for (const Problem& pb : {problem_by_name("sine_post"), problem_by_name("noise")}) {
     for (std::string limiter : {"", "minmod", "vanleer", "mc"}) {
-      const std::string method = limiter.empty() ? "godunov" : "godunov2 (" + limiter + ")";
+      const auto& names = solver_names();
+      const std::string method = limiter.empty() ? names.godunov : names.godunov2 + " (" + limiter + ")";
       ctx.log("stability", "CFL scan of " + method + ", " + pb.name);
-      const auto points = cfl_scan(pb, limiter.empty() ? "godunov" : "godunov2", limiter.empty() ? "mc" : limiter,
+      const auto points = cfl_scan(pb, limiter.empty() ? names.godunov : names.godunov2, limiter.empty() ? "mc" : limiter,
                                    cells, cfls);
       for (const auto& pt : points) {
         csv << pb.name << method << pt.cfl << (pt.failed ? "yes" : "no") << pt.max_tv_rise << double(pt.rising_steps)

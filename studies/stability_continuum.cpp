@@ -74,14 +74,14 @@ HopfColePoint hopf_cole_point(const Problem& pb, std::size_t cells, double ratio
   p.nu = pt.nu;
   p.hopf_cole_path = continuum::HopfColePath::fft;
   try {
-    const auto r = continuum::solve("hopf_cole", pb.field, p, pb.t);
+    const auto r = continuum::solve(solver_names().hopf_cole, pb.field, p, pb.t);
     pt.solver_fft = "accepted: " + r.method_note;
   } catch (const std::exception& e) {
     pt.solver_fft = std::string("refused: ") + e.what();
   }
   p.hopf_cole_path = continuum::HopfColePath::automatic;
   try {
-    pt.solver_auto = continuum::solve("hopf_cole", pb.field, p, pb.t).method_note;
+    pt.solver_auto = continuum::solve(solver_names().hopf_cole, pb.field, p, pb.t).method_note;
   } catch (const std::exception& e) {
     pt.solver_auto = std::string("failed: ") + e.what();
   }
@@ -116,7 +116,7 @@ void implicit_rows(CsvWriter& csv, FailureLog& failures, const Problem& pb, doub
   p.nu = nu;
   p.rtol = 1e-6;
   const double h = pb.field.length / double(cells), limit = h * h / (2 * nu);
-  for (std::string solver : {"cvode", "arkode"}) {
+  for (const std::string& solver : {solver_names().cvode, solver_names().arkode}) {
     try {
       const auto r = continuum::solve(solver, pb.field, p, pb.t);
       const double steps = r.stats.count("steps") ? r.stats.at("steps") : NAN;

@@ -49,12 +49,13 @@ std::vector<Setting> inviscid_settings(const Context& ctx) {
   for (std::size_t cells : cell_counts(ctx)) {
     ContinuumParams p;
     p.cells = cells;
-    s.push_back({"godunov", "godunov", p, double(cells)});
+    const auto& names = solver_names();
+    s.push_back({names.godunov, names.godunov, p, double(cells)});
     for (continuum::Limiter lim : {continuum::Limiter::minmod, continuum::Limiter::vanleer, continuum::Limiter::mc}) {
       p.limiter = lim;
-      s.push_back({"godunov2 (" + name_of(lim) + ")", "godunov2", p, double(cells)});
+      s.push_back({names.godunov2 + " (" + name_of(lim) + ")", names.godunov2, p, double(cells)});
     }
-    s.push_back({"hopf_lax (exact)", "hopf_lax", p, double(cells)});
+    s.push_back({names.hopf_lax + " (exact)", names.hopf_lax, p, double(cells)});
   }
   const std::size_t hc_cells = ctx.full ? 8192 : 2048;
   for (double nu : {1e-2, 3e-3, 1e-3, 3e-4, 1e-4}) {
@@ -63,7 +64,7 @@ std::vector<Setting> inviscid_settings(const Context& ctx) {
     p.nu = nu;
     for (continuum::HopfColePath path : {continuum::HopfColePath::fft, continuum::HopfColePath::log}) {
       p.hopf_cole_path = path;
-      s.push_back({"hopf_cole " + name_of(path), "hopf_cole", p, nu});
+      s.push_back({solver_names().hopf_cole + " " + name_of(path), solver_names().hopf_cole, p, nu});
     }
   }
   return s;
@@ -77,12 +78,12 @@ std::vector<Setting> viscous_settings(const Context& ctx, double nu) {
   p.nu = nu;
   for (double rtol : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
     p.rtol = rtol;
-    s.push_back({"cvode", "cvode", p, rtol});
-    s.push_back({"arkode", "arkode", p, rtol});
+    s.push_back({solver_names().cvode, solver_names().cvode, p, rtol});
+    s.push_back({solver_names().arkode, solver_names().arkode, p, rtol});
   }
   p.rtol = 1e-6;
   p.hopf_cole_path = continuum::HopfColePath::fft;
-  s.push_back({"hopf_cole fft", "hopf_cole", p, double(cells)});
+  s.push_back({solver_names().hopf_cole + " fft", solver_names().hopf_cole, p, double(cells)});
   return s;
 }
 
@@ -135,9 +136,10 @@ const std::vector<std::string> kColumns = {"problem", "method", "parameter", "ce
 
 void write_row(CsvWriter& csv, const Problem& pb, const Setting& s, const std::string& reference, const Norms& e,
                double shock, double seconds, const std::string& note) {
-  const bool viscous = s.solver == "hopf_cole" || s.solver == "cvode" || s.solver == "arkode";
+  const bool viscous = continuum::solver_info(s.solver).viscous;
+  const bool adaptive = s.solver == solver_names().cvode || s.solver == solver_names().arkode;
   csv << pb.name << s.method << s.parameter << double(s.params.cells) << (viscous ? s.params.nu : NAN)
-      << (s.solver == "cvode" || s.solver == "arkode" ? s.params.rtol : NAN) << reference << e.l1 << e.linf
+      << (adaptive ? s.params.rtol : NAN) << reference << e.l1 << e.linf
       << shock << seconds << note;
   csv.end_row();
 }
@@ -149,7 +151,7 @@ void run_setting(const Context& ctx, FailureLog& failures, CsvWriter& csv, const
     const Measured m = measure(ctx, s, pb);
     const double h = pb.field.length / double(s.params.cells);
     const Norms e = error_norms(m.result.v, reference.v, h);
-    const double shock = reference_name == "hopf_lax" ? shock_error(pb, reference, m.result.v) : NAN;
+    const double shock = reference_name == solver_names().hopf_lax ? shock_error(pb, reference, m.result.v) : NAN;
     write_row(csv, pb, s, reference_name, e, shock, m.seconds, m.result.method_note);
   } catch (const std::exception& e) {  // InputError (outside the range) or RunError (failed)
     failures.add({"work_precision", s.method, pb.name + ", parameter = " + fmt(s.parameter), e.what()});
@@ -167,7 +169,7 @@ void inviscid(const Context& ctx, FailureLog& failures) {
         exact = continuum::solve_hopf_lax(pb.field, s.params.cells, pb.t, exact_options());
         cached_cells = s.params.cells;
       }
-      run_setting(ctx, failures, csv, pb, s, exact, "hopf_lax");
+      run_setting(ctx, failures, csv, pb, s, exact, solver_names().hopf_lax);
     }
   }
 }
@@ -180,8 +182,8 @@ void viscous(const Context& ctx, FailureLog& failures) {
     const std::vector<Setting> settings = viscous_settings(ctx, nu);
     ContinuumParams ref = settings.front().params;
     ref.hopf_cole_path = continuum::HopfColePath::log;
-    const ContinuumResult exact = continuum::solve("hopf_cole", pb.field, ref, pb.t);
-    for (const Setting& s : settings) run_setting(ctx, failures, csv, pb, s, exact, "hopf_cole log");
+    const ContinuumResult exact = continuum::solve(solver_names().hopf_cole, pb.field, ref, pb.t);
+    for (const Setting& s : settings) run_setting(ctx, failures, csv, pb, s, exact, solver_names().hopf_cole + " log");
   }
 }
 

@@ -4,13 +4,14 @@
 #include <string>
 
 #include "shockgas/compare/deposit.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/parameters.hpp"
 
 namespace shockgas::compare {
 
 // Unit, allowed range and meaning of every member: parameters() (compare/params.cpp).
 struct CompareParams {
-  std::string solver = "hopf_lax";                    // one of continuum.solvers
+  std::string solver = continuum::reference_solver_name();  // one of continuum.solvers
   DepositScheme deposit = DepositScheme::cloud_in_cell;
   double distribution_t_min = 10.0;
   double match_distance = 0.0;                        // 0 = automatic

@@ -211,7 +211,7 @@ void check_initial_averages(const CellAverages& a, double length);
 struct TimeLoop {
   double t_end = 0;            // final time [time], reached exactly
   double cfl = 0.5;            // Courant number: dt = cfl dx / max|speed|
-  std::string solver;          // name for errors ("godunov", ...)
+  std::string solver;          // name for errors (the registered name)
   ProgressCallback progress;   // called about every 1% of t_end
 };
 

@@ -38,6 +38,7 @@
 
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/continuum/params.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/progress.hpp"
 
@@ -91,5 +92,8 @@ std::vector<double> velocity_from_log_theta(const MovingFramePotential& psi0,
 // "log_path" (1 if the log path produced the result), "refinement" (log path nodes per cell).
 ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p, double t_end,
                                 const ProgressCallback& progress = {});
+
+// Its registration (registry.hpp).
+SolverInfo hopf_cole_solver();
 
 }  // namespace shockgas::continuum

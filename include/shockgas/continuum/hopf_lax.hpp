@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "shockgas/continuum/field.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/initial_condition.hpp"
 
 namespace shockgas::continuum {
@@ -159,5 +160,8 @@ ContinuumResult hopf_lax_point_masses(const InitialField& f, std::size_t cells, 
 
 // Samples per period that solve_hopf_lax uses for `cells` cells.
 std::size_t hopf_lax_samples(std::size_t cells, const HopfLaxOptions& options = {});
+
+// Its registration (registry.hpp): the exact reference of every comparison.
+SolverInfo hopf_lax_solver();
 
 }  // namespace shockgas::continuum

@@ -5,9 +5,9 @@
 //   RunResult r = simulate(bodies, L, params);           // one run
 //   EnsembleResult e = run_ensemble(initial, params);    // R realizations, averaged
 //
-// params.solver = "events": the event-driven engine (exact to rounding: each
+// params.solver = ParticleSolver::events: the event-driven engine (exact to rounding: each
 // collision happens at its predicted contact time; the next events of the two
-// bodies are re-predicted). params.solver = "hull" (r = 0 only): the exact sticky
+// bodies are re-predicted). params.solver = ParticleSolver::hull (r = 0 only): the exact sticky
 // solution by the lower convex hull (core/sticky_hull.hpp) evaluated at each stop
 // time, no events simulated; its collisions are its merges.
 #include "shockgas/core/bodies.hpp"
