@@ -12,6 +12,7 @@
 #include "shockgas/app/progress_bar.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
+#include "shockgas/compare/particle_analysis.hpp"
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/core/bodies.hpp"
 
@@ -31,7 +32,7 @@ struct RunState {
   std::optional<Bodies> final_bodies;                    // particles at final_time (realization 0)
   double final_time = 0;                                 // t_end, or earlier if the run stopped early
   std::vector<double> t_series, T_series;                // ensemble-mean T(t)
-  std::vector<double> hist_z, hist_t, hist_density;      // ensemble-mean scaled histogram (rows: t)
+  compare::ZHistogram histogram;                         // ensemble-mean scaled histogram (rows: t)
   std::vector<continuum::ContinuumResult> continuum;     // one per solver
   std::vector<std::string> report;                       // lines of report.md
 };

@@ -6,6 +6,7 @@
 
 #include "run_state.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
+#include "shockgas/compare/theory.hpp"
 #include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -17,20 +18,8 @@ using nlohmann::ordered_json;
 
 // t: the time of the compared states.
 compare::SnapshotParams snapshot_params(const Scene& scene, double t) {
-  compare::SnapshotParams p;
   const double spacing = domain_length(scene.initial) / static_cast<double>(scene.initial.N);
-  p.clusters = scene.particles.r == 0 ? particles::merged_bodies_criteria()
-                                      : particles::default_cluster_criteria(scene.particles.delta, spacing, t);
-  if (scene.compare.cluster_gap > 0) p.clusters.max_gap = scene.compare.cluster_gap;
-  if (scene.compare.cluster_dv > 0) p.clusters.max_dv = scene.compare.cluster_dv;
-  p.match_distance = scene.compare.match_distance;
-  // Automatic: a tenth of the typical cluster mass t^(2/3) of the sticky regime
-  // (DESIGN.md §1), so that pairs of free particles do not count as clusters.
-  p.min_cluster_particles = scene.compare.min_cluster_particles > 0
-                                ? scene.compare.min_cluster_particles
-                                : std::max(2.0, 0.1 * std::pow(t, 2.0 / 3.0));
-  p.deposit = scene.compare.deposit;
-  return p;
+  return compare::snapshot_params(scene.compare, scene.particles.r, scene.particles.delta, spacing, t);
 }
 
 const continuum::ContinuumResult& compared_field(const RunState& state) {
@@ -88,7 +77,7 @@ void summarize_snapshot(RunState& state, const compare::SnapshotComparison& c) {
   rep.push_back("## Shocks and clusters at t = " + brief(c.t) + " (solver `" + state.scene.compare.solver + "`)\n");
   rep.push_back("| figure of merit | value | theory / ideal |\n|---|---|---|");
   rep.push_back("| shocks (mass >= " + brief(c.min_mass) + ") | " + std::to_string(c.n_shocks) + " | N t^(-2/3) = " +
-                brief(std::round(state.scene.initial.N * std::pow(c.t, -2.0 / 3.0))) + " (ratio " +
+                brief(std::round(compare::expected_shock_count(static_cast<double>(state.scene.initial.N), c.t))) + " (ratio " +
                 brief(c.shock_count_ratio) + ") |");
   rep.push_back("| clusters (mass >= " + brief(c.min_mass) + ") | " + std::to_string(c.n_clusters) +
                 " | = shocks |");

@@ -128,11 +128,8 @@ void run_particles_stage(RunState& state) {
   state.final_time = e.first.stop.time;
   state.t_series = e.t;
   state.T_series = e.T.mean;
-  if (e.first.histogram.bins > 0) {
-    state.hist_z = bin_centres(e.first.histogram);
-    state.hist_t = e.first.histogram.t;
-    state.hist_density = e.histogram;
-  }
+  if (e.first.histogram.bins > 0)
+    state.histogram = {e.first.histogram.zmax, e.first.histogram.bins, e.first.histogram.t, e.histogram};
 }
 
 }  // namespace shockgas::app

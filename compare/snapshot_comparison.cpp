@@ -1,6 +1,6 @@
 #include "shockgas/compare/snapshot_comparison.hpp"
 
-#include "shockgas/compare/scaling_laws.hpp"
+#include "shockgas/compare/theory.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {
@@ -39,6 +39,17 @@ std::vector<double> occupied(const std::vector<double>& mass_or_density) {
 }
 
 }  // namespace
+
+SnapshotParams snapshot_params(const CompareParams& c, double r, double delta, double mean_spacing, double t) {
+  SnapshotParams p;
+  p.clusters = r == 0 ? particles::merged_bodies_criteria() : particles::default_cluster_criteria(delta, mean_spacing, t);
+  if (c.cluster_gap > 0) p.clusters.max_gap = c.cluster_gap;
+  if (c.cluster_dv > 0) p.clusters.max_dv = c.cluster_dv;
+  p.match_distance = c.match_distance;
+  p.min_cluster_particles = c.min_cluster_particles > 0 ? c.min_cluster_particles : automatic_min_cluster_particles(t);
+  p.deposit = c.deposit;
+  return p;
+}
 
 SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const continuum::ContinuumResult& field,
                                     const SnapshotParams& params) {

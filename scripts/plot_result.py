@@ -6,6 +6,7 @@ Writes DIR/*.png. Exit code 3 when matplotlib or h5py is missing.
 """
 import os
 import sys
+from fractions import Fraction
 
 try:
     import h5py
@@ -44,11 +45,16 @@ def plot_temperature(f, out_dir):
         a = p["analysis"]
         ax.plot(a["T_fit_t"][:], a["T_fit_T"][:], "k-", lw=2, alpha=0.6,
                 label=f"fit: T ~ t^{attr(a, 'T_exponent', 0):.3f}")
-    # guides: t^-2 (homogeneous cooling) through the steepest point, t^-2/3
-    # (sticky-gas regime) through the last point, each over two decades
+    # guides, with the exponents the result file states (compare/theory.hpp): the
+    # homogeneous-cooling law through the steepest point, the sticky-gas law
+    # through the last point, each over two decades
     slopes = np.gradient(np.log(T), np.log(t))
     steep = int(np.argmin(slopes))
-    for power, anchor, style, label in [(-2.0, steep, "--", "t^-2"), (-2.0 / 3.0, len(t) - 1, ":", "t^-2/3")]:
+    a = p["analysis"] if "analysis" in p else None
+    guides = [] if a is None else [(attr(a, "T_cooling_exponent_theory"), steep, "--"),
+                                   (attr(a, "T_exponent_theory"), len(t) - 1, ":")]
+    for power, anchor, style in [g for g in guides if g[0] is not None]:
+        label = f"t^{Fraction(power).limit_denominator(12)}"
         tt = t[(t >= t[anchor] / 10) & (t <= t[anchor] * 10)]
         ax.plot(tt, T[anchor] * (tt / t[anchor]) ** power, style, color="gray", label=label)
     ax.set_xscale("log")
