@@ -21,7 +21,7 @@ constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 struct Arguments {
   std::string scene_path, out_dir, result_path;
   std::vector<std::string> overrides;
-  bool defaults = false, markdown = false, quiet = false, no_plots = false;
+  bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false;
   studies::StudyOptions bench;
 };
 
@@ -49,7 +49,7 @@ int do_run(const Arguments& args) {
 int dispatch(const CLI::App& app, const Arguments& args) {
   if (app.got_subcommand("run")) return do_run(args);
   if (app.got_subcommand("info")) {
-    std::cout << describe_result(args.result_path);
+    std::cout << (args.layout ? describe_layout() : describe_result(args.result_path));
     return kExitOk;
   }
   if (app.got_subcommand("bench")) {
@@ -75,7 +75,9 @@ int run_command(int argc, char** argv) {
   Arguments args;
   add_run(app, args);
   auto* info = app.add_subcommand("info", "What a result file holds, its scene and its provenance");
-  info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5")->required();
+  info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5");
+  info->add_flag("--layout", args.layout, "print every dataset and summary key a run may write (docs/output.md)");
+  info->require_option(1);
   auto* scene = app.add_subcommand("scene", "Print the complete commented scene with every key and its default");
   scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range");
   scene->add_flag("--markdown", args.markdown, "print the reference of every key as markdown (docs/scenes.md)");

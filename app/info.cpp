@@ -2,7 +2,8 @@
 
 #include <sstream>
 
-#include "shockgas/app/hdf5_file.hpp"
+#include "hdf5_file.hpp"
+#include "output_layout.hpp"
 
 namespace shockgas::app {
 
@@ -26,16 +27,19 @@ std::string describe_result(const std::string& path) {
     else if (name == "resolved_parameters") resolved = value;
     else out << "  " << name << ": " << value << "\n";
   }
-  out << "\ndatasets:\n";
+  out << "\ndatasets (docs/output.md explains each):\n";
   for (const auto& d : file.datasets()) {
     out << "  " << d.path << "  " << d.type << " " << shape_text(d.shape);
     if (!d.unit.empty()) out << "  [" << d.unit << "]";
     if (!d.description.empty()) out << "  " << d.description;
+    if (!find_in_layout(LayoutEntry::Kind::dataset, d.path)) out << "  (not in this version's layout)";
     out << "\n";
   }
   out << "\nscene (as given):\n" << scene_text << "\n";
   if (!resolved.empty()) out << "resolved parameters:\n" << resolved;
   return out.str();
 }
+
+std::string describe_layout() { return output_layout_markdown(); }
 
 }  // namespace shockgas::app

@@ -133,6 +133,17 @@ Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization) {
   return b;
 }
 
+InitialCondition::InitialCondition(const InitialParams& p) : params_(p) {
+  validate(p);
+  field_ = make_initial_field(p, 0);
+  if (!field_.from_bodies()) expression_bodies_ = make_initial_bodies(p, 0);
+}
+
+Bodies InitialCondition::realization(std::uint64_t k) const {
+  const bool depends_on_k = params_.velocities == Velocities::uniform || params_.velocities == Velocities::gaussian;
+  return k == 0 || !depends_on_k ? bodies() : make_initial_bodies(params_, k);
+}
+
 InitialField make_initial_field(const InitialParams& p, std::uint64_t realization) {
   InitialField f;
   f.length = domain_length(p);

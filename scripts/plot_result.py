@@ -147,7 +147,10 @@ def plot_sweep(f, out_dir):
         last = (t[ok], T[ok])
     if last is not None:
         t, T = last
-        ax.loglog(t, T[-1] * (t / t[-1]) ** (-2.0 / 3.0), ":", color="gray", label="t^-2/3")
+        power = attr(f["sweep"], "T_exponent_theory")
+        if power is not None:
+            ax.loglog(t, T[-1] * (t / t[-1]) ** power, ":", color="gray",
+                      label=f"t^{Fraction(power).limit_denominator(12)}")
         ax.set_xlabel("t")
         ax.set_ylabel("T(t)")
         ax.legend(fontsize=8)

@@ -16,7 +16,7 @@
 #include "shockgas/app/command.hpp"
 #include "shockgas/app/scene.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/app/hdf5_file.hpp"
+#include "hdf5_file.hpp"
 
 namespace shockgas::extension {
 namespace {

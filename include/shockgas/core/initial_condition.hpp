@@ -65,6 +65,31 @@ Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization = 0
 // velocities = "expression", else the particles as point masses.
 InitialField make_initial_field(const InitialParams& p, std::uint64_t realization = 0);
 
+// The initial condition of a scene, built once and handed to every model: the
+// particles of realization 0 and the continuum's view of the same data. Other
+// realizations are drawn on demand (their seeds depend on their index only).
+class InitialCondition {
+ public:
+  // Validates p (InputError naming the key) and builds realization 0.
+  explicit InitialCondition(const InitialParams& p);
+
+  const InitialParams& params() const { return params_; }
+  double length() const { return field_.length; }
+  // Realization 0 as point masses (for expressions: the lattice of N bodies of
+  // make_initial_bodies). Sorted, positions in [0, length).
+  const Bodies& bodies() const { return field_.from_bodies() ? field_.bodies : expression_bodies_; }
+  // Realization k >= 1 (k = 0: a copy of bodies()). Data from a file or from
+  // expressions do not depend on k.
+  Bodies realization(std::uint64_t k) const;
+  // The continuum's view of realization 0: expressions, or bodies() as point masses.
+  const InitialField& field() const { return field_; }
+
+ private:
+  InitialParams params_;
+  InitialField field_;
+  Bodies expression_bodies_;
+};
+
 // Checks every key of p (throws InputError naming the key): the declared rules,
 // then the rules between keys (the file exists for velocities = "file", the
 // expressions parse and are finite, rho0 > 0). Called by the scene parser and by

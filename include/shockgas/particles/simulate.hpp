@@ -49,11 +49,14 @@ struct EnsembleResult {
   double wall_seconds = 0;  // wall-clock time of the whole ensemble [s]
 };
 
-// params.realizations runs of make_initial_bodies(initial, k), k = 0..R-1 (seed
-// realization_seed(initial.seed, k)), on params.threads threads (0 = all cores),
-// combined in index order: bit-identical whatever the number of threads.
-// L = domain_length(initial). progress: the mean fraction over realizations, from
-// one thread at a time.
+// params.realizations runs of initial.realization(k), k = 0..R-1 (realization 0:
+// initial.bodies(); seed realization_seed(seed, k)), on params.threads threads
+// (0 = all cores), combined in index order: bit-identical whatever the number of
+// threads. L = initial.length(). progress: the mean fraction over realizations,
+// from one thread at a time.
+EnsembleResult run_ensemble(const InitialCondition& initial, const ParticleParams& params,
+                            const ProgressCallback& progress = {});
+// The same from the parameters (the initial condition built here).
 EnsembleResult run_ensemble(const InitialParams& initial, const ParticleParams& params,
                             const ProgressCallback& progress = {});
 
