@@ -1,6 +1,6 @@
 // Rules of the repository that a reader relies on: each solver's name is written
-// in one source only (its registration), and no source file outgrows what can be
-// read at once.
+// in one source only (its registration), sources cite only documents of the
+// repository, and no source file outgrows what can be read at once.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -80,6 +80,23 @@ TEST(SourceRules, EachSolverNameIsWrittenInOneSourceOnly) {
     std::string list;
     for (const auto& f : in) list += " " + f;
     EXPECT_EQ(in.size(), 1u) << "\"" << name << "\" is written in:" << list;
+  }
+}
+
+TEST(SourceRules, SourcesCiteOnlyDocumentsOfTheRepository) {
+  std::vector<std::string> folders = kSourceFolders;
+  for (const char* f : {"tests", "scripts", "data", "docs"}) folders.push_back(f);
+  for (const auto& path : files(folders, {".cpp", ".hpp", ".h", ".py", ".toml", ".json", ".cmake", ".md", ""})) {
+    if (path.filename() == "test_source_rules.cpp") continue;  // names the document it looks for
+    const std::string text = read_file(path);
+    EXPECT_EQ(text.find("DESIGN.md"), std::string::npos) << path << " cites DESIGN.md, which is not in the repository";
+    for (std::size_t at = text.find("docs/"); at != std::string::npos; at = text.find("docs/", at + 1)) {
+      const std::size_t end = text.find(".md", at);
+      if (end == std::string::npos || end - at > 40) continue;
+      const std::string doc = text.substr(at, end + 3 - at);
+      if (doc.find_first_of(" \n\"'`()") != std::string::npos) continue;
+      EXPECT_TRUE(fs::exists(kRoot / doc)) << path << " cites " << doc << ", which does not exist";
+    }
   }
 }
 

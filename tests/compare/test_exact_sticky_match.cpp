@@ -1,5 +1,5 @@
 // The exact rungs of the validation ladder through the comparison pipeline
-// (DESIGN.md §2): the r = 0 gas is its own hull, so every cluster must meet
+// (docs/design.md §2): the r = 0 gas is its own hull, so every cluster must meet
 // its shock; and with uniform initial density the sticky gas and the adhesion
 // (Burgers) shocks coincide.
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The pressureless gas (solve_pressureless): delta-shocks moving at momentum /
 // mass, vacuum, conservation of mass and momentum, and the comparison with
 // Burgers + continuity (solve_godunov): the same shocks for uniform initial
-// density, different ones otherwise (DESIGN.md §2, rung 2).
+// density, different ones otherwise (docs/design.md §2, rung 2).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #pragma once
-// A continuum solver written outside shockgas, as docs/design.md ("Adding a
-// solver") shows: Burgers' velocity by the first-order Rusanov (local
+// A continuum solver written outside shockgas, as docs/design.md §5 ("A solver")
+// shows: Burgers' velocity by the first-order Rusanov (local
 // Lax-Friedrichs) flux on the periodic grid,
 //
 //     F_{i+1/2} = (f(v_i) + f(v_{i+1})) / 2 - a (v_{i+1} - v_i) / 2,   a = max(|v_i|, |v_{i+1}|),

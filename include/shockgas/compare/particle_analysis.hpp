@@ -1,5 +1,5 @@
 #pragma once
-// What the particles alone show (docs/design.md, "Validation ladder", rung 4): the
+// What the particles alone show (docs/design.md §2, rung 4): the
 // cooling law T(t) ~ t^a with its crossovers, and the collapse and tail of the
 // scaled velocity distribution, from an ensemble's sample-time series. An
 // analysis the data cannot support is skipped (too few samples) or "not

@@ -3,7 +3,7 @@
 // reference. BCDR = Ben-Naim, Chen, Doolen & Redner, "Shock-like dynamics of
 // inelastic gases", PRL 83, 4069 (1999); its equations are numbered as there.
 // Units: the initial mean spacing x0 = L / N, the typical initial velocity v0,
-// time x0 / v0 (docs/design.md, "Units"); eps = (1 - r) / 2 (BCDR eq. 1).
+// time x0 / v0 (docs/design.md §6); eps = (1 - r) / 2 (BCDR eq. 1).
 //
 // Cooling law (BCDR eq. 3):
 //   T ~ 1                   t << t_dissip = 1/eps        (effectively elastic)

@@ -6,7 +6,7 @@
 // a run, the L1 reference and the plots' labels and colours all read this.
 //
 // Adding a solver: write it in its own files, give it a SolverInfo factory there,
-// and add one line to the list in continuum/solvers.cpp (docs/design.md shows a
+// and add one line to the list in continuum/solvers.cpp (docs/design.md §5 shows a
 // worked example). A program may also register_solver() its own at start-up.
 #include <functional>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
-// The one initial condition that feeds every model (docs/design.md, "One initial
-// condition"): the particles see it as point masses, the continuum as pointwise
-// data or cell averages.
+// The one initial condition that feeds every model (docs/design.md §3): the
+// particles see it as point masses, the continuum as pointwise data or cell
+// averages.
 #include <array>
 #include <cstdint>
 #include <functional>
