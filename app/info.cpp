@@ -23,9 +23,12 @@ std::string describe_result(const std::string& path) {
   out << path << "\n\nprovenance:\n";
   std::string scene_text, resolved;
   for (const auto& [name, value] : file.attributes("/")) {
-    if (name == "scene_text") scene_text = value;
-    else if (name == "resolved_parameters") resolved = value;
-    else out << "  " << name << ": " << value << "\n";
+    if (name == "scene_text")
+      scene_text = value;
+    else if (name == "resolved_parameters")
+      resolved = value;
+    else
+      out << "  " << name << ": " << value << "\n";
   }
   out << "\ndatasets (docs/output.md explains each):\n";
   for (const auto& d : file.datasets()) {

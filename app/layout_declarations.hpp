@@ -13,8 +13,8 @@ namespace shockgas::app::layout {
 
 using Emit = std::function<void(const RunResults&, Emitter&)>;
 
-inline Declaration dataset(Part part, std::string path, std::string unit, std::string description, std::string when,
-                           Emit emit) {
+inline Declaration dataset(Part part, std::string path, std::string unit, std::string description,
+                           std::string when, Emit emit) {
   return {{LayoutEntry::Kind::dataset, part, std::move(path), std::move(unit), std::move(description),
            std::move(when)},
           std::move(emit)};
@@ -27,8 +27,8 @@ inline Declaration attribute(Part part, std::string path, std::string unit, std:
           std::move(emit)};
 }
 
-inline Declaration key(Part part, std::string path, std::string unit, std::string description, std::string when,
-                       Emit emit) {
+inline Declaration key(Part part, std::string path, std::string unit, std::string description,
+                       std::string when, Emit emit) {
   return {{LayoutEntry::Kind::summary, part, std::move(path), std::move(unit), std::move(description),
            std::move(when)},
           std::move(emit)};
@@ -43,7 +43,7 @@ std::vector<Declaration> provenance_datasets();
 std::vector<Declaration> particle_datasets();  // with the initial condition's
 std::vector<Declaration> field_datasets();     // analysis, continuum, comparison, sweep
 
-std::vector<Declaration> run_keys();       // provenance, initial, particles, analysis
+std::vector<Declaration> run_keys();         // provenance, initial, particles, analysis
 std::vector<Declaration> comparison_keys();  // continuum, comparison, sweep
 
 }  // namespace shockgas::app::layout

@@ -45,14 +45,16 @@ struct Series {
 
 const Series kSeries[] = {
     {"T", &particles::EnsembleResult::T, "length^2/time^2", "temperature <v^2> - <v>^2, mass weighted"},
-    {"mean_v", &particles::EnsembleResult::mean_v, "length/time", "mass-weighted mean velocity (momentum check)"},
+    {"mean_v", &particles::EnsembleResult::mean_v, "length/time",
+     "mass-weighted mean velocity (momentum check)"},
     {"n_bodies", &particles::EnsembleResult::n_bodies, "1", "bodies (clusters after merges)"},
     {"n_clusters", &particles::EnsembleResult::n_clusters, "1", "clusters by the default cluster criteria"},
     {"collisions", &particles::EnsembleResult::collisions, "1", "cumulative collisions, all kinds"},
     {"inelastic", &particles::EnsembleResult::inelastic, "1", "cumulative inelastic collisions"},
     {"elastic", &particles::EnsembleResult::elastic, "1", "cumulative elastic sub-threshold collisions"},
     {"merges", &particles::EnsembleResult::merges, "1", "cumulative merges"},
-    {"dissipated", &particles::EnsembleResult::dissipated, "mass length^2/time^2", "cumulative kinetic energy dissipated"},
+    {"dissipated", &particles::EnsembleResult::dissipated, "mass length^2/time^2",
+     "cumulative kinetic energy dissipated"},
 };
 
 std::vector<Declaration> series() {
@@ -60,8 +62,9 @@ std::vector<Declaration> series() {
   std::vector<Declaration> d;
   for (const Series& s : kSeries) {
     const auto stats = s.stats;
-    d.push_back(dataset(p, std::string("/particles/") + s.name, s.unit, std::string(s.description) + " (ensemble mean)",
-                        "", from_particles([stats](const ParticleResults& pr, Emitter& out) {
+    d.push_back(dataset(p, std::string("/particles/") + s.name, s.unit,
+                        std::string(s.description) + " (ensemble mean)", "",
+                        from_particles([stats](const ParticleResults& pr, Emitter& out) {
                           if (!(pr.ensemble.*stats).mean.empty()) out.values((pr.ensemble.*stats).mean);
                         })));
     d.push_back(dataset(p, std::string("/particles/") + s.name + "_stderr", s.unit,
@@ -74,10 +77,11 @@ std::vector<Declaration> series() {
 }
 
 // x, v, m of a state (`what`: whose) under group (with placeholders).
-std::vector<Declaration> bodies(const std::string& group, const std::string& what, const std::string& when,
-                                std::function<void(const RunResults&, const std::function<void(const Bodies&,
-                                                                                               std::vector<std::string>)>&)>
-                                    each) {
+std::vector<Declaration> bodies(
+    const std::string& group, const std::string& what, const std::string& when,
+    std::function<void(const RunResults&,
+                       const std::function<void(const Bodies&, std::vector<std::string>)>&)>
+        each) {
   struct Column {
     const char* name;
     std::vector<double> Bodies::*data;
@@ -90,10 +94,11 @@ std::vector<Declaration> bodies(const std::string& group, const std::string& wha
   std::vector<Declaration> d;
   for (const Column& c : columns) {
     const auto data = c.data;
-    d.push_back(dataset(Part::particles, group + "/" + c.name, c.unit, what + c.what, when,
-                        [each, data](const RunResults& r, Emitter& out) {
-                          each(r, [&](const Bodies& b, std::vector<std::string> at) { out.values(b.*data, at); });
-                        }));
+    d.push_back(
+        dataset(Part::particles, group + "/" + c.name, c.unit, what + c.what, when,
+                [each, data](const RunResults& r, Emitter& out) {
+                  each(r, [&](const Bodies& b, std::vector<std::string> at) { out.values(b.*data, at); });
+                }));
   }
   return d;
 }
@@ -120,7 +125,8 @@ std::vector<Declaration> records() {
   d.push_back(attribute(p, "/particles/snapshots/{k}@t", "time", "time of snapshot k", "",
                         from_particles([](const ParticleResults& pr, Emitter& out) {
                           const auto& snaps = pr.ensemble.first.snapshots;
-                          for (std::size_t k = 0; k < snaps.size(); ++k) out.number(snaps[k].t, {std::to_string(k)});
+                          for (std::size_t k = 0; k < snaps.size(); ++k)
+                            out.number(snaps[k].t, {std::to_string(k)});
                         })));
   const char* hist = "when particles.histogram_bins > 0";
   auto histogram = [](auto f) {
@@ -128,8 +134,9 @@ std::vector<Declaration> records() {
       if (pr.histogram.bins > 0 && !pr.histogram.t.empty()) f(pr.histogram, out);
     });
   };
-  d.push_back(dataset(p, "/particles/histogram/z", "length/time^(2/3)", "bin centres of z = (v - <v>) t^(1/3)", hist,
-                      histogram([](const compare::ZHistogram& h, Emitter& out) { out.values(bin_centres(h)); })));
+  d.push_back(
+      dataset(p, "/particles/histogram/z", "length/time^(2/3)", "bin centres of z = (v - <v>) t^(1/3)", hist,
+              histogram([](const compare::ZHistogram& h, Emitter& out) { out.values(bin_centres(h)); })));
   d.push_back(dataset(p, "/particles/histogram/t", "time", "sample times", hist,
                       histogram([](const compare::ZHistogram& h, Emitter& out) { out.values(h.t); })));
   d.push_back(dataset(p, "/particles/histogram/density", "time^(2/3)/length",
@@ -146,11 +153,10 @@ std::vector<Declaration> records() {
   };
   d.push_back(dataset(p, "/particles/spacetime/t", "time", "frame times", st,
                       spacetime([](const particles::SpaceTime& s, Emitter& out) { out.values(s.t); })));
-  d.push_back(dataset(p, "/particles/spacetime/x", "length",
-                      "position of every original particle at each frame (realization 0)", st,
-                      spacetime([](const particles::SpaceTime& s, Emitter& out) {
-                        out.matrix(s.x, s.t.size(), s.n);
-                      })));
+  d.push_back(dataset(
+      p, "/particles/spacetime/x", "length",
+      "position of every original particle at each frame (realization 0)", st,
+      spacetime([](const particles::SpaceTime& s, Emitter& out) { out.matrix(s.x, s.t.size(), s.n); })));
   return d;
 }
 
@@ -166,8 +172,8 @@ std::vector<Declaration> stop() {
                 stop_of([](const particles::RunStop& s, Emitter& out) { out.text(to_string(s.reason)); })),
       attribute(p, "/particles@stop_time", "time", "when it ended", "",
                 stop_of([](const particles::RunStop& s, Emitter& out) { out.number(s.time); })),
-      attribute(p, "/particles@collapse_x", "length", "where the inelastic collapse happened", "after a collapse",
-                stop_of([](const particles::RunStop& s, Emitter& out) {
+      attribute(p, "/particles@collapse_x", "length", "where the inelastic collapse happened",
+                "after a collapse", stop_of([](const particles::RunStop& s, Emitter& out) {
                   if (s.reason == StopReason::collapse) out.number(s.position);
                 })),
       attribute(p, "/particles@stall_x", "length", "where time stopped advancing through rounding",
@@ -189,7 +195,8 @@ std::vector<Declaration> provenance_datasets() {
       attribute(p, "/@created_utc", "", "when, ISO 8601", "",
                 [](const RunResults&, Emitter& out) { out.text(utc_now()); }),
       attribute(p, "/@scene_name", "", "the scene", "", scene_text([](const Scene& s) { return s.name; })),
-      attribute(p, "/@scene_path", "", "the scene file", "", scene_text([](const Scene& s) { return s.path; })),
+      attribute(p, "/@scene_path", "", "the scene file", "",
+                scene_text([](const Scene& s) { return s.path; })),
       attribute(p, "/@overrides", "", "the --set overrides, as given", "", scene_text(overrides_text)),
       attribute(p, "/@scene_text", "", "the scene file as given", "",
                 scene_text([](const Scene& s) { return s.text; })),

@@ -1,10 +1,9 @@
 // The writers, the lookup and the documentation of the declared output layout.
 #include "output_layout.hpp"
 
-#include "layout_declarations.hpp"
-
 #include <sstream>
 
+#include "layout_declarations.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -69,7 +68,8 @@ class SummaryEmitter : public Emitter {
     *node = value;
   }
   void values(const std::vector<double>& d, const std::vector<std::string>& at) override { json(d, at); }
-  void matrix(const std::vector<double>& d, std::size_t, std::size_t, const std::vector<std::string>& at) override {
+  void matrix(const std::vector<double>& d, std::size_t, std::size_t,
+              const std::vector<std::string>& at) override {
     json(d, at);
   }
   void text(const std::string& v, const std::vector<std::string>& at) override { json(v, at); }
@@ -100,26 +100,35 @@ bool matches(const std::string& pattern, const std::string& concrete, char sep) 
 // "object@name": the objects match as paths, the names exactly.
 bool matches_attribute(const std::string& pattern, const std::string& concrete) {
   const auto p = pattern.find('@'), c = concrete.find('@');
-  if (p == std::string::npos || c == std::string::npos || pattern.substr(p) != concrete.substr(c)) return false;
+  if (p == std::string::npos || c == std::string::npos || pattern.substr(p) != concrete.substr(c))
+    return false;
   return matches(pattern.substr(0, p), concrete.substr(0, c), '/');
 }
 
 const char* part_title(Part part) {
   switch (part) {
-    case Part::provenance: return "Provenance";
-    case Part::initial: return "The initial condition (when particles run)";
-    case Part::particles: return "Particles (when [particles] is present)";
-    case Part::analysis: return "The particles' cooling law and velocity distribution";
-    case Part::continuum: return "Continuum (one group per solver of continuum.solvers)";
-    case Part::compare: return "Particles against continuum (when [compare] and [continuum] are present)";
-    case Part::sweep: return "Sweep (a [sweep] scene's own result)";
+    case Part::provenance:
+      return "Provenance";
+    case Part::initial:
+      return "The initial condition (when particles run)";
+    case Part::particles:
+      return "Particles (when [particles] is present)";
+    case Part::analysis:
+      return "The particles' cooling law and velocity distribution";
+    case Part::continuum:
+      return "Continuum (one group per solver of continuum.solvers)";
+    case Part::compare:
+      return "Particles against continuum (when [compare] and [continuum] are present)";
+    case Part::sweep:
+      return "Sweep (a [sweep] scene's own result)";
   }
   return "";
 }
 
 std::string cell(const std::string& text) {
   std::string out;
-  for (char c : text) out += c == '|' ? std::string("\\|") : c == '<' ? std::string("&lt;") : std::string(1, c);
+  for (char c : text)
+    out += c == '|' ? std::string("\\|") : c == '<' ? std::string("&lt;") : std::string(1, c);
   return out;
 }
 
@@ -128,11 +137,13 @@ void table(std::ostringstream& out, const std::vector<Declaration>& decls, Part 
   for (const auto& d : decls) {
     const LayoutEntry& e = d.entry;
     if (e.part != part) continue;
-    if (!any) out << "\n### " << part_title(part) << "\n\n| " << head << " | unit | meaning |\n|---|---|---|\n";
+    if (!any)
+      out << "\n### " << part_title(part) << "\n\n| " << head << " | unit | meaning |\n|---|---|---|\n";
     any = true;
     std::string meaning = e.description;
     if (!e.when.empty()) meaning += " (" + e.when + ")";
-    out << "| `" << e.path << "` | " << (e.unit.empty() ? "" : cell(e.unit)) << " | " << cell(meaning) << " |\n";
+    out << "| `" << e.path << "` | " << (e.unit.empty() ? "" : cell(e.unit)) << " | " << cell(meaning)
+        << " |\n";
   }
 }
 
@@ -187,7 +198,7 @@ const LayoutEntry* find_in_layout(LayoutEntry::Kind kind, const std::string& con
   const auto& decls = kind == LayoutEntry::Kind::summary ? summary_declarations() : dataset_declarations();
   for (const auto& d : decls) {
     if (d.entry.kind != kind) continue;
-    if (kind == LayoutEntry::Kind::summary ? matches(d.entry.path, concrete, '.')
+    if (kind == LayoutEntry::Kind::summary   ? matches(d.entry.path, concrete, '.')
         : kind == LayoutEntry::Kind::dataset ? matches(d.entry.path, concrete, '/')
                                              : matches_attribute(d.entry.path, concrete))
       return &d.entry;

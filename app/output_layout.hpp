@@ -4,14 +4,13 @@
 // its unit, its meaning and how it is taken from the run's results. The writers
 // below, `shockgas info` and docs/output.md follow from these declarations; a
 // test holds them against the documentation and against the files of a run.
-#include <nlohmann/json.hpp>
-
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "run_results.hpp"
 #include "hdf5_file.hpp"
+#include "run_results.hpp"
 
 namespace shockgas::app {
 

@@ -1,10 +1,10 @@
 #include "partial_outputs.hpp"
 
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdio>
 #include <fstream>
-
-#include <unistd.h>
 
 #include "shockgas/core/error.hpp"
 

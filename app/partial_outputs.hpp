@@ -2,9 +2,8 @@
 // result.h5 and summary.json of one output directory, written under temporary
 // names and renamed when complete, so that an interrupted or failed run never
 // leaves a file that looks whole.
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace shockgas::app {

@@ -25,8 +25,8 @@ void particles_part(std::ostream& out, const Scene& scene, const particles::Ense
   out << "- " << scene.initial.N << " particles, r = " << brief(p.r) << ", delta = " << brief(p.delta) << " ("
       << name_of(p.subthreshold) << " below it), " << p.realizations << " realization(s), solver `"
       << name_of(p.solver) << "`.\n";
-  out << "- " << e.total_collisions << " collisions in " << brief(e.wall_seconds) << " s (" << brief(std::round(rate))
-      << " per second).\n";
+  out << "- " << e.total_collisions << " collisions in " << brief(e.wall_seconds) << " s ("
+      << brief(std::round(rate)) << " per second).\n";
   out << "- Run ended: " << to_string(stop.reason) << " at t = " << brief(stop.time);
   if (stop.reason == particles::StopReason::collapse)
     out << " (inelastic collapse at x = " << brief(stop.position) << ")";
@@ -45,18 +45,20 @@ void cooling_part(std::ostream& out, const compare::CoolingAnalysis& a) {
   out << "- T ~ t^a with a = " << brief(fit.exponent) << " +- " << brief(fit.exponent_error) << " on ["
       << brief(fit.t_min) << ", " << brief(fit.t_max)
       << "] (sticky-gas regime theory: " << compare::kStickyCoolingExponentText << ").\n";
-  out << "- Crossovers read off d ln T / d ln t: t_dissip = " << brief(c.t_dissip) << " (theory ~ 1/eps = "
-      << brief(c.t_dissip_theory) << "), t_stick = " << brief(c.t_stick) << " (theory ~ eps^(-3/2) = "
-      << brief(c.t_stick_theory)
-      << "); nan = the local exponent never reaches the t^-2 regime (none for moderately inelastic gases, e.g. "
+  out << "- Crossovers read off d ln T / d ln t: t_dissip = " << brief(c.t_dissip)
+      << " (theory ~ 1/eps = " << brief(c.t_dissip_theory) << "), t_stick = " << brief(c.t_stick)
+      << " (theory ~ eps^(-3/2) = " << brief(c.t_stick_theory)
+      << "); nan = the local exponent never reaches the t^-2 regime (none for moderately inelastic gases, "
+         "e.g. "
          "r = 0.5) or the crossover is outside the sampled window.\n\n";
 }
 
 void distribution_part(std::ostream& out, const compare::DistributionAnalysis& a) {
   if (a.collapse_distance)
-    out << "## Velocity distribution\n\n- Collapse of P(v,t) t^(-1/3) against z = v t^(1/3) over " << a.late.size()
-        << " times in [" << brief(a.late.front().t) << ", " << brief(a.late.back().t) << "]: mean L1 distance "
-        << brief(*a.collapse_distance) << " (0 = perfect collapse, 2 = disjoint).\n";
+    out << "## Velocity distribution\n\n- Collapse of P(v,t) t^(-1/3) against z = v t^(1/3) over "
+        << a.late.size() << " times in [" << brief(a.late.front().t) << ", " << brief(a.late.back().t)
+        << "]: mean L1 distance " << brief(*a.collapse_distance)
+        << " (0 = perfect collapse, 2 = disjoint).\n";
   if (!a.not_determined.empty()) {
     out << "- velocity_distribution: not determined (" << a.not_determined << ").\n\n";
     return;
@@ -68,8 +70,8 @@ void distribution_part(std::ostream& out, const compare::DistributionAnalysis& a
     out << ": not determined (the best a sits at the scan bound: too few or too noisy tail points; " << theory
         << ").\n\n";
   else
-    out << " (one standard deviation): a = " << brief(a.tail.exponent) << " +- " << brief(a.tail.exponent_error)
-        << " (" << theory << ").\n\n";
+    out << " (one standard deviation): a = " << brief(a.tail.exponent) << " +- "
+        << brief(a.tail.exponent_error) << " (" << theory << ").\n\n";
 }
 
 void continuum_part(std::ostream& out, const Scene& scene, const std::vector<ContinuumRun>& runs) {
@@ -95,15 +97,15 @@ void comparison_part(std::ostream& out, const Scene& scene, const Comparison& cm
   out << "## Shocks and clusters at t = " << brief(c.t) << " (solver `" << cmp.solver << "`)\n\n";
   out << "| figure of merit | value | theory / ideal |\n|---|---|---|\n";
   out << "| shocks (mass >= " << brief(c.min_mass) << ") | " << c.n_shocks << " | N t^(-2/3) = "
-      << brief(std::round(compare::expected_shock_count(static_cast<double>(scene.initial.N), c.t))) << " (ratio "
-      << brief(c.shock_count_ratio) << ") |\n";
+      << brief(std::round(compare::expected_shock_count(static_cast<double>(scene.initial.N), c.t)))
+      << " (ratio " << brief(c.shock_count_ratio) << ") |\n";
   out << "| clusters (mass >= " << brief(c.min_mass) << ") | " << c.n_clusters << " | = shocks |\n";
   out << "| matched cluster mass fraction | " << brief(c.match.matched_mass_fraction) << " | 1 |\n";
   out << "| largest matched position error | " << brief(c.match.max_position_error) << " | 0 |\n";
   out << "| median sawtooth slope x t (continuum) | " << brief(c.sawtooth.slope_times_t.median) << " | "
       << brief(compare::kSawtoothSlopeTimesT) << " |\n";
-  out << "| median sawtooth slope x t (particles) | " << brief(c.particle_sawtooth.slope_times_t.median) << " | "
-      << brief(compare::kSawtoothSlopeTimesT) << " |\n\n";
+  out << "| median sawtooth slope x t (particles) | " << brief(c.particle_sawtooth.slope_times_t.median)
+      << " | " << brief(compare::kSawtoothSlopeTimesT) << " |\n\n";
 }
 
 }  // namespace

@@ -16,8 +16,8 @@ InitialCondition build_initial(const Scene& scene);
 void preflight(const Scene& scene, const InitialCondition& initial);
 
 // One scene (no sweep) into dir, after preflight(); returns what a sweep keeps of it.
-VariantResult run_single(const Scene& scene, const InitialCondition& initial, const std::filesystem::path& dir,
-                         const RunOptions& options);
+VariantResult run_single(const Scene& scene, const InitialCondition& initial,
+                         const std::filesystem::path& dir, const RunOptions& options);
 
 // A [sweep] scene: each variant into dir/<k>-<label>/, the side-by-side table and plots into dir.
 std::string run_sweep(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);

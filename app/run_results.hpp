@@ -5,7 +5,6 @@
 // report.md are written from it (output_layout.hpp, report.hpp). Nothing is read
 // back from disk.
 #include <nlohmann/json.hpp>
-
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,9 +35,9 @@ struct ContinuumRun {
 };
 
 struct Comparison {
-  std::string solver;                   // compare.solver
+  std::string solver;  // compare.solver
   compare::SnapshotComparison snapshot;
-  std::string note;                     // set if the solver was re-run to the particles' final time
+  std::string note;  // set if the solver was re-run to the particles' final time
 };
 
 // A variant of a sweep, reduced to what the side-by-side needs: its summary and
@@ -61,8 +60,9 @@ struct RunResults {
 
 // The stages (stage_*.cpp). Each takes what earlier stages handed on.
 ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress);
-std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial, ProgressBar& progress);
-Comparison run_comparison(const Scene& scene, const InitialCondition& initial, const ParticleResults& particles,
-                          const std::vector<ContinuumRun>& continuum);
+std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial,
+                                        ProgressBar& progress);
+Comparison run_comparison(const Scene& scene, const InitialCondition& initial,
+                          const ParticleResults& particles, const std::vector<ContinuumRun>& continuum);
 
 }  // namespace shockgas::app

@@ -23,7 +23,8 @@ ParameterTable<SweepParams> sweep_table() {
   ParameterTable<P> t("sweep");
   t.add(&P::variants, "variants", "", "run the scene once per variant, side by side",
         described("overrides \"table.key=value; ...\" per variant"));
-  t.add(&P::labels, "labels", "", "variant labels for tables and plots", described("one label per variant, or empty"));
+  t.add(&P::labels, "labels", "", "variant labels for tables and plots",
+        described("one label per variant, or empty"));
   t.add(&P::reference_key, "reference_key", "", "the result compared with reference_values in the report",
         described("a summary.json key, or empty"));
   t.add(&P::reference_values, "reference_values", "", "published values of reference_key",
@@ -58,20 +59,27 @@ std::vector<TableSpec> build_schema() {
   static const ParameterTable<SweepParams> sweep = sweep_table();
   static const ParameterTable<OutputParams> output = output_table();
   return {
-      bind(scene, "what the scene is", +[](Scene& s) -> Scene& { return s; }),
-      bind(initial_parameters(), "the one initial condition that feeds every model",
-           +[](Scene& s) -> InitialParams& { return s.initial; }),
-      bind(particles::parameters(), "the event-driven gas (present = run it)",
-           +[](Scene& s) -> particles::ParticleParams& { return s.particles; }),
-      bind(continuum::parameters(), "Burgers + continuity solvers (present = run them)",
-           +[](Scene& s) -> continuum::ContinuumParams& { return s.continuum; }),
-      bind(compare::parameters(),
-           "the particle analysis, and particles against continuum (present with [continuum] = compare)",
-           +[](Scene& s) -> compare::CompareParams& { return s.compare; }),
-      bind(sweep, "variants of the scene run side by side (present = sweep)",
-           +[](Scene& s) -> SweepParams& { return s.sweep; }),
-      bind(output, "what is written besides result.h5 and summary.json",
-           +[](Scene& s) -> OutputParams& { return s.output; }),
+      bind(
+          scene, "what the scene is", +[](Scene& s) -> Scene& { return s; }),
+      bind(
+          initial_parameters(), "the one initial condition that feeds every model",
+          +[](Scene& s) -> InitialParams& { return s.initial; }),
+      bind(
+          particles::parameters(), "the event-driven gas (present = run it)",
+          +[](Scene& s) -> particles::ParticleParams& { return s.particles; }),
+      bind(
+          continuum::parameters(), "Burgers + continuity solvers (present = run them)",
+          +[](Scene& s) -> continuum::ContinuumParams& { return s.continuum; }),
+      bind(
+          compare::parameters(),
+          "the particle analysis, and particles against continuum (present with [continuum] = compare)",
+          +[](Scene& s) -> compare::CompareParams& { return s.compare; }),
+      bind(
+          sweep, "variants of the scene run side by side (present = sweep)",
+          +[](Scene& s) -> SweepParams& { return s.sweep; }),
+      bind(
+          output, "what is written besides result.h5 and summary.json",
+          +[](Scene& s) -> OutputParams& { return s.output; }),
   };
 }
 

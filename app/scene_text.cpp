@@ -37,7 +37,8 @@ std::string print_tables(const Scene& scene, bool with_comments) {
 // Markdown table cells may not hold a bare '|', and '<' would open an HTML tag.
 std::string cell(const std::string& text) {
   std::string out;
-  for (char c : text) out += c == '|' ? std::string("\\|") : c == '<' ? std::string("&lt;") : std::string(1, c);
+  for (char c : text)
+    out += c == '|' ? std::string("\\|") : c == '<' ? std::string("&lt;") : std::string(1, c);
   return out;
 }
 
@@ -62,8 +63,9 @@ std::string solver_table() {
          "(continuum/registry.hpp).\n\n| solver | method | density | shocks | uses nu | exact | default |\n"
          "|---|---|---|---|---|---|---|\n";
   for (const auto& s : continuum::registered_solvers())
-    out << "| `" << s.name << "` | " << cell(s.summary) << " | " << yes_no(s.density) << " | " << yes_no(s.shocks)
-        << " | " << yes_no(s.viscous) << " | " << yes_no(s.exact) << " | " << yes_no(s.by_default) << " |\n";
+    out << "| `" << s.name << "` | " << cell(s.summary) << " | " << yes_no(s.density) << " | "
+        << yes_no(s.shocks) << " | " << yes_no(s.viscous) << " | " << yes_no(s.exact) << " | "
+        << yes_no(s.by_default) << " |\n";
   return out.str();
 }
 
@@ -99,7 +101,8 @@ std::string scene_reference_markdown() {
     for (const auto& key : table.keys) {
       const auto& i = key.info;
       out << "| `" << i.key << "` | " << i.kind << " | " << code_cell(toml_text(key.get(defaults))) << " | "
-          << (i.unit.empty() ? "" : cell(i.unit)) << " | " << cell(i.allowed()) << " | " << cell(i.doc) << " |\n";
+          << (i.unit.empty() ? "" : cell(i.unit)) << " | " << cell(i.allowed()) << " | " << cell(i.doc)
+          << " |\n";
     }
   }
   out << solver_table();

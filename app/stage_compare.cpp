@@ -8,7 +8,8 @@ namespace shockgas::app {
 
 namespace {
 
-const continuum::ContinuumResult& compared_field(const Scene& scene, const std::vector<ContinuumRun>& continuum) {
+const continuum::ContinuumResult& compared_field(const Scene& scene,
+                                                 const std::vector<ContinuumRun>& continuum) {
   for (const auto& run : continuum)
     if (run.result.solver == scene.compare.solver) return run.result;
   throw RunError("compare: solver " + scene.compare.solver + " did not run");
@@ -18,8 +19,8 @@ const continuum::ContinuumResult& compared_field(const Scene& scene, const std::
 
 // Both models at one time: if the particles stopped before t_end (a collapse, a
 // limit), the compared solver is run again to the time they reached.
-Comparison run_comparison(const Scene& scene, const InitialCondition& initial, const ParticleResults& particles,
-                          const std::vector<ContinuumRun>& continuum) {
+Comparison run_comparison(const Scene& scene, const InitialCondition& initial,
+                          const ParticleResults& particles, const std::vector<ContinuumRun>& continuum) {
   const double t = particles.ensemble.first.stop.time;
   const continuum::ContinuumResult& field = compared_field(scene, continuum);
   Comparison c{scene.compare.solver, {}, ""};

@@ -36,7 +36,8 @@ void assess(ContinuumRun& run, const continuum::ContinuumResult* exact, double m
 
 }  // namespace
 
-std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial, ProgressBar& progress) {
+std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial,
+                                        ProgressBar& progress) {
   const InitialField& field = initial.field();
   std::vector<ContinuumRun> runs;
   for (const auto& name : scene.continuum.solvers) {

@@ -13,8 +13,8 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   progress.finish();
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
-  r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r, scene.particles.t_end,
-                                       scene.compare.fit_window);
+  r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r,
+                                       scene.particles.t_end, scene.compare.fit_window);
   r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
   return r;
 }

@@ -4,8 +4,8 @@
 
 namespace shockgas::compare {
 
-CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r, double t_end,
-                                double fit_window) {
+CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r,
+                                double t_end, double fit_window) {
   CoolingAnalysis a;
   const double t_min = t_end / fit_window;
   std::size_t in_window = 0;

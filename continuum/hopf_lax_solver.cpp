@@ -36,7 +36,8 @@ void check_grid(const InitialField& f, std::size_t cells, double t) {
 ContinuumResult solve_hopf_lax(const InitialField& f, std::size_t cells, double t,
                                const HopfLaxOptions& options) {
   check_grid(f, cells, t);
-  ContinuumResult r = f.from_bodies() ? hopf_lax_point_masses(f, cells, t) : solve_field(f, cells, t, options);
+  ContinuumResult r =
+      f.from_bodies() ? hopf_lax_point_masses(f, cells, t) : solve_field(f, cells, t, options);
   r.solver = kName;
   r.t = t;
   r.length = f.length;
@@ -65,7 +66,9 @@ SolverInfo hopf_lax_solver() {
   s.shocks = true;
   s.exact = true;
   s.by_default = true;
-  s.preflight = [](const InitialField& f, const ContinuumParams& p, double t_end) { check_grid(f, p.cells, t_end); };
+  s.preflight = [](const InitialField& f, const ContinuumParams& p, double t_end) {
+    check_grid(f, p.cells, t_end);
+  };
   s.run = [](const InitialField& f, const ContinuumParams& p, double t_end, const ProgressCallback&) {
     return solve_hopf_lax(f, p.cells, t_end);
   };

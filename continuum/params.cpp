@@ -13,16 +13,21 @@ ParameterTable<ContinuumParams> declare() {
   ParameterTable<P> t("continuum");
   t.add(&P::solvers, "solvers", "", "continuum solvers to run", one_of(solver_names));
   t.add(&P::cells, "cells", "1", "grid cells on the domain", allowed(at_least(8)));
-  t.add(&P::cfl, "cfl", "1", "Courant number of the finite-volume schemes",
-        Allowed{above(0), {}, "a Courant number in (0, 1] (set continuum.allow_unstable = true to go beyond)"});
-  t.add(&P::nu, "nu", "length^2/time", "viscosity of the viscous solvers (docs/scenes.md lists them)", allowed(above(0)));
+  t.add(
+      &P::cfl, "cfl", "1", "Courant number of the finite-volume schemes",
+      Allowed{above(0), {}, "a Courant number in (0, 1] (set continuum.allow_unstable = true to go beyond)"});
+  t.add(&P::nu, "nu", "length^2/time", "viscosity of the viscous solvers (docs/scenes.md lists them)",
+        allowed(above(0)));
   t.add(&P::t_end, "t_end", "time", "final time; 0 = particles.t_end", allowed(at_least(0)));
-  t.add(&P::rtol, "rtol", "1", "relative tolerance of the adaptive integrators", allowed(between(1e-12, 0.1)));
+  t.add(&P::rtol, "rtol", "1", "relative tolerance of the adaptive integrators",
+        allowed(between(1e-12, 0.1)));
   t.add(&P::hopf_cole_path, "hopf_cole_path", "",
-        "Hopf-Cole evaluation: spectral heat equation, log-domain heat kernel, or chosen by its roundoff bound");
+        "Hopf-Cole evaluation: spectral heat equation, log-domain heat kernel, or chosen by its roundoff "
+        "bound");
   t.add(&P::limiter, "limiter", "", "slope limiter of the second-order finite-volume scheme");
   t.add(&P::boundary, "boundary", "", "boundary condition");
-  t.add(&P::allow_unstable, "allow_unstable", "", "run even outside a method's stable range (for stability studies)");
+  t.add(&P::allow_unstable, "allow_unstable", "",
+        "run even outside a method's stable range (for stability studies)");
   return t;
 }
 

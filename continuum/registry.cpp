@@ -18,7 +18,8 @@ std::vector<SolverInfo>& registry() {
 
 void register_solver(SolverInfo info) {
   require(!info.name.empty(), "continuum.solvers", info.name, "a solver with a name");
-  require(info.preflight && info.run, "continuum.solvers", info.name, "a solver with a preflight and a run function");
+  require(info.preflight && info.run, "continuum.solvers", info.name,
+          "a solver with a preflight and a run function");
   for (const auto& s : registry())
     require(s.name != info.name, "continuum.solvers", info.name, "a name not yet registered");
   registry().push_back(std::move(info));

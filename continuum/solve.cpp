@@ -14,8 +14,8 @@ namespace {
 void require_finite(const ContinuumResult& r) {
   for (std::size_t i = 0; i < r.v.size(); ++i) {
     if (!std::isfinite(r.v[i]) || (i < r.rho.size() && !std::isfinite(r.rho[i])))
-      throw RunError(r.solver + ": non-finite value at t = " + to_text(r.t) + " in cell " + std::to_string(i) +
-                     " (x = " + to_text(r.x[i]) + ")");
+      throw RunError(r.solver + ": non-finite value at t = " + to_text(r.t) + " in cell " +
+                     std::to_string(i) + " (x = " + to_text(r.x[i]) + ")");
   }
 }
 

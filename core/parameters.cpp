@@ -93,7 +93,9 @@ bool is_one_of(const std::string& s, const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::string number_text(const Allowed& r) { return r.text.empty() ? r.bounds.text("a finite number") : r.text; }
+std::string number_text(const Allowed& r) {
+  return r.text.empty() ? r.bounds.text("a finite number") : r.text;
+}
 std::string integer_text(const Allowed& r) { return r.text.empty() ? r.bounds.text("an integer") : r.text; }
 
 std::string text_text(const Allowed& r) {
@@ -103,9 +105,12 @@ std::string text_text(const Allowed& r) {
 
 double read_number(const ParameterValue& v, const std::string& key, const Allowed& r) {
   double x = 0;
-  if (v.type == ParameterValue::Type::number) x = v.number;
-  else if (v.type == ParameterValue::Type::integer) x = static_cast<double>(v.integer);
-  else refuse(key, v, number_text(r));
+  if (v.type == ParameterValue::Type::number)
+    x = v.number;
+  else if (v.type == ParameterValue::Type::integer)
+    x = static_cast<double>(v.integer);
+  else
+    refuse(key, v, number_text(r));
   if (!r.bounds.contains(x)) refuse(key, v, number_text(r));
   return x;
 }
@@ -113,10 +118,13 @@ double read_number(const ParameterValue& v, const std::string& key, const Allowe
 // A whole number, written as an integer or as a float (1e6); below 2^63.
 std::uint64_t read_integer(const ParameterValue& v, const std::string& key, const Allowed& r) {
   double x = 0;
-  if (v.type == ParameterValue::Type::integer) x = static_cast<double>(v.integer);
-  else if (v.type == ParameterValue::Type::number && v.number == std::floor(v.number) && std::abs(v.number) < 9e18)
+  if (v.type == ParameterValue::Type::integer)
+    x = static_cast<double>(v.integer);
+  else if (v.type == ParameterValue::Type::number && v.number == std::floor(v.number) &&
+           std::abs(v.number) < 9e18)
     x = v.number;
-  else refuse(key, v, integer_text(r));
+  else
+    refuse(key, v, integer_text(r));
   if (x < 0 || !r.bounds.contains(x)) refuse(key, v, integer_text(r));
   return v.type == ParameterValue::Type::integer ? static_cast<std::uint64_t>(v.integer)
                                                  : static_cast<std::uint64_t>(x);

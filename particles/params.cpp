@@ -11,15 +11,16 @@ ParameterTable<ParticleParams> declare() {
   using P = ParticleParams;
   ParameterTable<P> t("particles");
   t.add(&P::r, "r", "1", "restitution coefficient; 0 = aggregation", allowed(between(0, 1)));
-  t.add(&P::delta, "delta", "length/time", "velocity threshold below which collisions are sub-threshold; 0 = none",
-        allowed(at_least(0)));
+  t.add(&P::delta, "delta", "length/time",
+        "velocity threshold below which collisions are sub-threshold; 0 = none", allowed(at_least(0)));
   t.add(&P::subthreshold, "subthreshold", "", "what a sub-threshold collision does");
   t.add(&P::geometry, "geometry", "", "periodic ring of length L, or open line");
   t.add(&P::solver, "solver", "", "event-driven simulation, or the exact sticky solution by the convex hull",
         described(choices_text(enum_choices<ParticleSolver>()) + " (" + name_of(ParticleSolver::hull) +
                   ": r = 0 only)"));
   t.add(&P::schedule, "schedule", "",
-        "event order: time windows over stretches of the chain (the same collisions; equal masses without merges "
+        "event order: time windows over stretches of the chain (the same collisions; equal masses without "
+        "merges "
         "or collapse), the global queue, or auto = windows where they apply");
   t.add(&P::t_end, "t_end", "time", "final time", allowed(above(0)));
   t.add(&P::samples, "samples", "1", "log-spaced sample times in [1, t_end]", allowed(at_least(1)));
@@ -28,17 +29,17 @@ ParameterTable<ParticleParams> declare() {
   t.add(&P::snapshots, "snapshots", "time", "times at which x, v, m are stored",
         Allowed{at_least(0), {}, "times in [0, t_end]"});
   t.add(&P::spacetime, "spacetime", "", "record trajectories (space-time diagram)");
-  t.add(&P::histogram_bins, "histogram_bins", "1", "bins of the scaled velocity histogram z = v t^(1/3); 0 = none",
-        allowed(at_least(0)));
+  t.add(&P::histogram_bins, "histogram_bins", "1",
+        "bins of the scaled velocity histogram z = v t^(1/3); 0 = none", allowed(at_least(0)));
   t.add(&P::histogram_zmax, "histogram_zmax", "length/time^(2/3)", "histogram range |z| <= zmax",
         allowed(above(0)));
-  t.add(&P::spacetime_frames, "spacetime_frames", "1", "frames of the space-time record, equally spaced in [0, t_end]",
-        allowed(at_least(2)));
+  t.add(&P::spacetime_frames, "spacetime_frames", "1",
+        "frames of the space-time record, equally spaced in [0, t_end]", allowed(at_least(2)));
   t.add(&P::clusters, "clusters", "", "count clusters (default criteria) at the sample times");
-  t.add(&P::max_collisions, "max_collisions", "1", "stop a realization after this many collisions; 0 = no limit",
-        allowed(at_least(0)));
-  t.add(&P::max_wall_seconds, "max_wall_seconds", "s", "stop a realization after this wall-clock time; 0 = no limit",
-        allowed(at_least(0)));
+  t.add(&P::max_collisions, "max_collisions", "1",
+        "stop a realization after this many collisions; 0 = no limit", allowed(at_least(0)));
+  t.add(&P::max_wall_seconds, "max_wall_seconds", "s",
+        "stop a realization after this wall-clock time; 0 = no limit", allowed(at_least(0)));
   return t;
 }
 

@@ -1,8 +1,8 @@
 // shockgas as a library: the umbrella header is enough to simulate a gas, take
 // its exact solution and compare it with a registered solver.
-#include "shockgas/shockgas.hpp"
-
 #include <gtest/gtest.h>
+
+#include "shockgas/shockgas.hpp"
 
 namespace shockgas {
 namespace {

@@ -2,10 +2,9 @@
 // (docs/output.md) and as written by a run: the three must agree.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
@@ -47,9 +46,11 @@ fs::path run_scene(const std::string& name, const std::string& scene) {
 
 // Every part a run can write: particles with records, the analysis, two solvers, the comparison.
 const char* kFullScene =
-    "[initial]\nN = 300\n[particles]\nr = 0.5\nt_end = 40\nsamples = 12\nrealizations = 2\nsnapshots = [5.0, 20.0]\n"
+    "[initial]\nN = 300\n[particles]\nr = 0.5\nt_end = 40\nsamples = 12\nrealizations = 2\nsnapshots = [5.0, "
+    "20.0]\n"
     "histogram_bins = 16\nspacetime = true\nspacetime_frames = 5\n"
-    "[continuum]\nsolvers = [\"hopf_lax\", \"godunov\"]\ncells = 300\n[compare]\nfit_window = 4\ndistribution_t_min = 2\n"
+    "[continuum]\nsolvers = [\"hopf_lax\", \"godunov\"]\ncells = 300\n[compare]\nfit_window = "
+    "4\ndistribution_t_min = 2\n"
     "[output]\nplots = false\n";
 
 const char* kSweepScene =
@@ -102,9 +103,11 @@ void expect_file_follows_layout(const fs::path& out, const std::set<Part>& parts
     }
   expect_declared(nlohmann::json::parse(read_file(out / "summary.json")), "", seen);
   // Every unconditional entry of these parts is written.
-  for (const auto& e : output_layout())
-    if (parts.count(e.part) && e.when.empty())
+  for (const auto& e : output_layout()) {
+    if (parts.count(e.part) && e.when.empty()) {
       EXPECT_TRUE(seen.count(e.path)) << e.path << " is declared but was not written";
+    }
+  }
 }
 
 TEST(OutputDocs, DocsOutputMdHoldsTheDeclaredLayout) {

@@ -72,7 +72,8 @@ TEST(SceneDocs, EveryKeyRefusesABadValueNamingItselfAndItsLine) {
         } catch (const InputError& e) {
           EXPECT_EQ(e.key(), key.info.dotted()) << value << ": " << e.what();
           EXPECT_EQ(e.where(), "bad.toml:2") << key.info.dotted() << " = " << value << ": " << e.what();
-          EXPECT_EQ(std::string(e.what()).rfind("bad.toml:2: " + key.info.dotted() + " = ", 0), 0u) << e.what();
+          EXPECT_EQ(std::string(e.what()).rfind("bad.toml:2: " + key.info.dotted() + " = ", 0), 0u)
+              << e.what();
           ++checked;
         }
       }

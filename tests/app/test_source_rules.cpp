@@ -29,11 +29,13 @@ std::string read_file(const fs::path& path) {
 }
 
 // Files under the given folders of the repository with one of the extensions.
-std::vector<fs::path> files(const std::vector<std::string>& folders, const std::set<std::string>& extensions) {
+std::vector<fs::path> files(const std::vector<std::string>& folders,
+                            const std::set<std::string>& extensions) {
   std::vector<fs::path> out;
   for (const auto& folder : folders)
     for (const auto& entry : fs::recursive_directory_iterator(kRoot / folder))
-      if (entry.is_regular_file() && extensions.count(entry.path().extension().string())) out.push_back(entry.path());
+      if (entry.is_regular_file() && extensions.count(entry.path().extension().string()))
+        out.push_back(entry.path());
   return out;
 }
 
@@ -64,8 +66,8 @@ std::vector<std::string> string_literals(const std::string& code) {
 }
 
 // The C++ sources of shockgas that are not tests.
-const std::vector<std::string> kSourceFolders = {"app", "bench", "compare", "continuum", "core", "include", "particles",
-                                                 "studies"};
+const std::vector<std::string> kSourceFolders = {"app",  "bench",   "compare",   "continuum",
+                                                 "core", "include", "particles", "studies"};
 
 TEST(SourceRules, EachSolverNameIsWrittenInOneSourceOnly) {
   std::map<std::string, std::set<std::string>> where;
@@ -86,10 +88,12 @@ TEST(SourceRules, EachSolverNameIsWrittenInOneSourceOnly) {
 TEST(SourceRules, SourcesCiteOnlyDocumentsOfTheRepository) {
   std::vector<std::string> folders = kSourceFolders;
   for (const char* f : {"tests", "scripts", "data", "docs"}) folders.push_back(f);
-  for (const auto& path : files(folders, {".cpp", ".hpp", ".h", ".py", ".toml", ".json", ".cmake", ".md", ""})) {
+  for (const auto& path :
+       files(folders, {".cpp", ".hpp", ".h", ".py", ".toml", ".json", ".cmake", ".md", ""})) {
     if (path.filename() == "test_source_rules.cpp") continue;  // names the document it looks for
     const std::string text = read_file(path);
-    EXPECT_EQ(text.find("DESIGN.md"), std::string::npos) << path << " cites DESIGN.md, which is not in the repository";
+    EXPECT_EQ(text.find("DESIGN.md"), std::string::npos)
+        << path << " cites DESIGN.md, which is not in the repository";
     for (std::size_t at = text.find("docs/"); at != std::string::npos; at = text.find("docs/", at + 1)) {
       const std::size_t end = text.find(".md", at);
       if (end == std::string::npos || end - at > 40) continue;

@@ -1,9 +1,8 @@
-#include "shockgas/compare/theory.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "shockgas/compare/theory.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {

@@ -78,8 +78,9 @@ TEST(Parameters, BadValuesNameTheKeyTheValueAndWhatIsAllowed) {
   EXPECT_EQ(error_of("flag", ParameterValue::of(std::int64_t{1})).key(), "example.flag");
   EXPECT_EQ(error_of("name", ParameterValue::of("c")).allowed(), "one of \"a\" or \"b\"");
   EXPECT_EQ(error_of("colour", ParameterValue::of("blue")).key(), "example.colour");
-  EXPECT_EQ(error_of("times", ParameterValue::list({ParameterValue::of(1.0), ParameterValue::of(-1.0)})).value(),
-            "-1");
+  EXPECT_EQ(
+      error_of("times", ParameterValue::list({ParameterValue::of(1.0), ParameterValue::of(-1.0)})).value(),
+      "-1");
   const auto unknown = error_of("y", ParameterValue::of(1.0));
   EXPECT_EQ(unknown.key(), "example.y");
   EXPECT_NE(unknown.allowed().find("x, n, flag, name, colour, times"), std::string::npos);

@@ -29,9 +29,9 @@ inline continuum::ContinuumResult solve_rusanov(const InitialField& f, const con
   const double dx = f.length / static_cast<double>(n);
   std::vector<double> v = continuum::cell_averages(f, n).v, flux(n);
   for (double t = 0; t < t_end;) {
-    const double vmax = std::max(1e-300, std::abs(*std::max_element(v.begin(), v.end(), [](double a, double b) {
-      return std::abs(a) < std::abs(b);
-    })));
+    const double vmax = std::max(
+        1e-300, std::abs(*std::max_element(v.begin(), v.end(),
+                                           [](double a, double b) { return std::abs(a) < std::abs(b); })));
     const double dt = std::min(p.cfl * dx / vmax, t_end - t);
     for (std::size_t i = 0; i < n; ++i) {
       const double l = v[i], r = v[(i + 1) % n];

@@ -14,10 +14,10 @@ struct CompareParams {
   std::string solver = continuum::reference_solver_name();  // one of continuum.solvers
   DepositScheme deposit = DepositScheme::cloud_in_cell;
   double distribution_t_min = 10.0;
-  double match_distance = 0.0;                        // 0 = automatic
-  double min_cluster_particles = 0;                   // 0 = automatic (theory.hpp)
-  double cluster_gap = 0.0;                           // 0 = derived from delta
-  double cluster_dv = 0.0;                            // 0 = derived from delta
+  double match_distance = 0.0;       // 0 = automatic
+  double min_cluster_particles = 0;  // 0 = automatic (theory.hpp)
+  double cluster_gap = 0.0;          // 0 = derived from delta
+  double cluster_dv = 0.0;           // 0 = derived from delta
   double fit_window = 10.0;
 };
 

@@ -23,8 +23,8 @@ struct CoolingAnalysis {
 
 // t, T: the sample times and the (ensemble-mean) temperature; r: restitution
 // (for the crossover theory); the fit window is [t_end / fit_window, t_end].
-CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r, double t_end,
-                                double fit_window);
+CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r,
+                                double t_end, double fit_window);
 
 // A histogram of z = (v - <v>) t^(1/3) on `bins` equal bins of [-zmax, zmax] at
 // each sample time: density[k * bins + b] (particles::ScaledHistogram's layout).
@@ -39,7 +39,7 @@ struct ZHistogram {
 };
 
 struct DistributionAnalysis {
-  std::vector<ScaledDistribution> late;    // the distributions compared: late half of the samples, t >= t_min
+  std::vector<ScaledDistribution> late;  // the distributions compared: late half of the samples, t >= t_min
   std::optional<double> collapse_distance;  // their mean L1 distance, if there are two or more
   double tail_z_min = 0;                    // the tail fit's start: one standard deviation of z
   TailFit tail;                             // Phi ~ exp(-c |z|^a) on the mean distribution, |z| >= tail_z_min

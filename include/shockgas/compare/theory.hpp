@@ -24,7 +24,7 @@
 
 namespace shockgas::compare {
 
-inline constexpr double kHomogeneousCoolingExponent = -2.0;  // T ~ t^-2 (eq. 3)
+inline constexpr double kHomogeneousCoolingExponent = -2.0;   // T ~ t^-2 (eq. 3)
 inline constexpr double kStickyCoolingExponent = -2.0 / 3.0;  // T ~ t^(-2/3) (eq. 3)
 inline constexpr const char* kStickyCoolingExponentText = "-2/3";
 inline constexpr double kVelocityScalingExponent = 1.0 / 3.0;  // z = v t^(1/3) (eq. 4)

@@ -33,9 +33,9 @@ constexpr std::array<EnumName<HopfColePath>, 3> enum_names(HopfColePath) {
 struct ContinuumParams {
   std::vector<std::string> solvers = default_solver_names();  // registered names (registry.hpp)
   std::size_t cells = 4096;
-  double cfl = 0.5;                     // beyond a scheme's own bound only with allow_unstable
+  double cfl = 0.5;  // beyond a scheme's own bound only with allow_unstable
   double nu = 1e-3;
-  double t_end = 0.0;                   // 0 means particles.t_end
+  double t_end = 0.0;  // 0 means particles.t_end
   double rtol = 1e-6;
   HopfColePath hopf_cole_path = HopfColePath::automatic;
   Limiter limiter = Limiter::mc;

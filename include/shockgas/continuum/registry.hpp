@@ -33,7 +33,8 @@ struct SolverInfo {
   // against nu, ...), checked without solving; InputError naming the key.
   std::function<void(const InitialField&, const ContinuumParams&, double t_end)> preflight;
   // The solve from f to t_end (InputError, RunError as its header says).
-  std::function<ContinuumResult(const InitialField&, const ContinuumParams&, double t_end, const ProgressCallback&)>
+  std::function<ContinuumResult(const InitialField&, const ContinuumParams&, double t_end,
+                                const ProgressCallback&)>
       run;
 };
 

@@ -34,8 +34,8 @@ struct InitialParams {
   double amplitude = 1.0;
   bool remove_mean = false;
   std::string file;
-  std::uint64_t seed = 1;                // realization k uses realization_seed(seed, k)
-  double L = 0.0;                        // 0 means L = N
+  std::uint64_t seed = 1;  // realization k uses realization_seed(seed, k)
+  double L = 0.0;          // 0 means L = N
   std::string v0 = "0.5 + sin(2*pi*x)";
   std::string rho0 = "1";
   double domain = 1.0;
@@ -46,10 +46,10 @@ const ParameterTable<InitialParams>& initial_parameters();
 
 // Pointwise initial data on [0, length): what the continuum solvers discretise.
 struct InitialField {
-  double length = 1.0;                  // domain length [length]
-  std::function<double(double)> v0;     // velocity v0(x), if given pointwise
-  std::function<double(double)> rho0;   // density rho0(x), if given pointwise
-  Bodies bodies;                        // point masses, if the data are particles
+  double length = 1.0;                 // domain length [length]
+  std::function<double(double)> v0;    // velocity v0(x), if given pointwise
+  std::function<double(double)> rho0;  // density rho0(x), if given pointwise
+  Bodies bodies;                       // point masses, if the data are particles
   bool from_bodies() const { return !v0; }
 };
 

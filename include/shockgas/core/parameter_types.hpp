@@ -49,7 +49,9 @@ struct ParameterType<std::uint64_t> {
   static std::uint64_t read(const ParameterValue& v, const std::string& key, const Allowed& r) {
     return detail::read_integer(v, key, r);
   }
-  static void check(std::uint64_t x, const std::string& key, const Allowed& r) { detail::check_integer(x, key, r); }
+  static void check(std::uint64_t x, const std::string& key, const Allowed& r) {
+    detail::check_integer(x, key, r);
+  }
   static ParameterValue write(std::uint64_t x) { return ParameterValue::of(static_cast<std::int64_t>(x)); }
 };
 
@@ -71,7 +73,9 @@ struct ParameterType<std::string> {
   static std::string read(const ParameterValue& v, const std::string& key, const Allowed& r) {
     return detail::read_text(v, key, r);
   }
-  static void check(const std::string& s, const std::string& key, const Allowed& r) { detail::check_text(s, key, r); }
+  static void check(const std::string& s, const std::string& key, const Allowed& r) {
+    detail::check_text(s, key, r);
+  }
   static ParameterValue write(const std::string& s) { return ParameterValue::of(s); }
 };
 

@@ -71,7 +71,9 @@ struct Allowed {
 };
 inline Allowed allowed(Bounds b) { return Allowed{b, {}, {}}; }
 inline Allowed described(std::string text) { return Allowed{{}, {}, std::move(text)}; }
-inline Allowed one_of(std::function<std::vector<std::string>()> names) { return Allowed{{}, std::move(names), {}}; }
+inline Allowed one_of(std::function<std::vector<std::string>()> names) {
+  return Allowed{{}, std::move(names), {}};
+}
 
 // How each type is read, checked, written back and described (parameter_types.hpp).
 template <class T>
@@ -79,11 +81,11 @@ struct ParameterType;
 
 // What a user reads about one parameter.
 struct ParameterInfo {
-  std::string table;                   // "particles"
-  std::string key;                     // "r"
-  std::string kind;                    // "number", "integer", "string", "boolean", "list of numbers", ...
-  std::string unit;                    // "length/time", "1" for a pure number, "" for none
-  std::string doc;                     // one line: meaning
+  std::string table;                     // "particles"
+  std::string key;                       // "r"
+  std::string kind;                      // "number", "integer", "string", "boolean", "list of numbers", ...
+  std::string unit;                      // "length/time", "1" for a pure number, "" for none
+  std::string doc;                       // one line: meaning
   std::function<std::string()> allowed;  // what is allowed, as error messages say it
   std::string dotted() const { return table + "." + key; }
 };
@@ -132,13 +134,15 @@ namespace shockgas {
 template <class Params>
 template <class T>
 ParameterTable<Params>& ParameterTable<Params>::add(T Params::*member, std::string key, std::string unit,
-                                                  std::string doc, Allowed rule) {
+                                                    std::string doc, Allowed rule) {
   using Type = ParameterType<T>;
   Entry e;
-  e.info = ParameterInfo{table_, std::move(key), Type::kind(), std::move(unit), std::move(doc),
-                         [rule] { return Type::allowed_text(rule); }};
+  e.info = ParameterInfo{table_,          std::move(key), Type::kind(),
+                         std::move(unit), std::move(doc), [rule] { return Type::allowed_text(rule); }};
   const std::string dotted = e.info.dotted();
-  e.set = [member, dotted, rule](Params& p, const ParameterValue& v) { p.*member = Type::read(v, dotted, rule); };
+  e.set = [member, dotted, rule](Params& p, const ParameterValue& v) {
+    p.*member = Type::read(v, dotted, rule);
+  };
   e.get = [member](const Params& p) { return Type::write(p.*member); };
   e.check = [member, dotted, rule](const Params& p) { Type::check(p.*member, dotted, rule); };
   entries_.push_back(std::move(e));
@@ -146,8 +150,8 @@ ParameterTable<Params>& ParameterTable<Params>::add(T Params::*member, std::stri
 }
 
 template <class Params>
-const typename ParameterTable<Params>::Entry& ParameterTable<Params>::entry(const std::string& key,
-                                                                           const std::string& written) const {
+const typename ParameterTable<Params>::Entry& ParameterTable<Params>::entry(
+    const std::string& key, const std::string& written) const {
   for (const Entry& e : entries_)
     if (e.info.key == key) return e;
   throw InputError(table_ + "." + key, written.empty() ? "(any value)" : written,

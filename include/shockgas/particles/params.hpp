@@ -36,24 +36,24 @@ constexpr std::array<EnumName<Schedule>, 3> enum_names(Schedule) {
 
 // Unit, allowed range and meaning of every member: parameters() (particles/params.cpp).
 struct ParticleParams {
-  double r = 0.9;                                  // 0 = aggregation
-  double delta = 1e-2;                             // 0 = no threshold
+  double r = 0.9;       // 0 = aggregation
+  double delta = 1e-2;  // 0 = no threshold
   Subthreshold subthreshold = Subthreshold::elastic;
   Geometry geometry = Geometry::ring;
   ParticleSolver solver = ParticleSolver::events;
   Schedule schedule = Schedule::automatic;
   double t_end = 1000.0;
-  std::size_t samples = 40;                        // log-spaced in [1, t_end]
+  std::size_t samples = 40;  // log-spaced in [1, t_end]
   std::size_t realizations = 1;
-  std::size_t threads = 0;                         // 0 = all cores
+  std::size_t threads = 0;  // 0 = all cores
   std::vector<double> snapshots = {};
   bool spacetime = false;
-  std::size_t histogram_bins = 0;                  // 0 = no histogram
+  std::size_t histogram_bins = 0;  // 0 = no histogram
   double histogram_zmax = 4.0;
   std::size_t spacetime_frames = 200;
   bool clusters = true;
-  std::uint64_t max_collisions = 0;                // 0 = no limit
-  double max_wall_seconds = 0.0;                   // 0 = no limit
+  std::uint64_t max_collisions = 0;  // 0 = no limit
+  double max_wall_seconds = 0.0;     // 0 = no limit
 };
 
 // The declarations of [particles]: key, unit, allowed values, doc.
