@@ -76,12 +76,13 @@ std::vector<Declaration> series() {
   return d;
 }
 
-// x, v, m of a state (`what`: whose) under group (with placeholders).
-std::vector<Declaration> bodies(
-    const std::string& group, const std::string& what, const std::string& when,
-    std::function<void(const RunResults&,
-                       const std::function<void(const Bodies&, std::vector<std::string>)>&)>
-        each) {
+// Hands each state of a run to `put`, with the values of the group's placeholders.
+using PutState = std::function<void(const Bodies&, std::vector<std::string>)>;
+using EachState = std::function<void(const RunResults&, const PutState& put)>;
+
+// x, v, m of the states `each` finds (`what`: whose) under group.
+std::vector<Declaration> bodies(const std::string& group, const std::string& what, const std::string& when,
+                                EachState each) {
   struct Column {
     const char* name;
     std::vector<double> Bodies::*data;
@@ -101,12 +102,6 @@ std::vector<Declaration> bodies(
                 }));
   }
   return d;
-}
-
-std::vector<double> bin_centres(const compare::ZHistogram& h) {
-  std::vector<double> z(h.bins);
-  for (std::size_t b = 0; b < h.bins; ++b) z[b] = h.centre(b);
-  return z;
 }
 
 std::vector<Declaration> records() {
@@ -136,7 +131,7 @@ std::vector<Declaration> records() {
   };
   d.push_back(
       dataset(p, "/particles/histogram/z", "length/time^(2/3)", "bin centres of z = (v - <v>) t^(1/3)", hist,
-              histogram([](const compare::ZHistogram& h, Emitter& out) { out.values(bin_centres(h)); })));
+              histogram([](const compare::ZHistogram& h, Emitter& out) { out.values(h.centres()); })));
   d.push_back(dataset(p, "/particles/histogram/t", "time", "sample times", hist,
                       histogram([](const compare::ZHistogram& h, Emitter& out) { out.values(h.t); })));
   d.push_back(dataset(p, "/particles/histogram/density", "time^(2/3)/length",

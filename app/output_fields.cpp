@@ -57,10 +57,16 @@ std::vector<Declaration> analysis() {
 
 std::vector<Declaration> continuum() {
   const Part p = Part::continuum;
-  // f(run, out) for each solver; fields only when output.fields.
-  auto each = [](auto f, bool fields = false) {
-    return [f, fields](const RunResults& r, Emitter& out) {
-      if (fields && !r.scene->output.fields) return;
+  // f(result, out) for each solver's result.
+  auto each = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      for (const auto& c : r.continuum) f(c.result, out);
+    };
+  };
+  // The same for the fields, stored only when output.fields.
+  auto each_field = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      if (!r.scene->output.fields) return;
       for (const auto& c : r.continuum) f(c.result, out);
     };
   };
@@ -75,16 +81,14 @@ std::vector<Declaration> continuum() {
   using Result = continuum::ContinuumResult;
   return {
       dataset(p, "/continuum/{solver}/x", "length", "cell centres", fields,
-              each([](const Result& c, Emitter& out) { out.values(c.x, {c.solver}); }, true)),
+              each_field([](const Result& c, Emitter& out) { out.values(c.x, {c.solver}); })),
       dataset(p, "/continuum/{solver}/v", "length/time", "cell averages of the velocity at t", fields,
-              each([](const Result& c, Emitter& out) { out.values(c.v, {c.solver}); }, true)),
+              each_field([](const Result& c, Emitter& out) { out.values(c.v, {c.solver}); })),
       dataset(p, "/continuum/{solver}/rho", "mass/length", "cell averages of the density at t",
               "when output.fields, for solvers that give a density",
-              each(
-                  [](const Result& c, Emitter& out) {
-                    if (!c.rho.empty()) out.values(c.rho, {c.solver});
-                  },
-                  true)),
+              each_field([](const Result& c, Emitter& out) {
+                if (!c.rho.empty()) out.values(c.rho, {c.solver});
+              })),
       dataset(p, "/continuum/{solver}/shocks/x", "length", "shock positions", shocks,
               each(with_shocks([](const continuum::Shock& s) { return s.x; }))),
       dataset(p, "/continuum/{solver}/shocks/mass", "mass", "mass held in each shock", shocks,
@@ -201,9 +205,7 @@ std::vector<Declaration> sweep() {
       dataset(p, "/sweep/{k}/particles/histogram/z", "length/time^(2/3)", "variant k: bin centres of z",
               "when particles.histogram_bins > 0",
               each(hist([](const compare::ZHistogram& h, Emitter& out, const auto& at) {
-                std::vector<double> z(h.bins);
-                for (std::size_t b = 0; b < h.bins; ++b) z[b] = h.centre(b);
-                out.values(z, at);
+                out.values(h.centres(), at);
               }))),
       dataset(p, "/sweep/{k}/particles/histogram/t", "time", "variant k: sample times of the histogram",
               "when particles.histogram_bins > 0",

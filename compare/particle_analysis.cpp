@@ -26,6 +26,12 @@ double ZHistogram::centre(std::size_t b) const {
   return -zmax + (static_cast<double>(b) + 0.5) * 2 * zmax / static_cast<double>(bins);
 }
 
+std::vector<double> ZHistogram::centres() const {
+  std::vector<double> z(bins);
+  for (std::size_t b = 0; b < bins; ++b) z[b] = centre(b);
+  return z;
+}
+
 double ZHistogram::width() const { return centre(1) - centre(0); }
 
 // Equal to -zmax + b (2 zmax / bins) up to rounding; formed from the centres so
