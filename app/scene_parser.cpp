@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "output_layout.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/app/scene.hpp"
 #include "shockgas/core/error.hpp"
@@ -95,6 +96,8 @@ void validate_sweep(const SweepParams& s) {
           "one label per variant (" + std::to_string(s.variants.size()) + "), or none");
   require(s.reference_values.empty() || s.reference_values.size() == s.variants.size(), "sweep.reference_values",
           s.reference_values.size(), "one value per variant (" + std::to_string(s.variants.size()) + "), or none");
+  require(s.reference_key.empty() || find_in_layout(LayoutEntry::Kind::summary, s.reference_key), "sweep.reference_key",
+          s.reference_key, "a key of summary.json (docs/output.md), e.g. analysis.T_exponent");
 }
 
 // "a=1; b=2" -> {"a=1", "b=2"}

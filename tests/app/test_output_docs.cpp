@@ -1,7 +1,9 @@
 // The output layout as declared (app/output_layout.hpp), as documented
 // (docs/output.md) and as written by a run: the three must agree.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -124,6 +126,19 @@ TEST(OutputDocs, DocsOutputMdHoldsTheDeclaredLayout) {
 TEST(OutputDocs, ARunWritesTheDeclaredLayout) {
   expect_file_follows_layout(run_scene("full", kFullScene), {Part::provenance, Part::initial, Part::particles,
                                                              Part::analysis, Part::continuum, Part::compare});
+}
+
+// The plot script reads only the result file (scripts/plot_result.py): it must find
+// what it reads, and draw every picture the run's parts call for.
+TEST(OutputDocs, ThePlotScriptReadsARunsFiles) {
+  const fs::path out = run_scene("plots", kFullScene);
+  const std::string script = std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/plot_result.py";
+  const int status = std::system(("/usr/bin/python3 '" + script + "' '" + out.string() + "'").c_str());
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 3)
+    GTEST_SKIP() << "matplotlib or h5py missing for /usr/bin/python3";
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "plot_result.py failed";
+  for (const char* png : {"temperature.png", "velocity_distribution.png", "spacetime.png", "fields.png"})
+    EXPECT_TRUE(fs::exists(out / png)) << png;
 }
 
 TEST(OutputDocs, ASweepWritesTheDeclaredLayout) {

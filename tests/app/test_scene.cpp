@@ -149,5 +149,14 @@ TEST(Scene, ExpressionNotFiniteOnDomain) {
   EXPECT_EQ(e.key(), "initial.v0");
 }
 
+TEST(Scene, SweepReferenceKeyIsASummaryKey) {
+  const char* sweep = "[particles]\n[sweep]\nvariants = [\"particles.r=0.5\"]\nreference_key = ";
+  EXPECT_NO_THROW(parse_scene(std::string(sweep) + "\"analysis.T_exponent\"\n", "s.toml"));
+  EXPECT_NO_THROW(parse_scene(std::string(sweep) + "\"continuum.hopf_lax.n_shocks\"\n", "s.toml"));
+  const auto e = error_of(std::string(sweep) + "\"compare.T_exponent\"\n");  // moved to analysis
+  EXPECT_EQ(e.key(), "sweep.reference_key");
+  EXPECT_EQ(e.where(), "bad.toml:4");
+}
+
 }  // namespace
 }  // namespace shockgas::app
