@@ -16,7 +16,8 @@ ParameterTable<ContinuumParams> declare() {
   t.add(
       &P::cfl, "cfl", "1", "Courant number of the finite-volume schemes",
       Allowed{above(0), {}, "a Courant number in (0, 1] (set continuum.allow_unstable = true to go beyond)"});
-  t.add(&P::nu, "nu", "length^2/time", "viscosity of the viscous solvers (docs/scenes.md lists them)",
+  t.add(&P::nu, "nu", "length^2/time",
+        "viscosity of the viscous solvers (those with uses nu in the solver table of docs/scenes.md)",
         allowed(above(0)));
   t.add(&P::t_end, "t_end", "time", "final time; 0 = particles.t_end", allowed(at_least(0)));
   t.add(&P::rtol, "rtol", "1", "relative tolerance of the adaptive integrators",
