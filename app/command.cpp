@@ -4,11 +4,12 @@
 
 #include <iostream>
 
-#include "shockgas/app/bench.hpp"
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
+#include "plots.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/studies/studies.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app {
@@ -20,8 +21,8 @@ constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 struct Arguments {
   std::string scene_path, out_dir, result_path;
   std::vector<std::string> overrides;
-  bool defaults = false, quiet = false, no_plots = false;
-  BenchOptions bench;
+  bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false;
+  studies::StudyOptions bench;
 };
 
 void add_run(CLI::App& app, Arguments& args) {
@@ -48,16 +49,17 @@ int do_run(const Arguments& args) {
 int dispatch(const CLI::App& app, const Arguments& args) {
   if (app.got_subcommand("run")) return do_run(args);
   if (app.got_subcommand("info")) {
-    std::cout << describe_result(args.result_path);
+    std::cout << (args.layout ? describe_layout() : describe_result(args.result_path));
     return kExitOk;
   }
   if (app.got_subcommand("bench")) {
-    const std::string dir = run_bench(args.bench);
+    const std::string dir = studies::run_studies(args.bench);
+    make_bench_charts(dir);
     std::cout << "bench results in " << dir << "/\n";
     return kExitOk;
   }
   if (app.got_subcommand("scene")) {
-    std::cout << default_scene_text();
+    std::cout << (args.markdown ? scene_reference_markdown() : default_scene_text());
     return kExitOk;
   }
   std::cout << app.help();
@@ -73,9 +75,13 @@ int run_command(int argc, char** argv) {
   Arguments args;
   add_run(app, args);
   auto* info = app.add_subcommand("info", "What a result file holds, its scene and its provenance");
-  info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5")->required();
+  info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5");
+  info->add_flag("--layout", args.layout, "print every dataset and summary key a run may write (docs/output.md)");
+  info->require_option(1);
   auto* scene = app.add_subcommand("scene", "Print the complete commented scene with every key and its default");
-  scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range")->required();
+  scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range");
+  scene->add_flag("--markdown", args.markdown, "print the reference of every key as markdown (docs/scenes.md)");
+  scene->require_option(1);
   auto* bench = app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
   bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)");
   bench->add_flag("--full", args.bench.full, "the record size (long) instead of the quick one");

@@ -1,4 +1,4 @@
-#include "shockgas/app/hdf5_file.hpp"
+#include "hdf5_file.hpp"
 
 #include <hdf5.h>
 

@@ -2,7 +2,8 @@
 
 #include <sstream>
 
-#include "shockgas/app/hdf5_file.hpp"
+#include "hdf5_file.hpp"
+#include "output_layout.hpp"
 
 namespace shockgas::app {
 
@@ -22,20 +23,26 @@ std::string describe_result(const std::string& path) {
   out << path << "\n\nprovenance:\n";
   std::string scene_text, resolved;
   for (const auto& [name, value] : file.attributes("/")) {
-    if (name == "scene_text") scene_text = value;
-    else if (name == "resolved_parameters") resolved = value;
-    else out << "  " << name << ": " << value << "\n";
+    if (name == "scene_text")
+      scene_text = value;
+    else if (name == "resolved_parameters")
+      resolved = value;
+    else
+      out << "  " << name << ": " << value << "\n";
   }
-  out << "\ndatasets:\n";
+  out << "\ndatasets (docs/output.md explains each):\n";
   for (const auto& d : file.datasets()) {
     out << "  " << d.path << "  " << d.type << " " << shape_text(d.shape);
     if (!d.unit.empty()) out << "  [" << d.unit << "]";
     if (!d.description.empty()) out << "  " << d.description;
+    if (!find_in_layout(LayoutEntry::Kind::dataset, d.path)) out << "  (not in this version's layout)";
     out << "\n";
   }
   out << "\nscene (as given):\n" << scene_text << "\n";
   if (!resolved.empty()) out << "resolved parameters:\n" << resolved;
   return out.str();
 }
+
+std::string describe_layout() { return output_layout_markdown(); }
 
 }  // namespace shockgas::app

@@ -39,4 +39,8 @@ void run_plot_script(const std::string& script, const char* env_override, const 
 
 void make_plots(const std::string& dir) { run_plot_script("plot_result.py", "SHOCKGAS_PLOT_SCRIPT", dir, "plots"); }
 
+void make_bench_charts(const std::string& dir) {
+  run_plot_script("plot_bench.py", "SHOCKGAS_PLOT_BENCH_SCRIPT", dir, "bench charts");
+}
+
 }  // namespace shockgas::app

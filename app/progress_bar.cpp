@@ -1,4 +1,4 @@
-#include "shockgas/app/progress_bar.hpp"
+#include "progress_bar.hpp"
 
 #include <unistd.h>
 

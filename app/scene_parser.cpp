@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "output_layout.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/app/scene.hpp"
 #include "shockgas/core/error.hpp"
@@ -17,27 +18,9 @@ std::string location(const std::string& path, const toml::node& node) {
   return path + ":" + std::to_string(node.source().begin.line);
 }
 
-const KeySpec* find_key(const std::string& table, const std::string& key) {
-  for (const auto& spec : scene_schema())
-    if (spec.table == table && spec.key == key) return &spec;
-  return nullptr;
-}
-
-bool is_table(const std::string& name) {
-  const auto& tables = scene_tables();
-  return std::any_of(tables.begin(), tables.end(), [&](const TableSpec& t) { return t.name == name; });
-}
-
-std::string keys_of(const std::string& table) {
-  std::string list;
-  for (const auto& spec : scene_schema())
-    if (spec.table == table) list += (list.empty() ? "" : ", ") + spec.key;
-  return list;
-}
-
 std::string table_names() {
   std::string list;
-  for (const auto& t : scene_tables()) list += (list.empty() ? "[" : ", [") + t.name + "]";
+  for (const auto& t : scene_schema()) list += (list.empty() ? "[" : ", [") + t.name + "]";
   return list;
 }
 
@@ -64,15 +47,16 @@ void apply_override(toml::table& root, const std::string& assignment, Scene& sce
   scene.key_origin[key] = "--set " + assignment;
 }
 
-void read_table(const std::string& table, const toml::table& tbl, const std::string& path, Scene& scene) {
+void read_table(const TableSpec& table, const toml::table& tbl, const std::string& path, Scene& scene) {
   for (const auto& [k, node] : tbl) {
     const std::string key(k.str());
-    const std::string dotted = table + "." + key;
+    const std::string dotted = table.name + "." + key;
     const auto origin = scene.key_origin.count(dotted) ? scene.key_origin[dotted] : location(path, node);
-    const KeySpec* spec = find_key(table, key);
-    if (!spec) throw InputError(dotted, node_text(node), "a key of [" + table + "]: " + keys_of(table), origin);
+    const KeySpec* spec = table.find(key);
+    if (!spec)
+      throw InputError(dotted, node_text(node), "a key of [" + table.name + "]: " + table.keys_text(), origin);
     try {
-      spec->read(node, scene);
+      spec->set(scene, from_toml(node));
     } catch (const InputError& e) {
       throw e.located(origin);
     }
@@ -84,10 +68,11 @@ void read_tables(const toml::table& root, const std::string& path, Scene& scene)
   for (const auto& [k, node] : root) {
     const std::string table(k.str());
     const auto origin = location(path, node);
-    if (!is_table(table) || !node.is_table())
+    const TableSpec* spec = find_table(table);
+    if (!spec || !node.is_table())
       throw InputError(table, node_text(node), "the tables " + table_names() + " (keys go inside a table)",
                        origin);
-    read_table(table, *node.as_table(), path, scene);
+    read_table(*spec, *node.as_table(), path, scene);
   }
   scene.has_particles = root.contains("particles");
   scene.has_continuum = root.contains("continuum");
@@ -111,6 +96,8 @@ void validate_sweep(const SweepParams& s) {
           "one label per variant (" + std::to_string(s.variants.size()) + "), or none");
   require(s.reference_values.empty() || s.reference_values.size() == s.variants.size(), "sweep.reference_values",
           s.reference_values.size(), "one value per variant (" + std::to_string(s.variants.size()) + "), or none");
+  require(s.reference_key.empty() || find_in_layout(LayoutEntry::Kind::summary, s.reference_key), "sweep.reference_key",
+          s.reference_key, "a key of summary.json (docs/output.md), e.g. analysis.T_exponent");
 }
 
 // "a=1; b=2" -> {"a=1", "b=2"}
@@ -136,36 +123,25 @@ void validate_compare(const Scene& scene) {
           scene.compare.solver, "one of continuum.solvers");
   require(scene.continuum.t_end == 0 || scene.continuum.t_end == scene.particles.t_end, "continuum.t_end",
           scene.continuum.t_end, "0 or particles.t_end when [compare] is present (both at one time)");
-  require(scene.particles.geometry == "ring" && scene.continuum.boundary == "periodic", "particles.geometry",
-          scene.particles.geometry, "\"ring\" with continuum.boundary = \"periodic\" when [compare] is present");
-  require(scene.initial.velocities != "expression", "initial.velocities", scene.initial.velocities,
-          "particle data (not \"expression\") when [compare] is present");
+  require(scene.particles.geometry == particles::Geometry::ring &&
+              scene.continuum.boundary == continuum::Boundary::periodic,
+          "particles.geometry", name_of(scene.particles.geometry),
+          "\"" + name_of(particles::Geometry::ring) + "\" with continuum.boundary = \"" +
+              name_of(continuum::Boundary::periodic) + "\" when [compare] is present");
+  require(scene.initial.velocities != Velocities::expression, "initial.velocities", name_of(scene.initial.velocities),
+          "particle data (not \"" + name_of(Velocities::expression) + "\") when [compare] is present");
 }
 
 void validate_scene(const Scene& scene) {
   validate(scene.initial);
   particles::validate(scene.particles);
   continuum::validate(scene.continuum);
-  const auto& c = scene.compare;
-  require(c.deposit == "ngp" || c.deposit == "cic", "compare.deposit", c.deposit, "\"ngp\" or \"cic\"");
-  require(std::isfinite(c.match_distance) && c.match_distance >= 0, "compare.match_distance", c.match_distance,
-          "a finite number >= 0");
-  require(std::isfinite(c.min_cluster_particles) && c.min_cluster_particles >= 0, "compare.min_cluster_particles",
-          c.min_cluster_particles, "a finite number >= 0 (0 = automatic)");
-  require(std::isfinite(c.cluster_gap) && c.cluster_gap >= 0, "compare.cluster_gap", c.cluster_gap,
-          "a finite number >= 0");
-  require(std::isfinite(c.cluster_dv) && c.cluster_dv >= 0, "compare.cluster_dv", c.cluster_dv,
-          "a finite number >= 0");
-  require_above("compare.fit_window", c.fit_window, 1.0);
-  require(std::isfinite(c.distribution_t_min) && c.distribution_t_min >= 0, "compare.distribution_t_min",
-          c.distribution_t_min, "a finite number >= 0");
+  compare::validate(scene.compare);
   if (scene.has_sweep) validate_sweep(scene.sweep);
   if (scene.has_continuum && !scene.has_particles)
     require(scene.continuum.t_end > 0, "continuum.t_end", scene.continuum.t_end,
             "a time > 0 (a scene without [particles] must give continuum.t_end)");
   if (scene.has_compare) validate_compare(scene);
-  if (scene.has_particles && scene.initial.velocities == "expression")
-    require(scene.initial.N >= 2, "initial.N", scene.initial.N, "an integer N >= 2");
 }
 
 }  // namespace

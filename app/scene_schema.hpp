@@ -1,8 +1,10 @@
 #pragma once
-// The registration of every scene key: its table, type, unit, allowed range,
-// documentation, and how to read and print it. The parser, the commented
-// default scene (`shockgas scene --defaults`) and the resolved-parameter dump
-// all come from this one list, so they cannot drift apart.
+// Every scene key, table by table: the declarations of each part
+// (initial_parameters(), particles::parameters(), continuum::parameters(),
+// compare::parameters()) and of the scene's own tables ([scene], [sweep],
+// [output]), bound to the Scene that holds them. The parser, the commented
+// default scene (`shockgas scene --defaults`), the resolved-parameter dump and
+// docs/scenes.md all come from this one list, so they cannot drift apart.
 #include <toml++/toml.h>
 
 #include <functional>
@@ -10,30 +12,31 @@
 #include <vector>
 
 #include "shockgas/app/scene.hpp"
+#include "shockgas/core/parameters.hpp"
 
 namespace shockgas::app {
 
 struct KeySpec {
-  std::string table;    // "particles"
-  std::string key;      // "r"
-  std::string kind;     // "number", "integer", "string", "boolean", "list of numbers", "list of strings"
-  std::string unit;     // "length/time", "1", "" for none
-  std::string allowed;  // human-readable allowed range, as in error messages
-  std::string doc;      // one line: meaning
-  std::function<void(const toml::node&, Scene&)> read;  // throws InputError on a wrong type
-  std::function<std::string(const Scene&)> print;       // TOML text of the value
-
-  std::string dotted() const { return table + "." + key; }
+  ParameterInfo info;
+  std::function<void(Scene&, const ParameterValue&)> set;  // throws InputError naming table.key
+  std::function<ParameterValue(const Scene&)> get;
 };
 
-// Every key, table by table, in the order of the default scene.
-const std::vector<KeySpec>& scene_schema();
-
-// The tables, in order, each with a one-line description.
 struct TableSpec {
-  std::string name, doc;
+  std::string name;           // "particles"
+  std::string doc;            // one line: what the table is, and what its presence runs
+  std::vector<KeySpec> keys;  // in declaration order
+  const KeySpec* find(const std::string& key) const;
+  std::string keys_text() const;  // "r, delta, ..."
 };
-const std::vector<TableSpec>& scene_tables();
+
+// The tables, in the order of the default scene.
+const std::vector<TableSpec>& scene_schema();
+const TableSpec* find_table(const std::string& name);
+
+// A TOML node as a ParameterValue (written = its TOML text), and back.
+ParameterValue from_toml(const toml::node& node);
+std::string toml_text(const ParameterValue& value);
 
 // TOML text of a node (for error messages).
 std::string node_text(const toml::node& node);

@@ -74,7 +74,7 @@ void run_engine(benchmark::State& state, const std::string& schedule, const std:
   const std::size_t n = static_cast<std::size_t>(state.range(0));
   const shockgas::Bodies b = initial_bodies(n);
   shockgas::particles::ParticleParams p;
-  p.schedule = schedule;
+  p.schedule = shockgas::parse_enum<shockgas::particles::Schedule>(schedule, "particles.schedule");
   p.r = kR;
   p.delta = kDelta;
   p.t_end = 1e12;

@@ -5,7 +5,7 @@
 #include <limits>
 #include <span>
 
-#include "shockgas/compare/scaling_laws.hpp"
+#include "shockgas/compare/theory.hpp"
 #include "shockgas/compare/statistics.hpp"
 #include "shockgas/core/error.hpp"
 

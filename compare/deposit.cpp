@@ -7,16 +7,6 @@
 
 namespace shockgas::compare {
 
-DepositScheme parse_deposit_scheme(const std::string& text, const std::string& key) {
-  if (text == "ngp" || text == "nearest") return DepositScheme::nearest_cell;
-  if (text == "cic") return DepositScheme::cloud_in_cell;
-  throw InputError(key, to_text(text), "\"nearest\" (or \"ngp\") | \"cic\"");
-}
-
-const char* to_string(DepositScheme scheme) {
-  return scheme == DepositScheme::nearest_cell ? "nearest" : "cic";
-}
-
 namespace {
 
 double wrap(double x, double length) {

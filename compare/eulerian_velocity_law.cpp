@@ -40,12 +40,14 @@ double white_noise_intensity(double velocity_variance, double spacing) {
 }
 
 double white_noise_intensity(const InitialParams& p) {
-  require(p.positions == "lattice", "initial.positions", p.positions,
-          "\"lattice\" (the white-noise intensity is derived for a lattice)");
-  require(p.velocities == "uniform" || p.velocities == "gaussian", "initial.velocities", p.velocities,
-          "\"uniform\" or \"gaussian\" (i.i.d. velocities: white noise)");
+  require(p.positions == Positions::lattice, "initial.positions", name_of(p.positions),
+          "\"" + name_of(Positions::lattice) + "\" (the white-noise intensity is derived for a lattice)");
+  require(p.velocities == Velocities::uniform || p.velocities == Velocities::gaussian, "initial.velocities",
+          name_of(p.velocities),
+          choices_text({name_of(Velocities::uniform), name_of(Velocities::gaussian)}) +
+              " (i.i.d. velocities: white noise)");
   const double variance =
-      p.velocities == "uniform" ? p.amplitude * p.amplitude / 3.0 : p.amplitude * p.amplitude;
+      p.velocities == Velocities::uniform ? p.amplitude * p.amplitude / 3.0 : p.amplitude * p.amplitude;
   return white_noise_intensity(variance, domain_length(p) / static_cast<double>(p.N));
 }
 

@@ -104,10 +104,10 @@ MatchResult match_shocks_to_clusters(const std::vector<continuum::Shock>& shocks
                                      const std::vector<particles::Cluster>& clusters, double L,
                                      const MatchParams& params) {
   require(std::isfinite(L) && L > 0, "compare.L", L, "> 0");
-  require(std::isfinite(params.max_distance) && params.max_distance >= 0, "compare.max_match_distance",
-          params.max_distance, ">= 0 (0 = automatic)");
-  require(std::isfinite(params.min_mass) && params.min_mass >= 0, "compare.min_cluster_mass", params.min_mass,
-          ">= 0");
+  require(std::isfinite(params.max_distance) && params.max_distance >= 0, "compare.match_distance",
+          params.max_distance, "a finite number >= 0 (0 = automatic)");
+  require(std::isfinite(params.min_mass) && params.min_mass >= 0, "compare.min_cluster_particles", params.min_mass,
+          "a finite mass >= 0 (min_cluster_particles times the mean particle mass)");
   const MatchParams used{params.max_distance > 0 ? params.max_distance : automatic_distance(shocks, L, params),
                          params.min_mass};
   std::vector<bool> shock_taken(shocks.size(), false), cluster_taken(clusters.size(), false);

@@ -1,6 +1,6 @@
 #include "shockgas/compare/snapshot_comparison.hpp"
 
-#include "shockgas/compare/scaling_laws.hpp"
+#include "shockgas/compare/theory.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {
@@ -40,6 +40,17 @@ std::vector<double> occupied(const std::vector<double>& mass_or_density) {
 
 }  // namespace
 
+SnapshotParams snapshot_params(const CompareParams& c, double r, double delta, double mean_spacing, double t) {
+  SnapshotParams p;
+  p.clusters = r == 0 ? particles::merged_bodies_criteria() : particles::default_cluster_criteria(delta, mean_spacing, t);
+  if (c.cluster_gap > 0) p.clusters.max_gap = c.cluster_gap;
+  if (c.cluster_dv > 0) p.clusters.max_dv = c.cluster_dv;
+  p.match_distance = c.match_distance;
+  p.min_cluster_particles = c.min_cluster_particles > 0 ? c.min_cluster_particles : automatic_min_cluster_particles(t);
+  p.deposit = c.deposit;
+  return p;
+}
+
 SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const continuum::ContinuumResult& field,
                                     const SnapshotParams& params) {
   require(N > 0, "initial.N", N, ">= 1");
@@ -54,7 +65,7 @@ SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const co
   c.clusters = particles::find_clusters(state, L, params.clusters);
   c.shocks = find_shocks(field, params.shocks);
   c.particle_fields = deposit_on_grid(state, L, field.v.size(), params.deposit);
-  c.match = match_shocks_to_clusters(c.shocks, c.clusters, L, MatchParams{params.max_match_distance, c.min_mass});
+  c.match = match_shocks_to_clusters(c.shocks, c.clusters, L, MatchParams{params.match_distance, c.min_mass});
   c.n_shocks = c.match.eligible_shocks;
   c.n_clusters = c.match.eligible_clusters;
   c.sawtooth = fit_sawtooth_slopes(field.v, L, field.t, eligible_shock_positions(c.shocks, c.min_mass),

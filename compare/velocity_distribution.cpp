@@ -147,6 +147,17 @@ ScaledDistribution mean_distribution(const std::vector<ScaledDistribution>& d) {
   return mean;
 }
 
+double standard_deviation(const ScaledDistribution& d) {
+  double w = 0, m1 = 0, m2 = 0;
+  for (std::size_t b = 0; b + 1 < d.z_edges.size(); ++b) {
+    const double z = 0.5 * (d.z_edges[b] + d.z_edges[b + 1]), p = d.density[b] * (d.z_edges[b + 1] - d.z_edges[b]);
+    w += p;
+    m1 += p * z;
+    m2 += p * z * z;
+  }
+  return w > 0 ? std::sqrt(std::max(0.0, m2 / w - (m1 / w) * (m1 / w))) : 0.0;
+}
+
 double collapse_distance(const std::vector<ScaledDistribution>& d, std::size_t grid_points) {
   require(d.size() >= 2, "compare.distributions", d.size(), ">= 2 distributions");
   require(grid_points >= 1, "compare.collapse_grid_points", grid_points, ">= 1");

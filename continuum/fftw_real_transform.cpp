@@ -1,4 +1,4 @@
-#include "shockgas/continuum/fftw_real_transform.hpp"
+#include "fftw_real_transform.hpp"
 
 #include <fftw3.h>
 

@@ -13,6 +13,9 @@ namespace {
 
 using Grid = FiniteVolumeGrid<BurgersContinuity>;
 
+// The solvers' names, as registered (index: order).
+constexpr const char* kName[] = {"", "godunov", "godunov2"};
+
 std::vector<BurgersContinuity::State> initial_states(const CellAverages& a) {
   std::vector<BurgersContinuity::State> u(a.v.size());
   for (std::size_t i = 0; i < u.size(); ++i) u[i] = {a.v[i], a.rho[i]};
@@ -35,21 +38,45 @@ ContinuumResult make_result(const Grid& grid, const std::string& solver, double 
 }
 
 // The stable Courant number of MUSCL-Hancock with the named limiter.
-double muscl_hancock_cfl_max(const std::string& limiter) {
-  if (limiter == "vanleer") return kMusclHancockVanLeerCflMax;
-  if (limiter == "mc") return kMusclHancockMcCflMax;
+double muscl_hancock_cfl_max(Limiter limiter) {
+  if (limiter == Limiter::vanleer) return kMusclHancockVanLeerCflMax;
+  if (limiter == Limiter::mc) return kMusclHancockMcCflMax;
   return kMusclHancockCflMax;
+}
+
+double cfl_max(const ContinuumParams& p, int order) {
+  return order == 1 ? kGodunovCflMax : muscl_hancock_cfl_max(p.limiter);
+}
+
+// The input rules of check_finite_volume_input and check_initial_averages.
+void check_input(const InitialField& f, const ContinuumParams& p, double t_end, int order) {
+  check_finite_volume_input(p, t_end, cfl_max(p, order), kName[order]);
+  check_initial_averages(cell_averages(f, p.cells), f.length);
+}
+
+SolverInfo registration(int order) {
+  SolverInfo s;
+  s.name = kName[order];
+  s.density = true;
+  s.preflight = [order](const InitialField& f, const ContinuumParams& p, double t_end) {
+    check_input(f, p, t_end, order);
+  };
+  s.run = [order](const InitialField& f, const ContinuumParams& p, double t_end, const ProgressCallback& progress) {
+    return solve_godunov(f, p, t_end, order, progress);
+  };
+  return s;
 }
 
 }  // namespace
 
 ContinuumResult solve_godunov(const InitialField& f, const ContinuumParams& p, double t_end, int order,
                               const ProgressCallback& progress) {
-  require(order == 1 || order == 2, "godunov.order", order, "1 (godunov) or 2 (godunov2)");
-  const std::string solver = order == 1 ? "godunov" : "godunov2";
-  check_finite_volume_input(p, t_end, order == 1 ? kGodunovCflMax : muscl_hancock_cfl_max(p.limiter), solver);
-  const Boundary boundary = boundary_from_name(p.boundary);
-  const Limiter limiter = limiter_from_name(p.limiter);
+  require(order == 1 || order == 2, "godunov.order", order,
+          std::string("1 (") + kName[1] + ") or 2 (" + kName[2] + ")");
+  const std::string solver = kName[order];
+  check_finite_volume_input(p, t_end, cfl_max(p, order), solver);
+  const Boundary boundary = p.boundary;
+  const Limiter limiter = p.limiter;
   const CellAverages initial = cell_averages(f, p.cells);
   check_initial_averages(initial, f.length);
 
@@ -67,11 +94,28 @@ ContinuumResult solve_godunov(const InitialField& f, const ContinuumParams& p, d
 
   ContinuumResult r = make_result(grid, solver, f.length, t_end);
   r.method_note = order == 1 ? "first-order Godunov, exact Riemann flux"
-                             : "MUSCL-Hancock, " + limiter_name(limiter) + " limiter, exact Riemann flux";
+                             : "MUSCL-Hancock, " + name_of(limiter) + " limiter, exact Riemann flux";
   r.stats["steps"] = static_cast<double>(steps);
   r.stats["cells"] = static_cast<double>(p.cells);
   r.stats["cfl"] = p.cfl;
   return r;
+}
+
+SolverInfo godunov_solver() {
+  SolverInfo s = registration(1);
+  s.summary = "Burgers + continuity, first-order Godunov finite volume with the exact Riemann flux";
+  s.label = s.name + " (1st order)";
+  s.colour = "tab:blue";
+  return s;
+}
+
+SolverInfo godunov2_solver() {
+  SolverInfo s = registration(2);
+  s.summary = "Burgers + continuity, second-order MUSCL-Hancock finite volume (continuum.limiter)";
+  s.label = s.name + " (2nd order)";
+  s.colour = "tab:orange";
+  s.by_default = true;
+  return s;
 }
 
 }  // namespace shockgas::continuum

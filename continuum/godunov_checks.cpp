@@ -20,13 +20,6 @@ void check_finite_volume_input(const ContinuumParams& p, double t_end, double cf
           "a Courant number in (0, " + to_text(cfl_max) + "] for " + scheme +
               " (set continuum.allow_unstable = true to go beyond)");
   require(std::isfinite(t_end) && t_end >= 0, "continuum.t_end", t_end, "a finite time >= 0");
-  boundary_from_name(p.boundary);
-}
-
-Boundary boundary_from_name(const std::string& name) {
-  if (name == "periodic") return Boundary::periodic;
-  if (name == "outflow") return Boundary::outflow;
-  throw InputError("continuum.boundary", to_text(name), "\"periodic\" or \"outflow\"");
 }
 
 void check_initial_averages(const CellAverages& a, double length) {

@@ -12,11 +12,11 @@ namespace shockgas::continuum {
 
 namespace {
 
+constexpr const char* kName = "hopf_cole";  // as registered
+
 void check_input(const ContinuumParams& p, double t_end) {
   require_above("continuum.nu", p.nu, 0.0);
   require(p.cells >= 8, "continuum.cells", p.cells, "an integer >= 8");
-  require(p.hopf_cole_path == "auto" || p.hopf_cole_path == "fft" || p.hopf_cole_path == "log",
-          "continuum.hopf_cole_path", p.hopf_cole_path, "\"auto\", \"fft\" or \"log\"");
   require(std::isfinite(t_end) && t_end >= 0, "continuum.t_end", t_end, "a finite time >= 0");
 }
 
@@ -43,7 +43,7 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
   const double shift = psi0.mean_velocity * t;
   const std::string spread = "DeltaPsi/2nu = " + text(r.stats["spread_over_2nu"]);
   const double tolerance = p.rtol * scale;
-  if (p.hopf_cole_path != "log") {
+  if (p.hopf_cole_path != HopfColePath::log) {
     LogTheta fft = log_theta_fft(psi0, p.nu, t, shift);
     const double bound = fft.velocity_error_bound;
     r.stats["fft_velocity_error_bound"] = bound;
@@ -55,10 +55,10 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
       r.method_note = "Hopf-Cole, fft path (" + why + ")";
       return fft.values;
     }
-    if (p.hopf_cole_path == "fft" && !usable)
-      throw RunError("hopf_cole: the forced fft path lost its digits at t = " + text(t) + " (" + why +
+    if (p.hopf_cole_path == HopfColePath::fft && !usable)
+      throw RunError(std::string(kName) + ": the forced fft path lost its digits at t = " + text(t) + " (" + why +
                      "); use continuum.hopf_cole_path = \"log\" or \"auto\"");
-    if (p.hopf_cole_path == "fft" || (usable && terms > kLogPathBudget)) {
+    if (p.hopf_cole_path == HopfColePath::fft || (usable && terms > kLogPathBudget)) {
       r.method_note = "Hopf-Cole, fft path above tolerance (" + why + "; the log path would sum ~" +
                       text(terms) + " kernel terms)";
       return fft.values;
@@ -77,7 +77,7 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
 void require_finite(const std::vector<double>& v, const std::vector<double>& x, double t) {
   for (std::size_t i = 0; i < v.size(); ++i)
     if (!std::isfinite(v[i]))
-      throw RunError("hopf_cole: non-finite velocity in cell " + std::to_string(i) + " (x = " + text(x[i]) +
+      throw RunError(std::string(kName) + ": non-finite velocity in cell " + std::to_string(i) + " (x = " + text(x[i]) +
                      ") at t = " + text(t));
 }
 
@@ -88,7 +88,7 @@ ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p,
   check_input(p, t_end);
   const CellAverages initial = cell_averages(f, p.cells);
   ContinuumResult r;
-  r.solver = "hopf_cole";
+  r.solver = kName;
   r.t = t_end;
   r.length = f.length;
   r.x = cell_centres(f.length, p.cells);
@@ -107,6 +107,18 @@ ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p,
   require_finite(r.v, r.x, t_end);
   if (progress) progress(1.0, t_end);
   return r;
+}
+
+SolverInfo hopf_cole_solver() {
+  SolverInfo s;
+  s.name = kName;
+  s.summary = "viscous Burgers (velocity only) by the Hopf-Cole transform: FFT, or log-domain heat kernel";
+  s.label = s.name + " (viscous, exact)";
+  s.colour = "tab:red";
+  s.viscous = true;
+  s.preflight = [](const InitialField&, const ContinuumParams& p, double t_end) { check_input(p, t_end); };
+  s.run = solve_hopf_cole;
+  return s;
 }
 
 }  // namespace shockgas::continuum

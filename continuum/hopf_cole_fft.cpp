@@ -6,7 +6,7 @@
 #include <limits>
 #include <numbers>
 
-#include "shockgas/continuum/fftw_real_transform.hpp"
+#include "fftw_real_transform.hpp"
 #include "shockgas/continuum/hopf_cole.hpp"
 
 namespace shockgas::continuum {

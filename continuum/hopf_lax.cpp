@@ -342,49 +342,4 @@ std::size_t hopf_lax_samples(std::size_t cells, const HopfLaxOptions& options) {
   return k > 0 ? (n + k - 1) / k * k : n;
 }
 
-namespace {
-
-ContinuumResult solve_field(const InitialField& f, std::size_t cells, double t, const HopfLaxOptions& o) {
-  const HopfLaxSolution s(f, t, hopf_lax_samples(cells, o));
-  const CellAverages a = s.cell_averages(cells);
-  ContinuumResult r;
-  r.v = a.v;
-  r.rho = a.rho;
-  r.shocks = s.shocks();
-  r.method_note = "exact: Legendre transform of " + std::to_string(s.samples()) +
-                  " samples of Psi0 per period, minimisers refined on v0 to rounding";
-  r.stats = s.stats();
-  return r;
-}
-
-void check_grid(const InitialField& f, std::size_t cells, double t) {
-  require(cells >= 1, "continuum.cells", cells, ">= 1");
-  require_in_range("t", t, 0.0, std::numeric_limits<double>::max());
-  require_above("initial.domain", f.length, 0.0);
-}
-
-}  // namespace
-
-ContinuumResult solve_hopf_lax(const InitialField& f, std::size_t cells, double t,
-                               const HopfLaxOptions& options) {
-  check_grid(f, cells, t);
-  ContinuumResult r = f.from_bodies() ? hopf_lax_point_masses(f, cells, t) : solve_field(f, cells, t, options);
-  r.solver = "hopf_lax";
-  r.t = t;
-  r.length = f.length;
-  r.x = cell_centres(f.length, cells);
-  r.has_shocks = true;
-  return r;
-}
-
-CellAverages exact_cell_averages(const InitialField& f, std::size_t cells, double t,
-                                 const HopfLaxOptions& options) {
-  check_grid(f, cells, t);
-  if (f.from_bodies()) {
-    const ContinuumResult r = hopf_lax_point_masses(f, cells, t);
-    return {r.v, r.rho};
-  }
-  return HopfLaxSolution(f, t, hopf_lax_samples(cells, options)).cell_averages(cells);
-}
-
 }  // namespace shockgas::continuum

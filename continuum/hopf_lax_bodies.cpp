@@ -10,7 +10,7 @@
 // The field at t > 0. The shocks are the clusters: position x_c and velocity
 // V_c from the hull, mass the cluster's. Between consecutive clusters c and c+1
 // lies vacuum whose Lagrangian preimage is the single point q_R(c) = q_L(c+1),
-// so there (DESIGN.md §1)
+// so there (docs/design.md §1)
 //     v(x, t) = (x - q_R(c)) / t,                                    (1)
 // a ramp of slope exactly 1/t, and at cluster c the velocity jumps by
 //     v(x_c+) - v(x_c-) = (q_L(c) - q_R(c)) / t < 0.                 (2)

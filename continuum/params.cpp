@@ -1,36 +1,58 @@
+// The declarations of scene table [continuum] and the rules between its keys.
 #include "shockgas/continuum/params.hpp"
 
-#include <algorithm>
-#include <cmath>
-
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::continuum {
 
 namespace {
-constexpr const char* kSolvers[] = {"godunov", "godunov2", "pressureless", "hopf_lax",
-                                    "hopf_cole", "cvode", "arkode"};
+
+ParameterTable<ContinuumParams> declare() {
+  using P = ContinuumParams;
+  ParameterTable<P> t("continuum");
+  t.add(&P::solvers, "solvers", "", "continuum solvers to run", one_of(solver_names));
+  t.add(&P::cells, "cells", "1", "grid cells on the domain", allowed(at_least(8)));
+  t.add(
+      &P::cfl, "cfl", "1", "Courant number of the finite-volume schemes",
+      Allowed{above(0), {}, "a Courant number in (0, 1] (set continuum.allow_unstable = true to go beyond)"});
+  t.add(&P::nu, "nu", "length^2/time",
+        "viscosity of the viscous solvers (those with uses nu in the solver table of docs/scenes.md)",
+        allowed(above(0)));
+  t.add(&P::t_end, "t_end", "time", "final time; 0 = particles.t_end", allowed(at_least(0)));
+  t.add(&P::rtol, "rtol", "1", "relative tolerance of the adaptive integrators",
+        allowed(between(1e-12, 0.1)));
+  t.add(&P::hopf_cole_path, "hopf_cole_path", "",
+        "Hopf-Cole evaluation: spectral heat equation, log-domain heat kernel, or chosen by its roundoff "
+        "bound");
+  t.add(&P::limiter, "limiter", "", "slope limiter of the second-order finite-volume scheme");
+  t.add(&P::boundary, "boundary", "", "boundary condition");
+  t.add(&P::allow_unstable, "allow_unstable", "",
+        "run even outside a method's stable range (for stability studies)");
+  return t;
+}
+
+}  // namespace
+
+// The registered solvers marked by_default, the exact one first.
+std::vector<std::string> ContinuumParams::default_solver_names() {
+  std::vector<std::string> names;
+  for (const auto& s : registered_solvers())
+    if (s.by_default && s.exact) names.push_back(s.name);
+  for (const auto& s : registered_solvers())
+    if (s.by_default && !s.exact) names.push_back(s.name);
+  return names;
+}
+
+const ParameterTable<ContinuumParams>& parameters() {
+  static const ParameterTable<ContinuumParams> table = declare();
+  return table;
 }
 
 void validate(const ContinuumParams& p) {
-  for (const auto& s : p.solvers)
-    require(std::find(std::begin(kSolvers), std::end(kSolvers), s) != std::end(kSolvers),
-            "continuum.solvers", s,
-            "a list from \"godunov\", \"godunov2\", \"pressureless\", \"hopf_lax\", \"hopf_cole\", "
-            "\"cvode\", \"arkode\"");
-  require(p.cells >= 8, "continuum.cells", p.cells, "an integer >= 8");
-  require(std::isfinite(p.cfl) && p.cfl > 0 && (p.cfl <= 1 || p.allow_unstable), "continuum.cfl", p.cfl,
+  parameters().check(p);
+  require(p.cfl <= 1 || p.allow_unstable, "continuum.cfl", p.cfl,
           "a Courant number in (0, 1] (set continuum.allow_unstable = true to go beyond)");
-  require_above("continuum.nu", p.nu, 0.0);
-  require(std::isfinite(p.t_end) && p.t_end >= 0, "continuum.t_end", p.t_end,
-          "a finite time > 0, or 0 for particles.t_end");
-  require_in_range("continuum.rtol", p.rtol, 1e-12, 1e-1);
-  require(p.limiter == "minmod" || p.limiter == "vanleer" || p.limiter == "mc", "continuum.limiter",
-          p.limiter, "\"minmod\", \"vanleer\" or \"mc\"");
-  require(p.hopf_cole_path == "auto" || p.hopf_cole_path == "fft" || p.hopf_cole_path == "log",
-          "continuum.hopf_cole_path", p.hopf_cole_path, "\"auto\", \"fft\" or \"log\"");
-  require(p.boundary == "periodic" || p.boundary == "outflow", "continuum.boundary", p.boundary,
-          "\"periodic\" or \"outflow\"");
 }
 
 }  // namespace shockgas::continuum

@@ -15,6 +15,13 @@ using Grid = FiniteVolumeGrid<PressurelessGas>;
 // most, at a fraction dt |u| / dx <= cfl of it.
 constexpr double kPressurelessCflMax = 1.0;
 
+constexpr const char* kName = "pressureless";  // as registered
+
+void check_input(const InitialField& f, const ContinuumParams& p, double t_end) {
+  check_finite_volume_input(p, t_end, kPressurelessCflMax, kName);
+  check_initial_averages(cell_averages(f, p.cells), f.length);
+}
+
 std::vector<PressurelessGas::State> initial_states(const CellAverages& a) {
   std::vector<PressurelessGas::State> u(a.v.size());
   for (std::size_t i = 0; i < u.size(); ++i) u[i] = {a.rho[i], a.rho[i] * a.v[i]};
@@ -25,12 +32,12 @@ std::vector<PressurelessGas::State> initial_states(const CellAverages& a) {
 
 ContinuumResult solve_pressureless(const InitialField& f, const ContinuumParams& p, double t_end,
                                    const ProgressCallback& progress) {
-  const std::string solver = "pressureless";
+  const std::string solver = kName;
   check_finite_volume_input(p, t_end, kPressurelessCflMax, solver);
   const CellAverages initial = cell_averages(f, p.cells);
   check_initial_averages(initial, f.length);
 
-  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), boundary_from_name(p.boundary));
+  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), p.boundary);
   const std::size_t steps =
       advance(grid, TimeLoop{t_end, p.cfl, solver, progress}, [&](double dt) { return grid.step_godunov(dt); });
 
@@ -50,6 +57,18 @@ ContinuumResult solve_pressureless(const InitialField& f, const ContinuumParams&
   r.stats["cells"] = static_cast<double>(p.cells);
   r.stats["cfl"] = p.cfl;
   return r;
+}
+
+SolverInfo pressureless_solver() {
+  SolverInfo s;
+  s.name = kName;
+  s.summary = "the pressureless gas (sticky particles' continuum), first-order Godunov with delta-shocks";
+  s.label = s.name + " (sticky gas, 1st order)";
+  s.colour = "tab:green";
+  s.density = true;
+  s.preflight = check_input;
+  s.run = solve_pressureless;
+  return s;
 }
 
 }  // namespace shockgas::continuum

@@ -52,7 +52,7 @@ LinearSolver::~LinearSolver() {
   if (ls_) SUNLinSolFree(ls_);
 }
 
-Cvode::Cvode(int method, SUNContext ctx) : mem_(not_null(CVodeCreate(method, ctx), "CVodeCreate", "cvode")) {
+Cvode::Cvode(int method, SUNContext ctx) : mem_(not_null(CVodeCreate(method, ctx), "CVodeCreate", "CVODE")) {
   try {
     check(CVodeSetErrHandlerFn(mem_, keep_message, &last_message_), "CVodeSetErrHandlerFn");
   } catch (...) {
@@ -63,10 +63,10 @@ Cvode::Cvode(int method, SUNContext ctx) : mem_(not_null(CVodeCreate(method, ctx
 Cvode::~Cvode() {
   if (mem_) CVodeFree(&mem_);
 }
-void Cvode::check(int flag, const char* call) const { sundials::check(flag, call, "cvode", last_message_); }
+void Cvode::check(int flag, const char* call) const { sundials::check(flag, call, "CVODE", last_message_); }
 
 Arkode::Arkode(ARKRhsFn fe, ARKRhsFn fi, double t0, N_Vector y0, SUNContext ctx)
-    : mem_(not_null(ARKStepCreate(fe, fi, t0, y0, ctx), "ARKStepCreate", "arkode")) {
+    : mem_(not_null(ARKStepCreate(fe, fi, t0, y0, ctx), "ARKStepCreate", "ARKODE")) {
   try {
     check(ARKStepSetErrHandlerFn(mem_, keep_message, &last_message_), "ARKStepSetErrHandlerFn");
   } catch (...) {
@@ -77,6 +77,6 @@ Arkode::Arkode(ARKRhsFn fe, ARKRhsFn fi, double t0, N_Vector y0, SUNContext ctx)
 Arkode::~Arkode() {
   if (mem_) ARKStepFree(&mem_);
 }
-void Arkode::check(int flag, const char* call) const { sundials::check(flag, call, "arkode", last_message_); }
+void Arkode::check(int flag, const char* call) const { sundials::check(flag, call, "ARKODE", last_message_); }
 
 }  // namespace shockgas::continuum::sundials

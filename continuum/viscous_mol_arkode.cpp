@@ -12,6 +12,7 @@ namespace shockgas::continuum {
 
 namespace {
 
+constexpr const char* kName = "arkode";  // as registered
 constexpr long kHalfBandwidth = 4;    // implicit part: v_i couples to v_{i+-2}, interleaved
 constexpr int kKrylovDimension = 30;  // SPGMR restart length
 constexpr long kMaxStepsPerOutput = 200000;
@@ -58,7 +59,7 @@ void add_stats(const sundials::Arkode& ark, ContinuumResult& r) {
 
 ContinuumResult solve_arkode(const InitialField& f, const ContinuumParams& p, double t_end,
                              const ProgressCallback& progress) {
-  MolProblem m = make_mol_problem(f, p, t_end, "arkode");
+  MolProblem m = make_mol_problem(f, p, t_end, kName);
   const std::size_t n = m.y0.size();
   sundials::Context ctx;
   sundials::Vector y(n, ctx);
@@ -94,6 +95,15 @@ ContinuumResult solve_arkode(const InitialField& f, const ContinuumParams& p, do
       "rtol = " +
       to_text(m.rtol) + ", atol = " + to_text(m.atol);
   return r;
+}
+
+SolverInfo arkode_solver() {
+  SolverInfo s = mol_registration(kName);
+  s.summary = "viscous Burgers + continuity, method of lines, ARKODE (IMEX additive Runge-Kutta)";
+  s.label = s.name + " (viscous, IMEX)";
+  s.colour = "tab:brown";
+  s.run = solve_arkode;
+  return s;
 }
 
 }  // namespace shockgas::continuum

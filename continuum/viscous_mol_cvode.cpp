@@ -12,6 +12,7 @@ namespace shockgas::continuum {
 
 namespace {
 
+constexpr const char* kName = "cvode";  // as registered
 constexpr long kHalfBandwidth = 5;    // interleaved (v, rho), 5-point stencils
 constexpr int kKrylovDimension = 30;  // SPGMR restart length
 constexpr long kMaxStepsPerOutput = 200000;
@@ -45,7 +46,7 @@ void add_stats(const sundials::Cvode& cv, ContinuumResult& r) {
 
 ContinuumResult solve_cvode(const InitialField& f, const ContinuumParams& p, double t_end,
                             const ProgressCallback& progress) {
-  MolProblem m = make_mol_problem(f, p, t_end, "cvode");
+  MolProblem m = make_mol_problem(f, p, t_end, kName);
   const std::size_t n = m.y0.size();
   sundials::Context ctx;
   sundials::Vector y(n, ctx);
@@ -80,6 +81,15 @@ ContinuumResult solve_cvode(const InitialField& f, const ContinuumParams& p, dou
       "4th-order central flux for v, upwind mass flux; rtol = " +
       to_text(m.rtol) + ", atol = " + to_text(m.atol);
   return r;
+}
+
+SolverInfo cvode_solver() {
+  SolverInfo s = mol_registration(kName);
+  s.summary = "viscous Burgers + continuity, method of lines, CVODE (BDF, Newton-Krylov)";
+  s.label = s.name + " (viscous, BDF)";
+  s.colour = "tab:purple";
+  s.run = solve_cvode;
+  return s;
 }
 
 }  // namespace shockgas::continuum

@@ -31,6 +31,20 @@ void check_resolution(const ContinuumParams& p, const std::vector<double>& v, do
 
 }  // namespace
 
+void check_mol_input(const InitialField& f, const ContinuumParams& p, double t_end) {
+  check_input(p, t_end);
+  check_resolution(p, cell_averages(f, p.cells).v, f.length);
+}
+
+SolverInfo mol_registration(const std::string& name) {
+  SolverInfo s;
+  s.name = name;
+  s.density = true;
+  s.viscous = true;
+  s.preflight = check_mol_input;
+  return s;
+}
+
 MolProblem make_mol_problem(const InitialField& f, const ContinuumParams& p, double t_end,
                             const std::string& solver) {
   check_input(p, t_end);

@@ -10,7 +10,7 @@
 namespace shockgas::continuum {
 
 struct MolProblem {
-  std::string solver;  // "cvode" | "arkode", for messages and the result
+  std::string solver;  // the registered name, for messages and the result
   ViscousBurgersGrid grid;
   std::vector<double> y0;     // interleaved (v_i, rho_i) cell averages at t = 0
   double rtol = 0, atol = 0;  // atol = rtol * max(max|v0|, max rho0)
@@ -21,6 +21,12 @@ struct MolProblem {
 // Checks the input (InputError naming the key) and builds the problem.
 MolProblem make_mol_problem(const InitialField& f, const ContinuumParams& p, double t_end,
                             const std::string& solver);
+
+// The input checks of make_mol_problem alone (the solvers' preflight).
+void check_mol_input(const InitialField& f, const ContinuumParams& p, double t_end);
+
+// What the registrations of cvode and arkode share: the flags, the preflight.
+SolverInfo mol_registration(const std::string& name);
 
 // Output times of the integration (progress is reported at each): t_end * k / kOutputs.
 constexpr int kMolOutputs = 10;

@@ -15,10 +15,6 @@ namespace shockgas {
 
 namespace {
 
-bool is_one_of(const std::string& s, std::initializer_list<const char*> options) {
-  return std::any_of(options.begin(), options.end(), [&](const char* o) { return s == o; });
-}
-
 // Reads `x v [m]` lines; '#' starts a comment.
 Bodies read_bodies_file(const std::string& path) {
   std::ifstream in(path);
@@ -47,7 +43,7 @@ Bodies read_bodies_file(const std::string& path) {
 
 void place(Bodies& b, const InitialParams& p, double length, Rng& rng) {
   b.x.resize(p.N);
-  if (p.positions == "lattice") {
+  if (p.positions == Positions::lattice) {
     for (std::size_t i = 0; i < p.N; ++i) b.x[i] = (i + 0.5) * length / p.N;
   } else {
     for (auto& x : b.x) x = rng.uniform(0.0, length);
@@ -58,7 +54,7 @@ void place(Bodies& b, const InitialParams& p, double length, Rng& rng) {
 void draw_velocities(Bodies& b, const InitialParams& p, Rng& rng) {
   b.v.resize(b.x.size());
   for (auto& v : b.v)
-    v = p.velocities == "gaussian" ? p.amplitude * rng.normal() : rng.uniform(-p.amplitude, p.amplitude);
+    v = p.velocities == Velocities::gaussian ? p.amplitude * rng.normal() : rng.uniform(-p.amplitude, p.amplitude);
 }
 
 void subtract_mean(Bodies& b) {
@@ -68,25 +64,43 @@ void subtract_mean(Bodies& b) {
 
 }  // namespace
 
+const ParameterTable<InitialParams>& initial_parameters() {
+  static const ParameterTable<InitialParams> table = [] {
+    using P = InitialParams;
+    ParameterTable<P> t("initial");
+    t.add(&P::N, "N", "1", "number of particles", allowed(at_least(2)));
+    t.add(&P::positions, "positions", "", "initial positions: equally spaced, or uniform random (sorted)");
+    t.add(&P::velocities, "velocities", "",
+          "initial velocities: uniform on [-amplitude, amplitude], Gaussian (sd amplitude), from file, or v0(x)");
+    t.add(&P::amplitude, "amplitude", "length/time", "velocity scale", allowed(above(0)));
+    t.add(&P::remove_mean, "remove_mean", "", "subtract the mean velocity");
+    t.add(&P::file, "file", "", "bodies `x v [m]` per line, sorted by x",
+          described("an existing text file (velocities = \"file\")"));
+    t.add(&P::seed, "seed", "", "random seed (realization k uses a seed derived from it)", allowed(at_least(0)));
+    t.add(&P::L, "L", "length", "ring length; 0 means L = N (unit spacing)", allowed(at_least(0)));
+    t.add(&P::v0, "v0", "length/time", "v0(x) for velocities = \"expression\"",
+          described("an expression in x, finite on the domain"));
+    t.add(&P::rho0, "rho0", "mass/length", "rho0(x) for velocities = \"expression\"",
+          described("an expression in x, > 0 on the domain"));
+    t.add(&P::domain, "domain", "length", "period of v0, rho0 (domain [0, domain)) for velocities = \"expression\"",
+          allowed(above(0)));
+    return t;
+  }();
+  return table;
+}
+
 double domain_length(const InitialParams& p) {
-  if (p.velocities == "expression") return p.domain;
+  if (p.velocities == Velocities::expression) return p.domain;
   return p.L > 0 ? p.L : static_cast<double>(p.N);
 }
 
 void validate(const InitialParams& p) {
-  require(p.N >= 2, "initial.N", p.N, "an integer N >= 2");
-  require(is_one_of(p.positions, {"lattice", "random"}), "initial.positions", p.positions,
-          "\"lattice\" or \"random\"");
-  require(is_one_of(p.velocities, {"uniform", "gaussian", "file", "expression"}), "initial.velocities",
-          p.velocities, "\"uniform\", \"gaussian\", \"file\" or \"expression\"");
-  require_above("initial.amplitude", p.amplitude, 0.0);
-  require(std::isfinite(p.L) && p.L >= 0, "initial.L", p.L, "a finite length >= 0 (0 means L = N)");
-  require_above("initial.domain", p.domain, 0.0);
-  if (p.velocities == "file") {
+  initial_parameters().check(p);
+  if (p.velocities == Velocities::file) {
     require(!p.file.empty() && std::filesystem::is_regular_file(p.file), "initial.file", p.file,
             "an existing text file with columns x v [m] (velocities = \"file\")");
   }
-  if (p.velocities == "expression") {
+  if (p.velocities == Velocities::expression) {
     Expression(p.v0, "initial.v0").require_finite_on(0.0, p.domain);
     Expression rho(p.rho0, "initial.rho0");
     rho.require_finite_on(0.0, p.domain);
@@ -99,11 +113,11 @@ void validate(const InitialParams& p) {
 }
 
 Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization) {
-  if (p.velocities == "file") return read_bodies_file(p.file);
+  if (p.velocities == Velocities::file) return read_bodies_file(p.file);
   const double length = domain_length(p);
   Rng rng(realization_seed(p.seed, realization));
   Bodies b;
-  if (p.velocities == "expression") {
+  if (p.velocities == Velocities::expression) {
     const Expression v0(p.v0, "initial.v0"), rho0(p.rho0, "initial.rho0");
     const double dx = length / p.N;
     for (std::size_t i = 0; i < p.N; ++i) {
@@ -119,10 +133,21 @@ Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization) {
   return b;
 }
 
+InitialCondition::InitialCondition(const InitialParams& p) : params_(p) {
+  validate(p);
+  field_ = make_initial_field(p, 0);
+  if (!field_.from_bodies()) expression_bodies_ = make_initial_bodies(p, 0);
+}
+
+Bodies InitialCondition::realization(std::uint64_t k) const {
+  const bool depends_on_k = params_.velocities == Velocities::uniform || params_.velocities == Velocities::gaussian;
+  return k == 0 || !depends_on_k ? bodies() : make_initial_bodies(params_, k);
+}
+
 InitialField make_initial_field(const InitialParams& p, std::uint64_t realization) {
   InitialField f;
   f.length = domain_length(p);
-  if (p.velocities == "expression") {
+  if (p.velocities == Velocities::expression) {
     auto v0 = std::make_shared<Expression>(p.v0, "initial.v0");
     auto rho0 = std::make_shared<Expression>(p.rho0, "initial.rho0");
     f.v0 = [v0](double x) { return (*v0)(x); };

@@ -67,9 +67,10 @@ class SharedProgress {
   std::vector<double> fraction_;
 };
 
-std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p, SharedProgress& progress) {
+std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams& p,
+                               SharedProgress& progress) {
   const std::size_t R = p.realizations;
-  const double L = domain_length(ip);
+  const double L = ic.length();
   std::vector<RunResult> runs(R);
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
@@ -77,7 +78,8 @@ std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p,
   auto worker = [&] {
     for (std::size_t k = next++; k < R; k = next++) {
       try {
-        runs[k] = simulate(make_initial_bodies(ip, k), L, p, progress.for_run(k));
+        runs[k] = k == 0 ? simulate(ic.bodies(), L, p, progress.for_run(k))
+                         : simulate(ic.realization(k), L, p, progress.for_run(k));
         if (ProgressCallback cb = progress.for_run(k)) cb(1.0, p.t_end);
       } catch (...) {
         std::lock_guard lock(error_mutex);
@@ -100,11 +102,15 @@ std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p,
 
 EnsembleResult run_ensemble(const InitialParams& ip, const ParticleParams& p,
                             const ProgressCallback& progress) {
-  validate(ip);
+  return run_ensemble(InitialCondition(ip), p, progress);
+}
+
+EnsembleResult run_ensemble(const InitialCondition& ic, const ParticleParams& p,
+                            const ProgressCallback& progress) {
   validate(p);
   const auto start = std::chrono::steady_clock::now();
   SharedProgress shared(progress, p.realizations);
-  std::vector<RunResult> runs = run_all(ip, p, shared);
+  std::vector<RunResult> runs = run_all(ic, p, shared);
 
   EnsembleResult e;
   std::size_t samples = 0;

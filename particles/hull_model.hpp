@@ -1,5 +1,5 @@
 #pragma once
-// The exact sticky gas as a model (particles.solver = "hull", r = 0): the
+// The exact sticky gas as a model (particles.solver = hull, r = 0): the
 // observables of RunResult from the lower-convex-hull solution at each stop
 // time (core/sticky_hull.hpp), without simulating events. Private to particles/.
 #include "shockgas/core/bodies.hpp"

@@ -1,33 +1,61 @@
+// The declarations of scene table [particles] and the rules between its keys.
 #include "shockgas/particles/params.hpp"
-
-#include <cmath>
 
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::particles {
 
+namespace {
+
+ParameterTable<ParticleParams> declare() {
+  using P = ParticleParams;
+  ParameterTable<P> t("particles");
+  t.add(&P::r, "r", "1", "restitution coefficient; 0 = aggregation", allowed(between(0, 1)));
+  t.add(&P::delta, "delta", "length/time",
+        "velocity threshold below which collisions are sub-threshold; 0 = none", allowed(at_least(0)));
+  t.add(&P::subthreshold, "subthreshold", "", "what a sub-threshold collision does");
+  t.add(&P::geometry, "geometry", "", "periodic ring of length L, or open line");
+  t.add(&P::solver, "solver", "", "event-driven simulation, or the exact sticky solution by the convex hull",
+        described(choices_text(enum_choices<ParticleSolver>()) + " (" + name_of(ParticleSolver::hull) +
+                  ": r = 0 only)"));
+  t.add(&P::schedule, "schedule", "",
+        "event order: time windows over stretches of the chain (the same collisions; equal masses without "
+        "merges "
+        "or collapse), the global queue, or auto = windows where they apply");
+  t.add(&P::t_end, "t_end", "time", "final time", allowed(above(0)));
+  t.add(&P::samples, "samples", "1", "log-spaced sample times in [1, t_end]", allowed(at_least(1)));
+  t.add(&P::realizations, "realizations", "1", "independent realizations (ensemble)", allowed(at_least(1)));
+  t.add(&P::threads, "threads", "1", "worker threads; 0 = all cores", allowed(at_least(0)));
+  t.add(&P::snapshots, "snapshots", "time", "times at which x, v, m are stored",
+        Allowed{at_least(0), {}, "times in [0, t_end]"});
+  t.add(&P::spacetime, "spacetime", "", "record trajectories (space-time diagram)");
+  t.add(&P::histogram_bins, "histogram_bins", "1",
+        "bins of the scaled velocity histogram z = v t^(1/3); 0 = none", allowed(at_least(0)));
+  t.add(&P::histogram_zmax, "histogram_zmax", "length/time^(2/3)", "histogram range |z| <= zmax",
+        allowed(above(0)));
+  t.add(&P::spacetime_frames, "spacetime_frames", "1",
+        "frames of the space-time record, equally spaced in [0, t_end]", allowed(at_least(2)));
+  t.add(&P::clusters, "clusters", "", "count clusters (default criteria) at the sample times");
+  t.add(&P::max_collisions, "max_collisions", "1",
+        "stop a realization after this many collisions; 0 = no limit", allowed(at_least(0)));
+  t.add(&P::max_wall_seconds, "max_wall_seconds", "s",
+        "stop a realization after this wall-clock time; 0 = no limit", allowed(at_least(0)));
+  return t;
+}
+
+}  // namespace
+
+const ParameterTable<ParticleParams>& parameters() {
+  static const ParameterTable<ParticleParams> table = declare();
+  return table;
+}
+
 void validate(const ParticleParams& p) {
-  require_in_range("particles.r", p.r, 0.0, 1.0);
-  require(std::isfinite(p.delta) && p.delta >= 0, "particles.delta", p.delta, "a finite number >= 0");
-  require(p.subthreshold == "elastic" || p.subthreshold == "sticky", "particles.subthreshold", p.subthreshold,
-          "\"elastic\" or \"sticky\"");
-  require(p.geometry == "ring" || p.geometry == "line", "particles.geometry", p.geometry,
-          "\"ring\" or \"line\"");
-  require(p.solver == "events" || p.solver == "hull", "particles.solver", p.solver, "\"events\" or \"hull\"");
-  require(p.solver != "hull" || p.r == 0.0, "particles.solver", p.solver,
-          "\"hull\" only with particles.r = 0 (the exact sticky solution)");
-  require(p.schedule == "auto" || p.schedule == "windows" || p.schedule == "global", "particles.schedule",
-          p.schedule, "\"auto\", \"windows\" or \"global\"");
-  require_above("particles.t_end", p.t_end, 0.0);
-  require(p.samples >= 1, "particles.samples", p.samples, "an integer >= 1");
-  require(p.realizations >= 1, "particles.realizations", p.realizations, "an integer >= 1");
+  parameters().check(p);
+  require(p.solver != ParticleSolver::hull || p.r == 0.0, "particles.solver", name_of(p.solver),
+          "\"" + name_of(ParticleSolver::hull) + "\" only with particles.r = 0 (the exact sticky solution)");
   for (double t : p.snapshots)
-    require(std::isfinite(t) && t >= 0 && t <= p.t_end, "particles.snapshots", t,
-            "times in [0, particles.t_end]");
-  require_above("particles.histogram_zmax", p.histogram_zmax, 0.0);
-  require(p.spacetime_frames >= 2, "particles.spacetime_frames", p.spacetime_frames, "an integer >= 2");
-  require(std::isfinite(p.max_wall_seconds) && p.max_wall_seconds >= 0, "particles.max_wall_seconds",
-          p.max_wall_seconds, "a finite number of seconds >= 0 (0 = no limit)");
+    require(t <= p.t_end, "particles.snapshots", t, "times in [0, particles.t_end]");
 }
 
 }  // namespace shockgas::particles

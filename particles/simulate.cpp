@@ -96,7 +96,9 @@ detail::Counters counters(const detail::EventEngine<Linked>& e) {
           e.count(CollisionKind::merge), e.dissipated()};
 }
 
-CollisionRule rule_of(const ParticleParams& p) { return {p.r, p.delta, p.subthreshold == "sticky"}; }
+CollisionRule rule_of(const ParticleParams& p) {
+  return {p.r, p.delta, p.subthreshold == Subthreshold::sticky};
+}
 
 // Time windows over domains where they are exact (particles.schedule).
 bool windows_possible(const Bodies& initial, const ParticleParams& p) {
@@ -107,7 +109,7 @@ template <bool Linked>
 RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleParams& p,
                      const ProgressCallback& progress) {
   const CollisionRule rule = rule_of(p);
-  const bool windows = !Linked && p.schedule != "global" && windows_possible(initial, p);
+  const bool windows = !Linked && p.schedule != Schedule::global && windows_possible(initial, p);
   detail::Recorder recorder(p, initial.size(), L, ring);
   detail::EventEngine<Linked> engine(initial, L, ring, rule, !windows);
   std::optional<detail::WindowScheduler> scheduler;
@@ -138,7 +140,8 @@ RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleP
 }  // namespace
 
 void check_schedule(const Bodies& initial, const ParticleParams& p) {
-  require(p.schedule != "windows" || windows_possible(initial, p), "particles.schedule", p.schedule,
+  require(p.schedule != Schedule::windows || windows_possible(initial, p), "particles.schedule",
+          name_of(p.schedule),
           "\"windows\" only for equal masses without merges or inelastic collapse (delta > 0 or r = 1), "
           "N >= 1024; else \"auto\" or \"global\"");
 }
@@ -146,11 +149,11 @@ void check_schedule(const Bodies& initial, const ParticleParams& p) {
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
                    const ProgressCallback& progress) {
   validate(p);
-  const bool ring = p.geometry == "ring";
+  const bool ring = p.geometry == Geometry::ring;
   check_bodies(initial, L, ring);
   require(!p.spacetime || initial.size() <= 100000, "particles.spacetime", std::string("true"),
           "a space-time record only for N <= 10^5");
-  if (p.solver == "hull") return detail::simulate_hull(initial, L, ring, p);
+  if (p.solver == ParticleSolver::hull) return detail::simulate_hull(initial, L, ring, p);
   check_schedule(initial, p);
   const CollisionRule rule = rule_of(p);
   if (rule.can_merge() || !equal_masses(initial)) return run_events<true>(initial, L, ring, p, progress);

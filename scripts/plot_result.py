@@ -6,6 +6,7 @@ Writes DIR/*.png. Exit code 3 when matplotlib or h5py is missing.
 """
 import os
 import sys
+from fractions import Fraction
 
 try:
     import h5py
@@ -44,11 +45,16 @@ def plot_temperature(f, out_dir):
         a = p["analysis"]
         ax.plot(a["T_fit_t"][:], a["T_fit_T"][:], "k-", lw=2, alpha=0.6,
                 label=f"fit: T ~ t^{attr(a, 'T_exponent', 0):.3f}")
-    # guides: t^-2 (homogeneous cooling) through the steepest point, t^-2/3
-    # (sticky-gas regime) through the last point, each over two decades
+    # guides, with the exponents the result file states (compare/theory.hpp): the
+    # homogeneous-cooling law through the steepest point, the sticky-gas law
+    # through the last point, each over two decades
     slopes = np.gradient(np.log(T), np.log(t))
     steep = int(np.argmin(slopes))
-    for power, anchor, style, label in [(-2.0, steep, "--", "t^-2"), (-2.0 / 3.0, len(t) - 1, ":", "t^-2/3")]:
+    a = p["analysis"] if "analysis" in p else None
+    guides = [] if a is None else [(attr(a, "T_cooling_exponent_theory"), steep, "--"),
+                                   (attr(a, "T_exponent_theory"), len(t) - 1, ":")]
+    for power, anchor, style in [g for g in guides if g[0] is not None]:
+        label = f"t^{Fraction(power).limit_denominator(12)}"
         tt = t[(t >= t[anchor] / 10) & (t <= t[anchor] * 10)]
         ax.plot(tt, T[anchor] * (tt / t[anchor]) ** power, style, color="gray", label=label)
     ax.set_xscale("log")
@@ -92,15 +98,18 @@ def plot_spacetime(f, out_dir):
 
 
 def plot_fields(f, out_dir):
+    """Every solver's v and rho, each in the label and colour its registration gives
+    (attributes `label`, `colour` of /continuum/<solver>), over the particles."""
     c = f["continuum"]
     fig, (av, ar) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
     for name in c:
         g = c[name]
         if "x" not in g:
             continue
-        av.plot(g["x"][:], g["v"][:], lw=1, label=name)
+        style = {"lw": 1, "label": attr(g, "label", name), "color": attr(g, "colour")}
+        av.plot(g["x"][:], g["v"][:], **style)
         if "rho" in g and g["rho"].shape == g["x"].shape:
-            ar.plot(g["x"][:], g["rho"][:], lw=1, label=name)
+            ar.plot(g["x"][:], g["rho"][:], **style)
     if "compare" in f and "x" in f["compare"]:
         cmp = f["compare"]
         av.plot(cmp["x"][:], cmp["v_particles"][:], "k.", ms=2, label="particles")
@@ -118,6 +127,8 @@ def plot_fields(f, out_dir):
     ar.set_xlabel("x")
     av.set_title(f"fields at t = {attr(next(iter(c.values())), 't', 0):.4g}")
     av.legend(fontsize=7)
+    if ar.get_legend_handles_labels()[0]:
+        ar.legend(fontsize=7)
     save(fig, out_dir, "fields.png")
 
 
@@ -136,7 +147,10 @@ def plot_sweep(f, out_dir):
         last = (t[ok], T[ok])
     if last is not None:
         t, T = last
-        ax.loglog(t, T[-1] * (t / t[-1]) ** (-2.0 / 3.0), ":", color="gray", label="t^-2/3")
+        power = attr(f["sweep"], "T_exponent_theory")
+        if power is not None:
+            ax.loglog(t, T[-1] * (t / t[-1]) ** power, ":", color="gray",
+                      label=f"t^{Fraction(power).limit_denominator(12)}")
         ax.set_xlabel("t")
         ax.set_ylabel("T(t)")
         ax.legend(fontsize=8)

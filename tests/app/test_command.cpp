@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "shockgas/app/command.hpp"
-#include "shockgas/app/hdf5_file.hpp"
+#include "hdf5_file.hpp"
 #include "shockgas/app/info.hpp"
 
 namespace shockgas::app {

@@ -108,7 +108,7 @@ TEST(Scene, OverrideSetsValuesReadAsToml) {
   EXPECT_EQ(s.initial.N, 1000u);
   ASSERT_EQ(s.continuum.solvers.size(), 1u);
   EXPECT_EQ(s.continuum.solvers[0], "godunov");
-  EXPECT_EQ(s.initial.positions, "random");  // a bare word is a string
+  EXPECT_EQ(name_of(s.initial.positions), "random");  // a bare word is a string
   EXPECT_TRUE(s.has_continuum);               // --set creates the table
 }
 
@@ -147,6 +147,15 @@ TEST(Scene, ExpressionThatDoesNotParse) {
 TEST(Scene, ExpressionNotFiniteOnDomain) {
   const auto e = error_of("[initial]\nvelocities = \"expression\"\nv0 = \"1/(x-0.5)\"\n[continuum]\nt_end = 0.1\n");
   EXPECT_EQ(e.key(), "initial.v0");
+}
+
+TEST(Scene, SweepReferenceKeyIsASummaryKey) {
+  const char* sweep = "[particles]\n[sweep]\nvariants = [\"particles.r=0.5\"]\nreference_key = ";
+  EXPECT_NO_THROW(parse_scene(std::string(sweep) + "\"analysis.T_exponent\"\n", "s.toml"));
+  EXPECT_NO_THROW(parse_scene(std::string(sweep) + "\"continuum.hopf_lax.n_shocks\"\n", "s.toml"));
+  const auto e = error_of(std::string(sweep) + "\"compare.T_exponent\"\n");  // moved to analysis
+  EXPECT_EQ(e.key(), "sweep.reference_key");
+  EXPECT_EQ(e.where(), "bad.toml:4");
 }
 
 }  // namespace

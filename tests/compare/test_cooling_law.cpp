@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "shockgas/compare/scaling_laws.hpp"
+#include "shockgas/compare/theory.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
 

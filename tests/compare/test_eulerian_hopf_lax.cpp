@@ -40,7 +40,7 @@ struct WhiteNoiseSample {
 WhiteNoiseSample white_noise_sample() {
   InitialParams p;
   p.N = 1000000;
-  p.velocities = "uniform";
+  p.velocities = Velocities::uniform;
   p.seed = 1;
   const double t = 1000;
   const auto cells = static_cast<std::size_t>(static_cast<double>(p.N) * std::numbers::phi);

@@ -18,15 +18,15 @@ TEST(EulerianVelocityLaw, IntensityAndScale) {
   InitialParams p;
   p.N = 1000;
   EXPECT_NEAR(white_noise_intensity(p), 1.0 / 3, 1e-16);  // uniform on [-1, 1], unit spacing
-  p.velocities = "gaussian";
+  p.velocities = Velocities::gaussian;
   p.amplitude = 2;
   p.L = 500;
   EXPECT_NEAR(white_noise_intensity(p), 4 * 0.5, 1e-15);  // sigma^2 l
   EXPECT_NEAR(eulerian_velocity_scale(1.0 / 3), std::cbrt(4.0 / 3), 1e-15);
-  p.velocities = "expression";
+  p.velocities = Velocities::expression;
   EXPECT_THROW(white_noise_intensity(p), InputError);
-  p.velocities = "uniform";
-  p.positions = "random";
+  p.velocities = Velocities::uniform;
+  p.positions = Positions::random;
   EXPECT_THROW(white_noise_intensity(p), InputError);
 }
 

@@ -1,5 +1,5 @@
 // The exact rungs of the validation ladder through the comparison pipeline
-// (DESIGN.md §2): the r = 0 gas is its own hull, so every cluster must meet
+// (docs/design.md §2): the r = 0 gas is its own hull, so every cluster must meet
 // its shock; and with uniform initial density the sticky gas and the adhesion
 // (Burgers) shocks coincide.
 #include <gtest/gtest.h>
@@ -22,8 +22,8 @@ constexpr const char* kThreeShockV0 = "sin(6*pi*x) + 0.5*cos(2*pi*x)";
 InitialParams random_ring(std::size_t N, std::uint64_t seed) {
   InitialParams p;
   p.N = N;
-  p.positions = "lattice";
-  p.velocities = "uniform";
+  p.positions = Positions::lattice;
+  p.velocities = Velocities::uniform;
   p.seed = seed;
   return p;  // L = N: unit spacing
 }
@@ -62,7 +62,7 @@ TEST(ExactStickyMatch, UniformDensityGasAndAdhesionShocksCoincide) {
   // Continuum: the Hopf-Lax solution of the same v0, rho0 = 1.
   InitialParams p;
   p.N = 20000;
-  p.velocities = "expression";
+  p.velocities = Velocities::expression;
   p.v0 = kThreeShockV0;
   p.rho0 = "1";
   p.domain = 1.0;
@@ -96,7 +96,7 @@ TEST(ExactStickyMatch, DetectionOnTheExactFieldFindsTheSolversShocks) {
   // in jump and mass; the tolerances allow 10x and 100x that.
   InitialParams p;
   p.N = 1000;
-  p.velocities = "expression";
+  p.velocities = Velocities::expression;
   p.v0 = kThreeShockV0;
   p.domain = 1.0;
   const std::size_t cells = 2000;

@@ -42,7 +42,7 @@ TEST(SnapshotComparison, SawtoothOfTheAdhesionField) {
   // yet in a shock: slope * t ~ (mass in shocks) / (total mass), here 0.91.
   InitialParams p;
   p.N = 20000;
-  p.velocities = "expression";
+  p.velocities = Velocities::expression;
   p.v0 = "sin(6*pi*x) + 0.5*cos(2*pi*x)";
   p.domain = 1.0;
   const double t = 0.5;

@@ -23,7 +23,7 @@ InitialField sine_wave() {
 bool refused(const std::string& limiter, double cfl, bool allow_unstable = false) {
   ContinuumParams p;
   p.cells = 64;
-  p.limiter = limiter;
+  p.limiter = parse_enum<Limiter>(limiter, "continuum.limiter");
   p.cfl = cfl;
   p.allow_unstable = allow_unstable;
   try {

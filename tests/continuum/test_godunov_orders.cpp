@@ -37,7 +37,7 @@ Errors errors(int order, const std::string& limiter, double t) {
     ContinuumParams p;
     p.cells = cells;
     p.cfl = 0.8;
-    p.limiter = limiter;
+    p.limiter = parse_enum<Limiter>(limiter, "continuum.limiter");
     const auto r = solve_godunov(sine(), p, t, order);
     const auto exact = exact_cell_averages(sine(), cells, t);
     const double dx = 1.0 / static_cast<double>(cells);

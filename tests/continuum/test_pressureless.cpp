@@ -1,7 +1,7 @@
 // The pressureless gas (solve_pressureless): delta-shocks moving at momentum /
 // mass, vacuum, conservation of mass and momentum, and the comparison with
 // Burgers + continuity (solve_godunov): the same shocks for uniform initial
-// density, different ones otherwise (DESIGN.md §2, rung 2).
+// density, different ones otherwise (docs/design.md §2, rung 2).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,7 +38,7 @@ ContinuumParams params(std::size_t cells, const std::string& boundary) {
   ContinuumParams p;
   p.cells = cells;
   p.cfl = 0.8;
-  p.boundary = boundary;
+  p.boundary = parse_enum<Boundary>(boundary, "continuum.boundary");
   return p;
 }
 

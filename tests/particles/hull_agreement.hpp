@@ -19,7 +19,7 @@ inline void expect_engine_matches_hull(std::size_t n, const std::string& positio
                                        std::uint64_t seed) {
   InitialParams ip;
   ip.N = n;
-  ip.positions = positions;
+  ip.positions = parse_enum<Positions>(positions, "initial.positions");
   ip.seed = seed;
   ip.remove_mean = geometry == "ring";  // the ring hull works in the centre-of-mass frame
   const Bodies initial = make_initial_bodies(ip);
@@ -27,7 +27,7 @@ inline void expect_engine_matches_hull(std::size_t n, const std::string& positio
   ParticleParams p;
   p.r = 0.0;
   p.delta = 0.0;
-  p.geometry = geometry;
+  p.geometry = parse_enum<Geometry>(geometry, "particles.geometry");
   p.t_end = times.back();
   p.samples = 1;
   p.clusters = false;

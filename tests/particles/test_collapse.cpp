@@ -22,7 +22,7 @@ RunResult three_on_a_line(double r) {
   ParticleParams p;
   p.r = r;
   p.delta = 0.0;
-  p.geometry = "line";
+  p.geometry = Geometry::line;
   p.t_end = 100.0;
   p.samples = 10;
   p.clusters = false;
@@ -98,8 +98,8 @@ RunResult focused_cluster(const std::string& subthreshold) {
   ParticleParams p;
   p.r = 0.9;
   p.delta = 1e-3;
-  p.subthreshold = subthreshold;
-  p.geometry = "line";
+  p.subthreshold = parse_enum<Subthreshold>(subthreshold, "particles.subthreshold");
+  p.geometry = Geometry::line;
   p.t_end = 2 * T0;
   p.samples = 5;
   p.clusters = false;

@@ -14,7 +14,7 @@ ParticleParams line_params(double r, double delta, double t_end) {
   ParticleParams p;
   p.r = r;
   p.delta = delta;
-  p.geometry = "line";
+  p.geometry = Geometry::line;
   p.t_end = t_end;
   p.samples = 1;
   p.clusters = false;
@@ -95,7 +95,7 @@ TEST(Engine, UnequalMassesBounce) {
 TEST(Engine, StickySubthresholdMerges) {
   // g = 0.05 < delta = 0.1 with sticky sub-threshold: merge; r is irrelevant.
   ParticleParams p = line_params(0.9, 0.1, 100.0);
-  p.subthreshold = "sticky";
+  p.subthreshold = Subthreshold::sticky;
   const RunResult out = simulate(bodies({0.0, 1.0}, {0.05, 0.0}), 10.0, p);
   ASSERT_EQ(out.final_state.size(), 1u);
   EXPECT_NEAR(out.final_state.v[0], 0.025, 1e-17);  // one rounding
@@ -105,7 +105,7 @@ TEST(Engine, RingWrapsAcrossTheOrigin) {
   // Ring L = 4: x = 0.5 (v = -1) and 3.5 (v = 0) meet across 0 at t = 1, x = -0.5 = 3.5.
   // r = 1: exchange. At t = 2: the first body stays at 3.5, the second at 3.5 - 1 = 2.5.
   ParticleParams p = line_params(1.0, 0.0, 2.0);
-  p.geometry = "ring";
+  p.geometry = Geometry::ring;
   const RunResult out = simulate(bodies({0.5, 3.5}, {-1.0, 0.0}), 4.0, p);
   ASSERT_EQ(out.collisions, 1u);
   const double tol = 1e-15;  // rounding of O(1) values
@@ -117,7 +117,7 @@ TEST(Engine, RingWrapsAcrossTheOrigin) {
 
 ParticleParams ring_params(double r, double delta, double t_end) {
   ParticleParams p = line_params(r, delta, t_end);
-  p.geometry = "ring";
+  p.geometry = Geometry::ring;
   p.samples = 20;
   return p;
 }

@@ -27,7 +27,7 @@ TEST(HullModel, SameObservablesAsTheEngine) {
   p.samples = 8;
   p.histogram_bins = 20;
   const RunResult events = simulate(initial, 2000.0, p);
-  p.solver = "hull";
+  p.solver = ParticleSolver::hull;
   const RunResult hull = simulate(initial, 2000.0, p);
   ASSERT_EQ(hull.series.size(), 8u);
   ASSERT_EQ(events.series.size(), 8u);

@@ -54,7 +54,7 @@ void expect_fig2_threshold_completes(const std::string& subthreshold) {
   ParticleParams p;
   p.r = 0.9;
   p.delta = 1e-3;
-  p.subthreshold = subthreshold;
+  p.subthreshold = parse_enum<Subthreshold>(subthreshold, "particles.subthreshold");
   p.t_end = 1e4;
   p.samples = 10;
   p.clusters = false;
@@ -80,7 +80,7 @@ double temperature_exponent(const TimeSeries& s, double t0, double t1) {
   return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
-// Sticky-gas regime eps^(-3/2) << t << N^(3/2) (eps = (1 - r)/2, DESIGN.md §1):
+// Sticky-gas regime eps^(-3/2) << t << N^(3/2) (eps = (1 - r)/2, docs/design.md §1):
 // T ~ t^(-2/3) whatever r. N = 10^5, one realization; window [100, 3000]
 // (t_stick = 8 for r = 0.5). Measured slopes: -0.666 (r = 0.5), -0.668 (r = 0).
 void expect_sticky_exponent(double r) {

@@ -8,4 +8,8 @@ namespace shockgas::app {
 // Throws InputError if the file is not a readable HDF5 file.
 std::string describe_result(const std::string& path);
 
+// Every dataset, attribute and summary key a run may write, with unit and
+// meaning, as markdown (the generated sections of docs/output.md).
+std::string describe_layout();
+
 }  // namespace shockgas::app

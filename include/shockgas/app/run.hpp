@@ -1,10 +1,10 @@
 #pragma once
 // Running a scene: every part the scene asks for, then the result files.
 //
-// Output directory DIR: result.h5 (docs/output.md), summary.json, report.md,
-// *.png. result.h5 and summary.json are written under temporary names and
-// renamed when complete, so an interrupted run never leaves a file that looks
-// whole.
+// Output directory DIR: result.h5, summary.json (both laid out as docs/output.md
+// says), report.md, *.png. result.h5 and summary.json are written under
+// temporary names and renamed when complete, so an interrupted run never leaves
+// a file that looks whole.
 #include <string>
 
 #include "shockgas/app/scene.hpp"
@@ -17,8 +17,9 @@ struct RunOptions {
   bool plots = true;      // make plots (also needs scene output.plots)
 };
 
-// Returns the output directory. Throws RunError on a failure during the run
-// (the temporary files are removed).
+// Returns the output directory. Throws InputError for input that the scene's
+// parts refuse before any work (nothing written), RunError on a failure during
+// the run (the temporary files are removed).
 std::string run_scene(const Scene& scene, const RunOptions& options);
 
 }  // namespace shockgas::app

@@ -6,40 +6,28 @@
 #include <string>
 #include <vector>
 
+#include "shockgas/compare/params.hpp"
 #include "shockgas/continuum/params.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/particles/params.hpp"
 
 namespace shockgas::app {
 
-// Scene table [compare]: the particle-continuum comparison.
-struct CompareParams {
-  std::string solver = "hopf_lax";   // the continuum solver compared (one of continuum.solvers)
-  std::string deposit = "cic";       // particles -> grid: "ngp" (nearest cell) | "cic" (cloud in cell)
-  double distribution_t_min = 10.0;  // scaled velocity distributions compared at sample times >= this [time]
-  double match_distance = 0.0;       // max shock-cluster distance for a match [length]; 0 = automatic
-  double min_cluster_particles = 0;  // clusters and shocks lighter than this many mean particle
-                                     // masses are not counted [1]; 0 = max(2, t^(2/3) / 10)
-  double cluster_gap = 0.0;          // max gap inside a cluster [length]; 0 = derived from delta
-  double cluster_dv = 0.0;           // max relative velocity inside a cluster [length/time]; 0 = derived
-  double fit_window = 10.0;          // late window of the T(t) fit: [t_end / fit_window, t_end], > 1
-};
-
 // Scene table [sweep]: run the scene once per variant (each a list of
-// overrides, "particles.r=0.5; particles.delta=1e-3"), side by side.
+// overrides, "particles.r=0.5; particles.delta=1e-3"), side by side. The keys
+// of [scene], [sweep] and [output] are declared in app/scene_schema.cpp.
 struct SweepParams {
-  std::vector<std::string> variants;        // overrides per variant, separated by ';'
-  std::vector<std::string> labels;          // one per variant; empty = the overrides
-  std::string reference_key;                // summary key compared with reference_values ("compare.T_exponent")
-  std::vector<std::string> reference_values;  // the literature's values as text, one per variant
-                                              // ("" where it gives none), or empty
-  std::string reference_source;             // where they come from
+  std::vector<std::string> variants;          // overrides per variant, separated by ';'
+  std::vector<std::string> labels;            // one per variant; empty = the overrides
+  std::string reference_key;                  // summary key compared with reference_values
+  std::vector<std::string> reference_values;  // one per variant ("" where none), or empty
+  std::string reference_source;
 };
 
 // Scene table [output].
 struct OutputParams {
-  bool plots = true;                 // make PNG plots (needs /usr/bin/python3 with matplotlib, h5py)
-  bool fields = true;                // store continuum fields (x, v, rho) in result.h5
+  bool plots = true;   // needs /usr/bin/python3 with matplotlib, h5py
+  bool fields = true;
 };
 
 struct Scene {
@@ -53,7 +41,7 @@ struct Scene {
   InitialParams initial;
   particles::ParticleParams particles;
   continuum::ContinuumParams continuum;
-  CompareParams compare;
+  compare::CompareParams compare;
   OutputParams output;
   SweepParams sweep;
 
@@ -83,8 +71,12 @@ Scene parse_scene(const std::string& text, const std::string& path,
 std::vector<Scene> expand_sweep(const Scene& scene);
 
 // The complete commented scene with every key, its default, unit and allowed
-// range, generated from the same registration the parser uses.
+// range, generated from the same declarations the parser uses.
 std::string default_scene_text();
+
+// docs/scenes.md: every table and key with kind, default, unit, allowed values
+// and meaning, generated from the declarations (a test keeps the file equal to it).
+std::string scene_reference_markdown();
 
 // The resolved parameters as TOML (every key, after defaults and overrides).
 std::string resolved_scene_text(const Scene& scene);

@@ -1,5 +1,5 @@
 #pragma once
-// The cooling law T(t) of the inelastic gas (DESIGN.md §1, eq. 3 of the paper):
+// The cooling law T(t) of the inelastic gas (docs/design.md §1, eq. 3 of the paper):
 // T ~ 1 for t << t_dissip = 1/eps, T ~ eps^-2 t^-2 up to t_stick = eps^(-3/2),
 // then T ~ t^(-2/3) (eps = (1 - r) / 2).
 //

@@ -14,19 +14,28 @@
 // between the nearest occupied cells on either side, the same rule as
 // continuum::cell_averages, and `mass` = 0 tells callers to mask it (e.g. as
 // weights of the sawtooth fit). With no mass anywhere, v = 0.
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "shockgas/core/bodies.hpp"
+#include "shockgas/core/enum_names.hpp"
 
 namespace shockgas::compare {
 
 enum class DepositScheme { nearest_cell, cloud_in_cell };
+// "ngp" (nearest grid point), also spelt "nearest"; "cic" (cloud in cell).
+constexpr std::array<EnumName<DepositScheme>, 3> enum_names(DepositScheme) {
+  return {{{DepositScheme::nearest_cell, "ngp"},
+           {DepositScheme::nearest_cell, "nearest"},
+           {DepositScheme::cloud_in_cell, "cic"}}};
+}
 
-// "ngp" / "nearest" -> nearest_cell, "cic" -> cloud_in_cell; else InputError (key given).
-DepositScheme parse_deposit_scheme(const std::string& text, const std::string& key);
-const char* to_string(DepositScheme scheme);
+// The scheme named `text` (enum_names above); else InputError naming `key`.
+inline DepositScheme parse_deposit_scheme(const std::string& text, const std::string& key) {
+  return parse_enum<DepositScheme>(text, key);
+}
 
 struct GridFields {
   double length = 1;             // domain length [length]

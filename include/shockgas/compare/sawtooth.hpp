@@ -1,7 +1,7 @@
 #pragma once
 // The sawtooth: between shocks the velocity of the sticky gas / inviscid
 // Burgers is the ramp v(x, t) = (x - q) / t with q (nearly) constant, so each
-// ramp has slope 1/t and slope * t = 1 (DESIGN.md §1; the paper's Fig. 5).
+// ramp has slope 1/t and slope * t = 1 (docs/design.md §1; the paper's Fig. 5).
 //
 // For each ramp between consecutive shocks X_k < X_{k+1} on the ring (the last
 // ramp runs from X_{K-1} across x = L to X_0 + L) the slope is fitted by

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "shockgas/compare/deposit.hpp"
+#include "shockgas/compare/params.hpp"
 #include "shockgas/compare/matching.hpp"
 #include "shockgas/compare/sawtooth.hpp"
 #include "shockgas/compare/shock_detection.hpp"
@@ -25,7 +26,7 @@ struct SnapshotParams {
   particles::ClusterCriteria clusters;  // default_cluster_criteria(delta, L / N) for r > 0,
                                         // merged_bodies_criteria() for r = 0
   ShockDetectionParams shocks;          // used only if the solver has no shock list
-  double max_match_distance = 0;        // [length]; 0 = automatic (MatchParams)
+  double match_distance = 0;            // [length]; 0 = automatic (MatchParams)
   double min_cluster_particles = 2;     // clusters and shocks lighter than this many mean
                                         // particle masses (total mass / N) are ignored [1]
   SawtoothParams sawtooth;              // ramp fits
@@ -46,6 +47,12 @@ struct SnapshotComparison {
   double shock_count_ratio = 0;                // n_shocks / (N t^(-2/3))
   double min_mass = 0;                         // the eligibility threshold used [mass]
 };
+
+// The parameters of a scene's comparison at time t: the cluster criteria for a
+// gas of restitution r and threshold delta with mean spacing L / N (merged bodies
+// for r = 0), the scene's overrides, and the automatic eligibility threshold
+// (theory.hpp) unless compare.min_cluster_particles is given.
+SnapshotParams snapshot_params(const CompareParams& c, double r, double delta, double mean_spacing, double t);
 
 // state: the particle state at field.t (positions in [0, field.length));
 // N: number of initial particles. Throws InputError if N == 0, field has no

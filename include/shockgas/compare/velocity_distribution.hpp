@@ -39,6 +39,9 @@ ScaledDistribution rescale_v_histogram(std::span<const double> v_edges, std::spa
 // the last one's. Throws InputError if d is empty or the edges differ.
 ScaledDistribution mean_distribution(const std::vector<ScaledDistribution>& d);
 
+// The standard deviation of z under d's density (each bin's weight at its centre).
+double standard_deviation(const ScaledDistribution& d);
+
 // How well distributions collapse: the mean, over all pairs, of the L1 distance
 //   D_ab = int |Phi_a(z) - Phi_b(z)| dz
 // on the z range common to all of them, evaluated at `grid_points` midpoints of

@@ -22,7 +22,7 @@ struct Shock {
 
 // Fields at time t on a uniform grid of cells [i dx, (i+1) dx).
 struct ContinuumResult {
-  std::string solver;            // "godunov", "hopf_lax", ...
+  std::string solver;            // the registered name (registry.hpp)
   double t = 0;                  // time of the fields [time]
   double length = 1;             // domain length [length]
   std::vector<double> x;         // cell centres [length]

@@ -3,6 +3,7 @@
 // (godunov_scheme.hpp with the physics of burgers_physics.hpp).
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/continuum/params.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/progress.hpp"
 
@@ -10,8 +11,8 @@ namespace shockgas::continuum {
 
 // Solves v_t + (v^2/2)_x = 0, rho_t + (rho v)_x = 0 from the cell averages
 // cell_averages(f, p.cells) to t_end on [0, f.length) with p.boundary.
-//  * order 1: Godunov with the exact Riemann flux, solver name "godunov";
-//  * order 2: MUSCL-Hancock with limiter p.limiter, solver name "godunov2".
+//  * order 1: Godunov with the exact Riemann flux, registered as godunov;
+//  * order 2: MUSCL-Hancock with limiter p.limiter, registered as godunov2.
 // dt = p.cfl dx / max|v|, the last step landing on t_end. Uses p.cells, p.cfl
 // (in (0, 1] unless p.allow_unstable), p.limiter, p.boundary.
 //
@@ -41,5 +42,9 @@ namespace shockgas::continuum {
 // the key), RunError if a value becomes non-finite (naming solver, time, cell).
 ContinuumResult solve_godunov(const InitialField& f, const ContinuumParams& p, double t_end, int order,
                               const ProgressCallback& progress = {});
+
+// The registrations of the two orders (registry.hpp).
+SolverInfo godunov_solver();
+SolverInfo godunov2_solver();
 
 }  // namespace shockgas::continuum

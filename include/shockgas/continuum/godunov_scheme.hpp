@@ -37,8 +37,6 @@
 
 namespace shockgas::continuum {
 
-enum class Boundary { periodic, outflow };
-
 template <class P>
 concept FiniteVolumePhysics = requires(const typename P::State& u) {
   { P::flux(u) } -> std::same_as<typename P::State>;
@@ -196,10 +194,9 @@ inline constexpr double kMusclHancockMcCflMax = 0.85;
 
 // Checks continuum.cells (>= 8: a periodic stencil of 5 cells plus room for one
 // wave to be resolved), continuum.cfl (in (0, cfl_max] unless allow_unstable),
-// continuum.boundary and t_end (finite, >= 0). Throws InputError naming the key.
+// and t_end (finite, >= 0). Throws InputError naming the key.
 void check_finite_volume_input(const ContinuumParams& p, double t_end, double cfl_max,
                                const std::string& scheme);
-Boundary boundary_from_name(const std::string& name);
 // Throws InputError naming initial.v0 / initial.rho0 if a cell average of the
 // initial data is not finite or a density is negative.
 void check_initial_averages(const CellAverages& a, double length);
@@ -214,7 +211,7 @@ void check_initial_averages(const CellAverages& a, double length);
 struct TimeLoop {
   double t_end = 0;            // final time [time], reached exactly
   double cfl = 0.5;            // Courant number: dt = cfl dx / max|speed|
-  std::string solver;          // name for errors ("godunov", ...)
+  std::string solver;          // name for errors (the registered name)
   ProgressCallback progress;   // called about every 1% of t_end
 };
 

@@ -38,6 +38,7 @@
 
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/continuum/params.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/progress.hpp"
 
@@ -84,12 +85,15 @@ std::vector<double> velocity_from_log_theta(const MovingFramePotential& psi0,
 //  * in between, auto runs the log path unless that would take more than 2e8 kernel
 //    terms (seconds), and keeps the fft result otherwise, saying so in method_note;
 //    a forced fft path returns it with the bound in method_note.
-// Throws InputError for nu <= 0 (continuum.nu), a bad path name
-// (continuum.hopf_cole_path) or t_end < 0; RunError if the forced fft path lost its
+// Throws InputError for nu <= 0 (continuum.nu), too few cells (continuum.cells) or
+// t_end < 0; RunError if the forced fft path lost its
 // digits or any output is non-finite (naming the solver, the cell and the time).
 // stats: "spread_over_2nu" (DeltaPsi / 2 nu), "fft_velocity_error_bound" (if fft ran),
 // "log_path" (1 if the log path produced the result), "refinement" (log path nodes per cell).
 ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p, double t_end,
                                 const ProgressCallback& progress = {});
+
+// Its registration (registry.hpp).
+SolverInfo hopf_cole_solver();
 
 }  // namespace shockgas::continuum

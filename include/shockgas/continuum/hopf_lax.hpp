@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "shockgas/continuum/field.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/initial_condition.hpp"
 
 namespace shockgas::continuum {
@@ -146,7 +147,7 @@ CellAverages exact_cell_averages(const InitialField& f, std::size_t cells, doubl
 // position, velocity = momentum / mass and mass unchanged) owns the union
 // [q_L, q_R] of its bodies' cells. Between clusters lies vacuum whose
 // Lagrangian preimage is the one boundary q_b between them, so there
-//     v(x, t) = (x - q_b) / t        (slope exactly 1/t; DESIGN.md §1),
+//     v(x, t) = (x - q_b) / t        (slope exactly 1/t; docs/design.md §1),
 // and at a cluster v jumps by (q_L - q_R) / t. Cell averages: <v> integrates the
 // ramps exactly; rho = the clusters' masses / dx in the cell [i dx, (i+1) dx)
 // holding them (one exactly on an edge: the cell on its right), 0 in vacuum.
@@ -159,5 +160,8 @@ ContinuumResult hopf_lax_point_masses(const InitialField& f, std::size_t cells, 
 
 // Samples per period that solve_hopf_lax uses for `cells` cells.
 std::size_t hopf_lax_samples(std::size_t cells, const HopfLaxOptions& options = {});
+
+// Its registration (registry.hpp): the exact reference of every comparison.
+SolverInfo hopf_lax_solver();
 
 }  // namespace shockgas::continuum

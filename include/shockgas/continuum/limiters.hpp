@@ -6,11 +6,10 @@
 // keeps the scheme TVD (Sweby, SIAM J. Numer. Anal. 21, 995 (1984): the limiter
 // function phi(r) = slope / b lies in 0 <= phi <= min(2 r, 2)). LeVeque 2002, §6.9-6.12.
 #include <cmath>
-#include <string>
+
+#include "shockgas/continuum/params.hpp"
 
 namespace shockgas::continuum {
-
-enum class Limiter { minmod, vanleer, mc };
 
 // The most diffusive TVD limiter: the smaller difference.
 struct MinmodLimiter {
@@ -37,10 +36,6 @@ struct McLimiter {
     return a > 0 ? m : -m;
   }
 };
-
-// "minmod" | "vanleer" | "mc"; anything else is an InputError naming continuum.limiter.
-Limiter limiter_from_name(const std::string& name);
-std::string limiter_name(Limiter limiter);
 
 // Calls fn(MinmodLimiter{}) etc.: one dispatch per run, the limiter inlined in the loops.
 template <class Fn>

@@ -3,6 +3,7 @@
 // finite volume (godunov_scheme.hpp with pressureless_physics.hpp).
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/continuum/params.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/progress.hpp"
 
@@ -14,7 +15,7 @@ namespace shockgas::continuum {
 // p.allow_unstable (the Godunov flux moves a cell's mass at most one cell per step,
 // which keeps rho >= 0 and u within its initial range). Mass and momentum are
 // conserved to rounding on a periodic domain; clusters are delta-shocks moving at
-// their momentum / mass. Solver name "pressureless".
+// their momentum / mass. Registered as pressureless.
 // Accuracy (measured, tests/continuum/test_pressureless.cpp): first order in L1
 // for smooth data. Both characteristic fields of the gas are linearly degenerate,
 // so nothing re-sharpens a cluster: a first-order scheme smears a delta-shock
@@ -30,5 +31,8 @@ namespace shockgas::continuum {
 // Errors as solve_godunov.
 ContinuumResult solve_pressureless(const InitialField& f, const ContinuumParams& p, double t_end,
                                    const ProgressCallback& progress = {});
+
+// Its registration (registry.hpp).
+SolverInfo pressureless_solver();
 
 }  // namespace shockgas::continuum

@@ -1,6 +1,6 @@
 #pragma once
-// One entry point for every continuum solver, by name: what a scene's
-// continuum.solvers list selects.
+// One entry point for every registered continuum solver (registry.hpp), by name:
+// what a scene's continuum.solvers list selects.
 #include <string>
 
 #include "shockgas/continuum/field.hpp"
@@ -9,10 +9,10 @@
 
 namespace shockgas::continuum {
 
-// Runs solver `name` ("godunov", "godunov2", "pressureless", "hopf_lax",
-// "hopf_cole", "cvode", "arkode") from f to t_end on p.cells cells and times it
-// (wall_seconds). Throws InputError for an unknown name or parameters outside
-// the solver's range, RunError if the solver fails or produces a non-finite value.
+// Runs the registered solver `name` from f to t_end on p.cells cells and times
+// it (wall_seconds); result.solver = name. Throws InputError for an unknown name
+// or parameters outside the solver's range, RunError if the solver fails or
+// produces a non-finite value.
 ContinuumResult solve(const std::string& name, const InitialField& f, const ContinuumParams& p, double t_end,
                       const ProgressCallback& progress = {});
 

@@ -33,6 +33,7 @@
 
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/continuum/params.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/progress.hpp"
 
@@ -62,5 +63,9 @@ ContinuumResult solve_cvode(const InitialField& f, const ContinuumParams& p, dou
                             const ProgressCallback& progress = {});
 ContinuumResult solve_arkode(const InitialField& f, const ContinuumParams& p, double t_end,
                              const ProgressCallback& progress = {});
+
+// Their registrations (registry.hpp).
+SolverInfo cvode_solver();
+SolverInfo arkode_solver();
 
 }  // namespace shockgas::continuum

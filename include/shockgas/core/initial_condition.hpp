@@ -1,36 +1,55 @@
 #pragma once
-// The one initial condition that feeds every model (DESIGN.md §3): the particles
-// see it as point masses, the continuum as pointwise data or cell averages.
+// The one initial condition that feeds every model (docs/design.md §3): the
+// particles see it as point masses, the continuum as pointwise data or cell
+// averages.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 
 #include "shockgas/core/bodies.hpp"
+#include "shockgas/core/parameters.hpp"
 
 namespace shockgas {
 
-// Scene table [initial].
+enum class Positions { lattice, random };
+constexpr std::array<EnumName<Positions>, 2> enum_names(Positions) {
+  return {{{Positions::lattice, "lattice"}, {Positions::random, "random"}}};
+}
+
+enum class Velocities { uniform, gaussian, file, expression };
+constexpr std::array<EnumName<Velocities>, 4> enum_names(Velocities) {
+  return {{{Velocities::uniform, "uniform"},
+           {Velocities::gaussian, "gaussian"},
+           {Velocities::file, "file"},
+           {Velocities::expression, "expression"}}};
+}
+
+// Scene table [initial]. Unit, allowed range and meaning of every member are
+// declared once in initial_parameters() (core/initial_condition.cpp).
 struct InitialParams {
-  std::size_t N = 10000;               // number of particles [1], N >= 2
-  std::string positions = "lattice";   // "lattice" (equal spacing) | "random" (uniform, sorted)
-  std::string velocities = "uniform";  // "uniform" on [-amplitude, amplitude] | "gaussian"
-                                       // (sd amplitude) | "file" | "expression" (v0)
-  double amplitude = 1.0;              // velocity scale [length/time], > 0
-  bool remove_mean = false;            // subtract the mean velocity (zero total momentum)
-  std::string file;                    // text file, columns `x v [m]`, sorted by x
-  std::uint64_t seed = 1;              // random seed; realization k uses realization_seed(seed, k)
-  double L = 0.0;                      // ring length / line extent [length]; 0 means L = N
-  std::string v0 = "0.5 + sin(2*pi*x)";  // v0(x) for velocities = "expression" [length/time]
-  std::string rho0 = "1";                // rho0(x) for velocities = "expression" [mass/length]
-  double domain = 1.0;                   // period of v0, rho0: the domain is [0, domain) [length]
+  std::size_t N = 10000;
+  Positions positions = Positions::lattice;
+  Velocities velocities = Velocities::uniform;
+  double amplitude = 1.0;
+  bool remove_mean = false;
+  std::string file;
+  std::uint64_t seed = 1;  // realization k uses realization_seed(seed, k)
+  double L = 0.0;          // 0 means L = N
+  std::string v0 = "0.5 + sin(2*pi*x)";
+  std::string rho0 = "1";
+  double domain = 1.0;
 };
+
+// The declarations of [initial]: key, unit, allowed values, doc.
+const ParameterTable<InitialParams>& initial_parameters();
 
 // Pointwise initial data on [0, length): what the continuum solvers discretise.
 struct InitialField {
-  double length = 1.0;                  // domain length [length]
-  std::function<double(double)> v0;     // velocity v0(x), if given pointwise
-  std::function<double(double)> rho0;   // density rho0(x), if given pointwise
-  Bodies bodies;                        // point masses, if the data are particles
+  double length = 1.0;                 // domain length [length]
+  std::function<double(double)> v0;    // velocity v0(x), if given pointwise
+  std::function<double(double)> rho0;  // density rho0(x), if given pointwise
+  Bodies bodies;                       // point masses, if the data are particles
   bool from_bodies() const { return !v0; }
 };
 
@@ -46,8 +65,35 @@ Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization = 0
 // velocities = "expression", else the particles as point masses.
 InitialField make_initial_field(const InitialParams& p, std::uint64_t realization = 0);
 
-// Checks every key of p (throws InputError naming the key); called by the scene
-// parser and by anyone building InitialParams in code.
+// The initial condition of a scene, built once and handed to every model: the
+// particles of realization 0 and the continuum's view of the same data. Other
+// realizations are drawn on demand (their seeds depend on their index only).
+class InitialCondition {
+ public:
+  // Validates p (InputError naming the key) and builds realization 0.
+  explicit InitialCondition(const InitialParams& p);
+
+  const InitialParams& params() const { return params_; }
+  double length() const { return field_.length; }
+  // Realization 0 as point masses (for expressions: the lattice of N bodies of
+  // make_initial_bodies). Sorted, positions in [0, length).
+  const Bodies& bodies() const { return field_.from_bodies() ? field_.bodies : expression_bodies_; }
+  // Realization k >= 1 (k = 0: a copy of bodies()). Data from a file or from
+  // expressions do not depend on k.
+  Bodies realization(std::uint64_t k) const;
+  // The continuum's view of realization 0: expressions, or bodies() as point masses.
+  const InitialField& field() const { return field_; }
+
+ private:
+  InitialParams params_;
+  InitialField field_;
+  Bodies expression_bodies_;
+};
+
+// Checks every key of p (throws InputError naming the key): the declared rules,
+// then the rules between keys (the file exists for velocities = "file", the
+// expressions parse and are finite, rho0 > 0). Called by the scene parser and by
+// anyone building InitialParams in code.
 void validate(const InitialParams& p);
 
 }  // namespace shockgas

@@ -1,34 +1,66 @@
 #pragma once
-// Scene table [particles]: the physics of the gas and what to observe.
+// Scene table [particles]: the physics of the gas, how it is solved and what to observe.
+#include <array>
 #include <cstddef>
 #include <cstdint>
-#include <string>
 #include <vector>
+
+#include "shockgas/core/parameters.hpp"
 
 namespace shockgas::particles {
 
+// What a sub-threshold collision does (particles/collision.hpp).
+enum class Subthreshold { elastic, sticky };
+constexpr std::array<EnumName<Subthreshold>, 2> enum_names(Subthreshold) {
+  return {{{Subthreshold::elastic, "elastic"}, {Subthreshold::sticky, "sticky"}}};
+}
+
+enum class Geometry { ring, line };
+constexpr std::array<EnumName<Geometry>, 2> enum_names(Geometry) {
+  return {{{Geometry::ring, "ring"}, {Geometry::line, "line"}}};
+}
+
+// How the gas is solved: events = the event-driven engine; hull = the exact
+// sticky solution by the lower convex hull (r = 0 only). simulate.hpp.
+enum class ParticleSolver { events, hull };
+constexpr std::array<EnumName<ParticleSolver>, 2> enum_names(ParticleSolver) {
+  return {{{ParticleSolver::events, "events"}, {ParticleSolver::hull, "hull"}}};
+}
+
+// Event order of the engine (particles/window_scheduler.hpp): automatic = time
+// windows where they apply, else the global queue.
+enum class Schedule { automatic, windows, global };
+constexpr std::array<EnumName<Schedule>, 3> enum_names(Schedule) {
+  return {{{Schedule::automatic, "auto"}, {Schedule::windows, "windows"}, {Schedule::global, "global"}}};
+}
+
+// Unit, allowed range and meaning of every member: parameters() (particles/params.cpp).
 struct ParticleParams {
-  double r = 0.9;                       // restitution coefficient [1], 0 <= r <= 1; r = 0 merges
-  double delta = 1e-2;                  // velocity threshold [length/time], >= 0; 0 = none
-  std::string subthreshold = "elastic"; // sub-threshold collisions: "elastic" | "sticky" (merge)
-  std::string geometry = "ring";        // "ring" (periodic, length L) | "line" (open)
-  std::string solver = "events";        // "events" (event-driven) | "hull" (exact, r = 0 only)
-  std::string schedule = "auto";        // event order: "auto" | "windows" | "global" (window_scheduler.hpp)
-  double t_end = 1000.0;                // final time [time], > 0
-  std::size_t samples = 40;             // number of log-spaced sample times in [1, t_end], >= 1
-  std::size_t realizations = 1;         // independent realizations (ensemble), >= 1
-  std::size_t threads = 0;              // worker threads for ensembles; 0 = all cores
-  std::vector<double> snapshots = {};   // times at which to store x, v, m [time]
-  bool spacetime = false;               // record trajectories for a space-time diagram (N <= 10^4)
-  std::size_t histogram_bins = 0;       // bins of the scaled velocity histogram z = v t^(1/3); 0 = none
-  double histogram_zmax = 4.0;          // histogram range |z| <= zmax [length/time^(2/3)]
-  std::size_t spacetime_frames = 200;   // frames of the space-time record, equally spaced in [0, t_end], >= 2
-  bool clusters = true;                 // count clusters (find_clusters, default criteria) at the samples
-  std::uint64_t max_collisions = 0;     // stop a realization after this many collisions; 0 = no limit
-  double max_wall_seconds = 0.0;        // stop a realization after this wall-clock time [s]; 0 = no limit
+  double r = 0.9;       // 0 = aggregation
+  double delta = 1e-2;  // 0 = no threshold
+  Subthreshold subthreshold = Subthreshold::elastic;
+  Geometry geometry = Geometry::ring;
+  ParticleSolver solver = ParticleSolver::events;
+  Schedule schedule = Schedule::automatic;
+  double t_end = 1000.0;
+  std::size_t samples = 40;  // log-spaced in [1, t_end]
+  std::size_t realizations = 1;
+  std::size_t threads = 0;  // 0 = all cores
+  std::vector<double> snapshots = {};
+  bool spacetime = false;
+  std::size_t histogram_bins = 0;  // 0 = no histogram
+  double histogram_zmax = 4.0;
+  std::size_t spacetime_frames = 200;
+  bool clusters = true;
+  std::uint64_t max_collisions = 0;  // 0 = no limit
+  double max_wall_seconds = 0.0;     // 0 = no limit
 };
 
-// Throws InputError naming the first key out of range.
+// The declarations of [particles]: key, unit, allowed values, doc.
+const ParameterTable<ParticleParams>& parameters();
+
+// Throws InputError naming the first key out of range: the declared rules, then
+// the rules between keys (hull only with r = 0, snapshots within t_end).
 void validate(const ParticleParams& p);
 
 }  // namespace shockgas::particles

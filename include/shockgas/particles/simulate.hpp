@@ -5,9 +5,9 @@
 //   RunResult r = simulate(bodies, L, params);           // one run
 //   EnsembleResult e = run_ensemble(initial, params);    // R realizations, averaged
 //
-// params.solver = "events": the event-driven engine (exact to rounding: each
+// params.solver = ParticleSolver::events: the event-driven engine (exact to rounding: each
 // collision happens at its predicted contact time; the next events of the two
-// bodies are re-predicted). params.solver = "hull" (r = 0 only): the exact sticky
+// bodies are re-predicted). params.solver = ParticleSolver::hull (r = 0 only): the exact sticky
 // solution by the lower convex hull (core/sticky_hull.hpp) evaluated at each stop
 // time, no events simulated; its collisions are its merges.
 #include "shockgas/core/bodies.hpp"
@@ -49,11 +49,14 @@ struct EnsembleResult {
   double wall_seconds = 0;  // wall-clock time of the whole ensemble [s]
 };
 
-// params.realizations runs of make_initial_bodies(initial, k), k = 0..R-1 (seed
-// realization_seed(initial.seed, k)), on params.threads threads (0 = all cores),
-// combined in index order: bit-identical whatever the number of threads.
-// L = domain_length(initial). progress: the mean fraction over realizations, from
-// one thread at a time.
+// params.realizations runs of initial.realization(k), k = 0..R-1 (realization 0:
+// initial.bodies(); seed realization_seed(seed, k)), on params.threads threads
+// (0 = all cores), combined in index order: bit-identical whatever the number of
+// threads. L = initial.length(). progress: the mean fraction over realizations,
+// from one thread at a time.
+EnsembleResult run_ensemble(const InitialCondition& initial, const ParticleParams& params,
+                            const ProgressCallback& progress = {});
+// The same from the parameters (the initial condition built here).
 EnsembleResult run_ensemble(const InitialParams& initial, const ParticleParams& params,
                             const ProgressCallback& progress = {});
 

@@ -1,0 +1,49 @@
+#pragma once
+// Helpers for the declarations of the output layout (output_layout.hpp), and the
+// declaration lists of each file: output_datasets.cpp (provenance, initial,
+// particles), output_fields.cpp (analysis, continuum, comparison, sweep),
+// summary_keys.cpp.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "output_layout.hpp"
+
+namespace shockgas::app::layout {
+
+using Emit = std::function<void(const RunResults&, Emitter&)>;
+
+inline Declaration dataset(Part part, std::string path, std::string unit, std::string description,
+                           std::string when, Emit emit) {
+  return {{LayoutEntry::Kind::dataset, part, std::move(path), std::move(unit), std::move(description),
+           std::move(when)},
+          std::move(emit)};
+}
+
+inline Declaration attribute(Part part, std::string path, std::string unit, std::string description,
+                             std::string when, Emit emit) {
+  return {{LayoutEntry::Kind::attribute, part, std::move(path), std::move(unit), std::move(description),
+           std::move(when)},
+          std::move(emit)};
+}
+
+inline Declaration key(Part part, std::string path, std::string unit, std::string description,
+                       std::string when, Emit emit) {
+  return {{LayoutEntry::Kind::summary, part, std::move(path), std::move(unit), std::move(description),
+           std::move(when)},
+          std::move(emit)};
+}
+
+// Appends b to a.
+inline void append(std::vector<Declaration>& a, std::vector<Declaration> b) {
+  for (auto& d : b) a.push_back(std::move(d));
+}
+
+std::vector<Declaration> provenance_datasets();
+std::vector<Declaration> particle_datasets();  // with the initial condition's
+std::vector<Declaration> field_datasets();     // analysis, continuum, comparison, sweep
+
+std::vector<Declaration> run_keys();         // provenance, initial, particles, analysis
+std::vector<Declaration> comparison_keys();  // continuum, comparison, sweep
+
+}  // namespace shockgas::app::layout

@@ -1,0 +1,69 @@
+#pragma once
+// The output of a run, declared once (output_datasets.cpp, summary_keys.cpp):
+// every dataset and attribute of result.h5 and every key of summary.json, with
+// its unit, its meaning and how it is taken from the run's results. The writers
+// below, `shockgas info` and docs/output.md follow from these declarations; a
+// test holds them against the documentation and against the files of a run.
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "hdf5_file.hpp"
+#include "run_results.hpp"
+
+namespace shockgas::app {
+
+// The parts of a run, in the order they are written.
+enum class Part { provenance, initial, particles, analysis, continuum, compare, sweep };
+
+struct LayoutEntry {
+  enum class Kind { dataset, attribute, summary };
+  Kind kind = Kind::dataset;
+  Part part = Part::provenance;
+  // dataset "/particles/T"; attribute "/particles@stop_reason" (object@name);
+  // summary key "particles.collisions". {solver}: a continuum solver's name,
+  // {k}: an index (snapshot, sweep variant).
+  std::string path;
+  std::string unit;  // "1" for a pure number, "" for text
+  std::string description;
+  std::string when;  // the condition under which it is written; "" = always (for its part)
+};
+
+// Hands the values of one declaration to the file or the summary: each call
+// fills the placeholders of the declared path, in order, with `at`.
+class Emitter {
+ public:
+  virtual ~Emitter() = default;
+  virtual void values(const std::vector<double>& data, const std::vector<std::string>& at = {}) = 0;
+  virtual void matrix(const std::vector<double>& data, std::size_t rows, std::size_t cols,
+                      const std::vector<std::string>& at = {}) = 0;
+  virtual void text(const std::string& value, const std::vector<std::string>& at = {}) = 0;
+  virtual void number(double value, const std::vector<std::string>& at = {}) = 0;
+  virtual void json(const nlohmann::ordered_json& value, const std::vector<std::string>& at = {}) = 0;
+};
+
+struct Declaration {
+  LayoutEntry entry;
+  std::function<void(const RunResults&, Emitter&)> emit;  // emits nothing where the entry does not apply
+};
+
+// The declarations (output_datasets.cpp: datasets and attributes; summary_keys.cpp).
+const std::vector<Declaration>& dataset_declarations();
+const std::vector<Declaration>& summary_declarations();
+
+// Every declared entry, datasets and attributes first, then summary keys.
+std::vector<LayoutEntry> output_layout();
+
+// Writes the datasets and attributes of `part` into h5, from r.
+void write_part(Hdf5File& h5, const RunResults& r, Part part);
+// Adds the summary keys of `part` to summary, from r.
+void summarize_part(nlohmann::ordered_json& summary, const RunResults& r, Part part);
+
+// The declared entry of this kind that a concrete path or key falls under, or nullptr.
+const LayoutEntry* find_in_layout(LayoutEntry::Kind kind, const std::string& concrete);
+
+// The declared layout as markdown tables: the generated sections of docs/output.md.
+std::string output_layout_markdown();
+
+}  // namespace shockgas::app

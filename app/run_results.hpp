@@ -1,0 +1,68 @@
+#pragma once
+// What a run of a scene produced, part by part, as typed values. The stages fill
+// it in order -- initial condition, particles, continuum, comparison -- each from
+// what the earlier ones handed on, and the result file, summary.json and
+// report.md are written from it (output_layout.hpp, report.hpp). Nothing is read
+// back from disk.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "shockgas/app/scene.hpp"
+#include "shockgas/compare/particle_analysis.hpp"
+#include "shockgas/compare/snapshot_comparison.hpp"
+#include "shockgas/continuum/field.hpp"
+#include "shockgas/core/initial_condition.hpp"
+#include "shockgas/particles/simulate.hpp"
+
+namespace shockgas::app {
+
+class ProgressBar;
+
+struct ParticleResults {
+  particles::EnsembleResult ensemble;
+  compare::ZHistogram histogram;  // the ensemble-mean scaled histogram (empty: bins = 0)
+  compare::CoolingAnalysis cooling;
+  compare::DistributionAnalysis distribution;
+};
+
+struct ContinuumRun {
+  continuum::ContinuumResult result;
+  std::optional<double> mass_drift;    // sum rho dx at t over its initial value, minus 1 (if rho)
+  std::optional<double> l1_error_v;    // sum |v - v_exact| dx against the exact solver on the same grid
+  std::optional<double> l1_error_rho;  // the same for rho, where both have it
+};
+
+struct Comparison {
+  std::string solver;  // compare.solver
+  compare::SnapshotComparison snapshot;
+  std::string note;  // set if the solver was re-run to the particles' final time
+};
+
+// A variant of a sweep, reduced to what the side-by-side needs: its summary and
+// the series of its plots (not its states).
+struct VariantResult {
+  std::string label, set, directory;
+  nlohmann::ordered_json summary;
+  std::vector<double> t, T, T_stderr;  // ensemble-mean T(t) (empty if no particles ran)
+  compare::ZHistogram histogram;
+};
+
+struct RunResults {
+  const Scene* scene = nullptr;
+  const InitialCondition* initial = nullptr;  // none for a sweep
+  std::optional<ParticleResults> particles;
+  std::vector<ContinuumRun> continuum;
+  std::optional<Comparison> comparison;
+  std::vector<VariantResult> variants;  // a sweep's
+};
+
+// The stages (stage_*.cpp). Each takes what earlier stages handed on.
+ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress);
+std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial,
+                                        ProgressBar& progress);
+Comparison run_comparison(const Scene& scene, const InitialCondition& initial,
+                          const ParticleResults& particles, const std::vector<ContinuumRun>& continuum);
+
+}  // namespace shockgas::app

@@ -1,0 +1,195 @@
+// The keys of summary.json, declared once: key, unit, meaning, and where each
+// comes from in the run's results.
+#include <cmath>
+
+#include "layout_declarations.hpp"
+#include "shockgas/version.hpp"
+
+namespace shockgas::app::layout {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+template <class F>
+Emit always(F f) {
+  return [f](const RunResults& r, Emitter& out) { out.json(f(r)); };
+}
+
+// f(particle results) -> Json, when particles ran.
+template <class F>
+Emit particle(F f) {
+  return [f](const RunResults& r, Emitter& out) {
+    if (r.particles) out.json(f(*r.particles, *r.scene));
+  };
+}
+
+std::vector<Declaration> provenance_and_initial() {
+  const Part p = Part::provenance, i = Part::initial;
+  auto initial = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      if (r.initial) out.json(f(*r.initial));
+    };
+  };
+  return {
+      key(p, "scene", "", "the scene's name", "", always([](const RunResults& r) { return r.scene->name; })),
+      key(p, "shockgas_version", "", "the program that wrote it", "",
+          always([](const RunResults&) { return kVersion; })),
+      key(p, "git_commit", "", "its commit", "", always([](const RunResults&) { return kGitCommit; })),
+      key(p, "overrides", "", "the --set overrides, in order", "",
+          always([](const RunResults& r) { return r.scene->overrides; })),
+      key(i, "initial.N", "1", "particles", "",
+          initial([](const InitialCondition& c) { return c.params().N; })),
+      key(i, "initial.length", "length", "domain length (L, or N for unit spacing; domain for expressions)",
+          "", initial([](const InitialCondition& c) { return c.length(); })),
+      key(i, "initial.positions", "", "initial.positions", "",
+          initial([](const InitialCondition& c) { return name_of(c.params().positions); })),
+      key(i, "initial.velocities", "", "initial.velocities", "",
+          initial([](const InitialCondition& c) { return name_of(c.params().velocities); })),
+      key(i, "initial.seed", "", "initial.seed", "",
+          initial([](const InitialCondition& c) { return c.params().seed; })),
+      key(i, "initial.temperature", "length^2/time^2", "temperature of realization 0", "when particles run",
+          [](const RunResults& r, Emitter& out) {
+            if (r.initial && r.scene->has_particles) out.json(temperature(r.initial->bodies()));
+          }),
+  };
+}
+
+std::vector<Declaration> particles() {
+  const Part p = Part::particles;
+  using PR = ParticleResults;
+  using StopReason = particles::StopReason;
+  return {
+      key(p, "particles.solver", "", "particles.solver", "",
+          particle([](const PR&, const Scene& s) { return name_of(s.particles.solver); })),
+      key(p, "particles.r", "1", "particles.r", "",
+          particle([](const PR&, const Scene& s) { return s.particles.r; })),
+      key(p, "particles.delta", "length/time", "particles.delta", "",
+          particle([](const PR&, const Scene& s) { return s.particles.delta; })),
+      key(p, "particles.realizations", "1", "particles.realizations", "",
+          particle([](const PR&, const Scene& s) { return s.particles.realizations; })),
+      key(p, "particles.collisions", "1", "total collisions of all realizations", "",
+          particle([](const PR& pr, const Scene&) { return pr.ensemble.total_collisions; })),
+      key(p, "particles.wall_seconds", "s", "wall-clock time of the ensemble", "",
+          particle([](const PR& pr, const Scene&) { return pr.ensemble.wall_seconds; })),
+      key(p, "particles.collisions_per_second", "1/s", "collisions / wall_seconds", "",
+          particle([](const PR& pr, const Scene&) {
+            const auto& e = pr.ensemble;
+            return e.wall_seconds > 0 ? static_cast<double>(e.total_collisions) / e.wall_seconds : 0.0;
+          })),
+      key(p, "particles.stop", "",
+          "how realization 0 ended (completed, collapse, rounding_stall, event_limit, wall_limit)", "",
+          particle([](const PR& pr, const Scene&) { return to_string(pr.ensemble.first.stop.reason); })),
+      key(p, "particles.stop_time", "time", "when it ended", "",
+          particle([](const PR& pr, const Scene&) { return pr.ensemble.first.stop.time; })),
+      key(p, "particles.collapse_position", "length", "where the inelastic collapse happened",
+          "after a collapse",
+          [](const RunResults& r, Emitter& out) {
+            if (r.particles && r.particles->ensemble.first.stop.reason == StopReason::collapse)
+              out.json(r.particles->ensemble.first.stop.position);
+          }),
+      key(p, "particles.stall_position", "length", "where time stopped advancing through rounding",
+          "after a rounding stall",
+          [](const RunResults& r, Emitter& out) {
+            if (r.particles && r.particles->ensemble.first.stop.reason == StopReason::stall)
+              out.json(r.particles->ensemble.first.stop.position);
+          }),
+      key(p, "particles.T_final", "length^2/time^2", "T at the last sample (ensemble mean)", "",
+          [](const RunResults& r, Emitter& out) {
+            if (r.particles && !r.particles->ensemble.T.mean.empty())
+              out.json(r.particles->ensemble.T.mean.back());
+          }),
+      key(p, "particles.n_bodies_final", "1", "bodies at the last sample (ensemble mean)", "",
+          [](const RunResults& r, Emitter& out) {
+            if (r.particles && !r.particles->ensemble.T.mean.empty())
+              out.json(r.particles->ensemble.n_bodies.mean.back());
+          }),
+  };
+}
+
+std::vector<Declaration> analysis() {
+  const Part p = Part::analysis;
+  auto fit = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      if (r.particles && r.particles->cooling.fit)
+        out.json(f(r.particles->cooling, *r.particles->cooling.fit));
+    };
+  };
+  auto distribution = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      if (!r.particles) return;
+      const auto& a = r.particles->distribution;
+      if (a.collapse_distance && a.not_determined.empty()) f(a, out);
+    };
+  };
+  using Cooling = compare::CoolingAnalysis;
+  using Fit = compare::PowerLawFit;
+  using Dist = compare::DistributionAnalysis;
+  return {
+      key(p, "analysis.T_exponent", "1",
+          "fitted exponent of T(t) on [t_end / fit_window, t_end] (theory -2/3)",
+          "with 3 or more samples in the window",
+          fit([](const Cooling&, const Fit& f) { return f.exponent; })),
+      key(p, "analysis.T_exponent_error", "1", "its least-squares standard error", "",
+          fit([](const Cooling&, const Fit& f) { return f.exponent_error; })),
+      key(p, "analysis.T_fit_window", "time", "the fit window [t_min, t_max]", "",
+          fit([](const Cooling&, const Fit& f) {
+            return Json{f.t_min, f.t_max};
+          })),
+      key(p, "analysis.t_dissip", "time",
+          "end of the elastic regime read off d ln T / d ln t (null: not crossed)", "",
+          fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_dissip); })),
+      key(p, "analysis.t_stick", "time",
+          "end of homogeneous cooling read off d ln T / d ln t (null: not crossed)", "",
+          fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_stick); })),
+      key(p, "analysis.t_dissip_theory", "time", "1/eps", "",
+          fit([](const Cooling& a, const Fit&) { return a.crossovers.t_dissip_theory; })),
+      key(p, "analysis.t_stick_theory", "time", "eps^(-3/2)", "",
+          fit([](const Cooling& a, const Fit&) { return a.crossovers.t_stick_theory; })),
+      key(p, "analysis.cooling_law_not_determined", "", "why the cooling law could not be fitted",
+          "when the data refuse it",
+          [](const RunResults& r, Emitter& out) {
+            if (r.particles && !r.particles->cooling.not_determined.empty())
+              out.json(r.particles->cooling.not_determined);
+          }),
+      key(p, "analysis.velocity_collapse_distance", "1",
+          "mean L1 distance between the scaled distributions of the late samples (0 = perfect collapse, 2 = "
+          "disjoint)",
+          "with 2 or more late samples",
+          [](const RunResults& r, Emitter& out) {
+            if (r.particles && r.particles->distribution.collapse_distance)
+              out.json(*r.particles->distribution.collapse_distance);
+          }),
+      key(p, "analysis.velocity_distribution_not_determined", "",
+          "why the distribution could not be analysed", "when the data refuse it",
+          [](const RunResults& r, Emitter& out) {
+            if (r.particles && !r.particles->distribution.not_determined.empty())
+              out.json(r.particles->distribution.not_determined);
+          }),
+      key(p, "analysis.velocity_tail_zmin", "length/time^(2/3)",
+          "start of the tail fit: one standard deviation of z", "",
+          distribution([](const Dist& a, Emitter& out) { out.json(a.tail_z_min); })),
+      key(p, "analysis.velocity_tail_exponent", "1",
+          "fitted a in Phi(z) ~ exp(-c |z|^a) (theory 3; null: not determined)", "",
+          distribution([](const Dist& a, Emitter& out) {
+            out.json(a.tail.at_bound ? Json(nullptr) : Json(a.tail.exponent));
+          })),
+      key(p, "analysis.velocity_tail_exponent_error", "1", "its error (profile least squares)", "",
+          distribution([](const Dist& a, Emitter& out) {
+            if (!a.tail.at_bound) out.json(a.tail.exponent_error);
+          })),
+  };
+}
+
+}  // namespace
+
+std::vector<Declaration> run_keys() {
+  std::vector<Declaration> d = provenance_and_initial();
+  append(d, particles());
+  append(d, analysis());
+  return d;
+}
+
+}  // namespace shockgas::app::layout

@@ -1,0 +1,53 @@
+#include "shockgas/compare/theory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::compare {
+
+double inelasticity(double r) {
+  require_in_range("particles.r", r, 0.0, 1.0);
+  return 0.5 * (1.0 - r);
+}
+
+double dissipation_time(double r) {
+  const double eps = inelasticity(r);
+  return eps > 0 ? 1.0 / eps : std::numeric_limits<double>::infinity();
+}
+
+double sticking_time(double r) {
+  const double eps = inelasticity(r);
+  return eps > 0 ? std::pow(eps, -1.5) : std::numeric_limits<double>::infinity();
+}
+
+double homogeneous_cooling_temperature(double r, double t) {
+  const double a = 1.0 + inelasticity(r) * t;
+  return 1.0 / (a * a);
+}
+
+double sticky_gas_temperature(double t) { return std::pow(t, kStickyCoolingExponent); }
+
+double typical_cluster_mass(double t) { return std::pow(t, 2.0 / 3.0); }
+
+double expected_shock_count(double N, double t) {
+  require_above("initial.N", N, 0.0);
+  require_above("compare.t", t, 0.0);
+  return N * std::pow(t, kStickyCoolingExponent);  // N t^(-2/3)
+}
+
+double shock_count_ratio(std::size_t n_shocks, double N, double t) {
+  return static_cast<double>(n_shocks) / expected_shock_count(N, t);
+}
+
+double automatic_min_cluster_particles(double t) { return std::max(2.0, 0.1 * typical_cluster_mass(t)); }
+
+double scaled_velocity(double v, double t) { return v * std::cbrt(t); }
+
+double validity_time(double delta) {
+  return delta > 0 ? std::pow(delta, -3.0) : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace shockgas::compare
