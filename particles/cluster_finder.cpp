@@ -24,7 +24,7 @@ void validate_input(const Bodies& b, double L, const ClusterCriteria& c) {
 // Whether bodies i and j = i + 1 (ring: j = 0 after N - 1) belong to one cluster.
 bool joined(const Bodies& b, std::size_t i, std::size_t j, double L, const ClusterCriteria& c) {
   const double gap = j > i ? b.x[j] - b.x[i] : b.x[j] + L - b.x[i];
-  return gap < c.max_gap && std::abs(b.v[j] - b.v[i]) < c.max_dv;
+  return c.joins(gap, b.v[j] - b.v[i]);
 }
 
 // links[i]: body i is joined to its right neighbour (ring: the last one to body 0).
