@@ -5,27 +5,35 @@
 namespace shockgas::particles::detail {
 
 ClusterCounter::ClusterCounter(double L, bool ring, const ClusterCriteria& criteria)
-    : L_(L), ring_(ring), criteria_(criteria) {}
+    : L_(L), ring_(ring), criteria_(criteria), wrap_(L) {}
 
+// The counter's state lives in locals through a chunk (stores to members would
+// be repeated every body: the compiler cannot rule out that they alias the chunk).
 void ClusterCounter::add(const ChainChunk& chunk) {
-  for (std::size_t k = 0; k < chunk.size; ++k) add(chunk.x[k], chunk.v[k]);
-}
-
-void ClusterCounter::add(double x, double v) {
-  const double w = ring_ ? wrap_into(x, L_) : x;
-  if (bodies_++ == 0) {
-    x0_ = w, v0_ = v;
-  } else {
-    double gap = w - last_x_;
-    if (w < last_x_) {
+  if (chunk.size == 0) return;
+  std::size_t k = 0;
+  if (bodies_ == 0) {
+    x0_ = last_x_ = ring_ ? wrap_(chunk.x[0]) : chunk.x[0];
+    v0_ = last_v_ = chunk.v[0];
+    k = 1;
+  }
+  const ClusterCriteria criteria = criteria_;
+  double last_x = last_x_, last_v = last_v_;
+  std::size_t joined = joined_;
+  for (; k < chunk.size; ++k) {
+    const double w = ring_ ? wrap_(chunk.x[k]) : chunk.x[k];
+    double gap = w - last_x;
+    if (w < last_x) [[unlikely]] {
       if (ring_ && !seam_)
-        seam_ = true, gap = w + L_ - last_x_;  // the ring's wrapping pair
+        seam_ = true, gap = w + L_ - last_x;  // the ring's wrapping pair
       else
         ordered_ = false;
     }
-    joined_ += criteria_.joins(gap, v - last_v_);
+    joined += criteria.joins(gap, chunk.v[k] - last_v);
+    last_x = w, last_v = chunk.v[k];
   }
-  last_x_ = w, last_v_ = v;
+  last_x_ = last_x, last_v_ = last_v, joined_ = joined;
+  bodies_ += chunk.size;
 }
 
 std::optional<std::size_t> ClusterCounter::count() const {
@@ -42,10 +50,14 @@ std::optional<std::size_t> ClusterCounter::count() const {
 
 ChainMoments chain_moments(const ChainView& chain, ClusterCounter* counter) {
   ChainMoments s;
-  chain.visit([&](const ChainChunk& c) {
-    for (std::size_t k = 0; k < c.size; ++k) s.mass += c.m[k], s.momentum += c.m[k] * c.v[k];
-    if (counter) counter->add(c);
-  });
+  chain.visit(
+      [&](const ChainChunk& c) {
+        double mass = s.mass, momentum = s.momentum;  // the same sums, in registers
+        for (std::size_t k = 0; k < c.size; ++k) mass += c.m[k], momentum += c.m[k] * c.v[k];
+        s.mass = mass, s.momentum = momentum;
+        if (counter) counter->add(c);
+      },
+      counter ? Fields::all : Fields::velocities);  // positions only for the clusters
   return s;
 }
 
@@ -54,16 +66,27 @@ double chain_temperature(const ChainView& chain, const ChainMoments& moments, co
   const double mean = moments.mean();
   const double dz = 2 * spec.zmax / static_cast<double>(spec.bins);
   const double bins = static_cast<double>(spec.bins);
+  const double density = moments.mass * dz;
   if (row) row->assign(spec.bins, 0.0);
   double T = 0;
-  chain.visit([&](const ChainChunk& c) {
-    for (std::size_t k = 0; k < c.size; ++k) T += c.m[k] * (c.v[k] - mean) * (c.v[k] - mean);
-    if (!row) return;
-    for (std::size_t k = 0; k < c.size; ++k) {
-      const double bin = std::floor(((c.v[k] - mean) * spec.scale + spec.zmax) / dz);
-      if (bin >= 0 && bin < bins) (*row)[static_cast<std::size_t>(bin)] += c.m[k] / (moments.mass * dz);
-    }
-  });
+  chain.visit(
+      [&](const ChainChunk& c) {
+        double sum = T;
+        for (std::size_t k = 0; k < c.size; ++k) sum += c.m[k] * (c.v[k] - mean) * (c.v[k] - mean);
+        T = sum;
+        if (!row) return;
+        // Bin floor(z): z >= 0 and z < bins say the same as floor(z) >= 0 and
+        // floor(z) < bins, and the cast truncates z >= 0 to floor(z). Equal masses
+        // give equal weights: the division is made once.
+        double* bin = row->data();
+        double m = 0, weight = 0;
+        for (std::size_t k = 0; k < c.size; ++k) {
+          const double z = ((c.v[k] - mean) * spec.scale + spec.zmax) / dz;
+          if (c.m[k] != m) m = c.m[k], weight = m / density;
+          if (z >= 0 && z < bins) bin[static_cast<std::size_t>(z)] += weight;
+        }
+      },
+      Fields::velocities);
   return T / moments.mass;
 }
 

@@ -34,11 +34,11 @@ class ClusterCounter {
   std::optional<std::size_t> count() const;
 
  private:
-  void add(double x, double v);
 
   double L_;
   bool ring_;
   ClusterCriteria criteria_;
+  PeriodWrap wrap_;
   std::size_t bodies_ = 0, joined_ = 0;
   bool seam_ = false;       // the wrapped positions dropped once (ring)
   bool ordered_ = true;     // ... and never again

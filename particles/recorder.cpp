@@ -45,10 +45,12 @@ Bodies stable_sorted(const Bodies& b) {
 Bodies sorted_bodies(const ChainView& s, double L, bool ring) {
   Bodies out;
   out.reserve(s.size());
-  s.visit([&](const ChainChunk& c) {
-    for (std::size_t k = 0; k < c.size; ++k)
-      out.push_back(ring ? wrap_into(c.x[k], L) : c.x[k], c.v[k], c.m[k]);
-  });
+  s.visit(
+      [&](const ChainChunk& c) {
+        for (std::size_t k = 0; k < c.size; ++k)
+          out.push_back(ring ? wrap_into(c.x[k], L) : c.x[k], c.v[k], c.m[k]);
+      },
+      Fields::all);
   // The chain is sorted but for the ring's seam: rotate the seam to the front.
   const auto start = static_cast<std::ptrdiff_t>(ring ? seam_of(out.x) : 0);
   for (std::vector<double>* a : {&out.x, &out.v, &out.m})
@@ -145,16 +147,18 @@ void Recorder::frame(double t, const ChainView& s) {
   std::size_t first = 0, pending = 0;
   bool started = false;
   double x = 0;
-  s.visit([&](const ChainChunk& c) {
-    for (std::size_t k = 0; k < c.size; ++k) {
-      if (started)
-        std::fill(row + pending, row + c.first[k], x);  // the previous body's particles
-      else
-        first = c.first[k], started = true;
-      pending = c.first[k];
-      x = wrap(c.x[k]);
-    }
-  });
+  s.visit(
+      [&](const ChainChunk& c) {
+        for (std::size_t k = 0; k < c.size; ++k) {
+          if (started)
+            std::fill(row + pending, row + c.first[k], x);  // the previous body's particles
+          else
+            first = c.first[k], started = true;
+          pending = c.first[k];
+          x = wrap(c.x[k]);
+        }
+      },
+      Fields::all);
   std::fill(row + pending, row + n_, x);
   std::fill(row, row + first, x);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 #include "chain_observables.hpp"
@@ -214,6 +215,27 @@ TEST(ChainObservables, RandomLineChainsEqualTheSortedCopy) {
   }
 }
 
+// PeriodWrap skips the division while x stays in one period: its result must be
+// wrap_into's to the bit, at period boundaries and far from the first period too.
+TEST(PeriodWrap, EqualsWrapIntoToTheBit) {
+  Rng rng(28);
+  for (double L : {1.0, 3000.0, 1e7, 0.1 * 3}) {
+    PeriodWrap wrap(L);
+    double x = -5 * L;
+    for (int i = 0; i < 200000; ++i) {
+      const double u = rng.uniform();
+      // Mostly small steps (a chain), some jumps, some exact multiples of L and their neighbours.
+      const double k = std::floor(rng.uniform(-2000.0, 2000.0));
+      x = u < 0.8 ? x + rng.uniform(-0.01, 0.05) * L
+          : u < 0.9 ? rng.uniform(-1e6, 1e6) * L
+          : u < 0.95 ? k * L
+                     : std::nextafter(k * L, u < 0.975 ? -1e300 : 1e300);
+      const double got = wrap(x), want = wrap_into(x, L);
+      ASSERT_EQ(std::memcmp(&got, &want, sizeof got), 0) << "x = " << x << ", L = " << L;
+    }
+  }
+}
+
 // The counter alone, under criteria wide enough to join a whole ring.
 TEST(ClusterCounter, EqualsFindClustersOnTheSortedCopy) {
   Rng rng(27);
@@ -224,7 +246,7 @@ TEST(ClusterCounter, EqualsFindClustersOnTheSortedCopy) {
         const Chain c = random_chain(rng, bodies, 0.02, ring);
         const ClusterCriteria criteria{rng.uniform(0.0, 4.0), rng.uniform(0.0, 0.3)};
         ClusterCounter counter(c.L, ring, criteria);
-        view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); });
+        view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); }, Fields::all);
         const std::size_t expected = find_clusters(ref_sorted(c, ring), ring ? c.L : 0.0, criteria).size();
         ASSERT_TRUE(counter.count().has_value());
         EXPECT_EQ(*counter.count(), expected);
@@ -254,7 +276,7 @@ TEST(ChainObservables, MisorderedChainsFallBackToTheSortedCopy) {
       c.x[k] = c.x[left] - (across ? c.L : 0.0) - 1e-9 * c.L;
       c.v[k] = c.v[left];
       ClusterCounter counter(c.L, ring, default_cluster_criteria(0.02, 1.0));
-      view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); });
+      view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); }, Fields::all);
       if (!ring || ref_wrap(c.x[k], c.L) < ref_wrap(c.x[left], c.L)) {
         EXPECT_FALSE(counter.count().has_value());
       }
