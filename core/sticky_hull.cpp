@@ -111,11 +111,11 @@ void prefault(void* base, std::size_t from, std::size_t to, std::size_t size) {
 
 // The stack of runs [0, top) over the hull's arrays, with the top's position at
 // t kept in a register. Without masses, a run's weight is its count. Runs below
-// `ready` are resident; the stack makes the next 2^14 so as it grows past it
-// (only what it reaches is resident: the depth, not the capacity).
+// `ready` are resident; reserve() makes room for a block of pushes (each adds at
+// most one run) in steps of 2^14 runs: only the depth reached is resident.
 template <bool Masses>
 struct Stack {
-  static constexpr std::size_t chunk = std::size_t{1} << 14;
+  static constexpr std::size_t step = std::size_t{1} << 14;
   double* c0;
   double* v;
   double* m;
@@ -142,16 +142,16 @@ struct Stack {
       top = b;
       top_x = top > 0 ? c0[top - 1] + t * v[top - 1] : -std::numeric_limits<double>::infinity();
     }
-    if (top == ready) [[unlikely]]
-      grow();
     c0[top] = c, v[top] = u, count[top] = k;
     if constexpr (Masses) m[top] = w;
     ++top;
     top_x = x;
   }
 
-  [[gnu::noinline]] void grow() {
-    const std::size_t to = std::min(capacity, ready + chunk);
+  // Makes room for `pushes` more pushes.
+  void reserve(std::size_t pushes) {
+    if (top + pushes <= ready) return;
+    const std::size_t to = std::min(capacity, std::max(top + pushes, ready + step));
     prefault(c0, ready, to, sizeof(double));
     prefault(v, ready, to, sizeof(double));
     prefault(count, ready, to, sizeof(std::uint32_t));
@@ -162,8 +162,9 @@ struct Stack {
 
 }  // namespace
 
-// One pass over the bodies; validity is folded into it (branch-free) and judged
-// at the end: x_i >= x_{i-1} for all i and finite ends make every x finite.
+// One pass over the bodies, room made per block of 4096. Validity is folded into
+// it (branch-free) and judged at the end: x_i >= x_{i-1} for all i and finite
+// ends make every x finite. Unequal masses: false, and the caller starts again.
 template <bool Masses>
 bool StickyHull::build(const Bodies& initial) {
   const double* x = initial.x.data();
@@ -174,12 +175,17 @@ bool StickyHull::build(const Bodies& initial) {
   bool valid = m0 > 0 && m0 < inf;
   double previous = -inf;
   Stack<Masses> stack{c0_.get(), v_.get(), m_.get(), count_.get(), t_, n_};
-  for (std::size_t i = 0; i < n_; ++i) {
-    if (!Masses && m[i] != m0) return false;
-    valid &= (x[i] >= previous) & (std::abs(v[i]) < inf);
-    if constexpr (Masses) valid &= (m[i] > 0) & (m[i] < inf);
-    previous = x[i];
-    stack.push(x[i], v[i], Masses ? m[i] : 1.0, 1);
+  constexpr std::size_t block = 4096;
+  for (std::size_t begin = 0; begin < n_; begin += block) {
+    const std::size_t end = std::min(n_, begin + block);
+    stack.reserve(end - begin);
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!Masses && m[i] != m0) return false;
+      valid &= (x[i] >= previous) & (std::abs(v[i]) < inf);
+      if constexpr (Masses) valid &= (m[i] > 0) & (m[i] < inf);
+      previous = x[i];
+      stack.push(x[i], v[i], Masses ? m[i] : 1.0, 1);
+    }
   }
   if (n_ > 0) valid &= x[0] > -inf && x[n_ - 1] < inf && (L_ == 0 || (x[0] >= 0 && x[n_ - 1] < L_));
   if (!valid) check_bodies(initial, L_);
