@@ -25,7 +25,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -34,6 +33,7 @@
 #include <string>
 #include <tuple>
 
+#include "csv_main.hpp"
 #include "recorder.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/sticky_hull.hpp"
@@ -261,19 +261,5 @@ int main(int argc, char** argv) {
   // Every large block its own mapping, so that its touched pages are what it adds to the resident set.
   mallopt(M_MMAP_THRESHOLD, 128 * 1024);
 #endif
-  std::string csv = "hull_bench.csv";
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--csv=", 6) == 0)
-      csv = argv[i] + 6;
-    else
-      argv[kept++] = argv[i];
-  }
-  argc = kept;
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  write_csv(csv);
-  return 0;
+  return shockgas::bench::run_with_csv(argc, argv, "hull_bench.csv", write_csv);
 }
