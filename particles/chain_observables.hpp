@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "chain_view.hpp"
+#include "ring_wrap.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
 
 namespace shockgas::particles::detail {

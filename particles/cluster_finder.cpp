@@ -27,15 +27,6 @@ bool joined(const Bodies& b, std::size_t i, std::size_t j, double L, const Clust
   return c.joins(gap, b.v[j] - b.v[i]);
 }
 
-// links[i]: body i is joined to its right neighbour (ring: the last one to body 0).
-std::vector<bool> neighbour_links(const Bodies& b, double L, const ClusterCriteria& c) {
-  const std::size_t n = b.size();
-  std::vector<bool> links(n, false);
-  for (std::size_t i = 0; i + 1 < n; ++i) links[i] = joined(b, i, i + 1, L, c);
-  if (L > 0 && n > 1) links[n - 1] = joined(b, n - 1, 0, L, c);
-  return links;
-}
-
 // The cluster of `count` bodies starting at `first` (indices taken mod N; a
 // member past N - 1 is unrolled by +L). The centre of mass is taken relative to
 // the first member, so a one-body cluster sits exactly on its body.
@@ -67,23 +58,25 @@ std::vector<Cluster> find_clusters(const Bodies& b, double L, const ClusterCrite
   const std::size_t n = b.size();
   std::vector<Cluster> clusters;
   if (n == 0) return clusters;
-  const std::vector<bool> links = neighbour_links(b, L, c);
+  // Whether body i is joined to its right neighbour (ring: the last one to body 0).
+  auto linked = [&](std::size_t i) {
+    if (i + 1 < n) return joined(b, i, i + 1, L, c);
+    return L > 0 && n > 1 && joined(b, n - 1, 0, L, c);
+  };
   // Start at a body whose left neighbour is not joined to it; on a fully linked
   // ring every body is in one cluster, started at body 0.
   std::size_t start = 0;
-  if (L > 0) {
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!links[(i + n - 1) % n]) {
+  if (L > 0)
+    for (std::size_t i = 0; i < n; ++i)
+      if (!linked((i + n - 1) % n)) {
         start = i;
         break;
       }
-    }
-  }
   std::size_t walked = 0;
   while (walked < n) {
     const std::size_t first = (start + walked) % n;
     std::size_t count = 1;
-    while (walked + count < n && links[(first + count - 1) % n]) ++count;
+    while (walked + count < n && linked((first + count - 1) % n)) ++count;
     clusters.push_back(make_cluster(b, L, first, count));
     walked += count;
   }

@@ -9,6 +9,7 @@
 
 #include "chain_observables.hpp"
 #include "chain_view.hpp"
+#include "ring_wrap.hpp"
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
 #include "shockgas/particles/params.hpp"
