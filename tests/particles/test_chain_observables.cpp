@@ -112,8 +112,8 @@ ParticleParams record_everything(double delta) {
 }
 
 // The recorder fed the same state at every stop.
-RunResult record(const Chain& s, const ParticleParams& p) {
-  Recorder recorder(p, s.particles, s.L, p.geometry == "ring");
+RunResult record(const Chain& s, const ParticleParams& p, bool ring) {
+  Recorder recorder(p, s.particles, s.L, ring);
   for (double t = recorder.next_stop(); t != Recorder::done; t = recorder.next_stop())
     recorder.observe(t, view_of(s), Counters{});
   return recorder.finish(view_of(s), RunStop{}, Counters{});
@@ -125,9 +125,8 @@ void expect_bodies_equal(const Bodies& a, const Bodies& b) {
   EXPECT_EQ(a.m, b.m);
 }
 
-void expect_matches_reference(const Chain& s, const ParticleParams& p) {
-  const bool ring = p.geometry == "ring";
-  const RunResult out = record(s, p);
+void expect_matches_reference(const Chain& s, const ParticleParams& p, bool ring) {
+  const RunResult out = record(s, p, ring);
   const ClusterCriteria criteria =
       p.r == 0 && p.delta == 0 ? merged_bodies_criteria()
                                : default_cluster_criteria(p.delta, s.L / static_cast<double>(s.particles));
@@ -198,19 +197,18 @@ TEST(ChainObservables, RandomRingChainsEqualTheSortedCopy) {
   for (std::size_t bodies : {1u, 2u, 3u, 17u, 1000u, 2500u}) {
     for (int trial = 0; trial < 20; ++trial) {
       SCOPED_TRACE("bodies " + std::to_string(bodies) + ", trial " + std::to_string(trial));
-      expect_matches_reference(random_chain(rng, bodies, 0.02, true), record_everything(0.02));
+      expect_matches_reference(random_chain(rng, bodies, 0.02, true), record_everything(0.02), true);
     }
   }
 }
 
 TEST(ChainObservables, RandomLineChainsEqualTheSortedCopy) {
   Rng rng(22);
-  ParticleParams p = record_everything(0.02);
-  p.geometry = "line";
+  const ParticleParams p = record_everything(0.02);
   for (std::size_t bodies : {1u, 2u, 17u, 2500u}) {
     for (int trial = 0; trial < 20; ++trial) {
       SCOPED_TRACE("bodies " + std::to_string(bodies) + ", trial " + std::to_string(trial));
-      expect_matches_reference(random_chain(rng, bodies, 0.02, false), p);
+      expect_matches_reference(random_chain(rng, bodies, 0.02, false), p, false);
     }
   }
 }
@@ -226,8 +224,8 @@ TEST(PeriodWrap, EqualsWrapIntoToTheBit) {
       const double u = rng.uniform();
       // Mostly small steps (a chain), some jumps, some exact multiples of L and their neighbours.
       const double k = std::floor(rng.uniform(-2000.0, 2000.0));
-      x = u < 0.8 ? x + rng.uniform(-0.01, 0.05) * L
-          : u < 0.9 ? rng.uniform(-1e6, 1e6) * L
+      x = u < 0.8    ? x + rng.uniform(-0.01, 0.05) * L
+          : u < 0.9  ? rng.uniform(-1e6, 1e6) * L
           : u < 0.95 ? k * L
                      : std::nextafter(k * L, u < 0.975 ? -1e300 : 1e300);
       const double got = wrap(x), want = wrap_into(x, L);
@@ -262,12 +260,10 @@ TEST(ClusterCounter, EqualsFindClustersOnTheSortedCopy) {
 // sorted copy, as before.
 TEST(ChainObservables, MisorderedChainsFallBackToTheSortedCopy) {
   Rng rng(23);
-  for (const char* geometry : {"ring", "line"}) {
-    ParticleParams p = record_everything(0.02);
-    p.geometry = geometry;
-    const bool ring = p.geometry == "ring";
+  for (bool ring : {true, false}) {
+    const ParticleParams p = record_everything(0.02);
     for (int trial = 0; trial < 20; ++trial) {
-      SCOPED_TRACE(std::string(geometry) + ", trial " + std::to_string(trial));
+      SCOPED_TRACE(std::string(ring ? "ring" : "line") + ", trial " + std::to_string(trial));
       Chain c = random_chain(rng, 300, 0.02, ring);
       // A rounding-sized drop inside the chain, or (ring) across its ends.
       const bool across = ring && trial % 2 == 1;
@@ -280,7 +276,7 @@ TEST(ChainObservables, MisorderedChainsFallBackToTheSortedCopy) {
       if (!ring || ref_wrap(c.x[k], c.L) < ref_wrap(c.x[left], c.L)) {
         EXPECT_FALSE(counter.count().has_value());
       }
-      expect_matches_reference(c, p);
+      expect_matches_reference(c, p, ring);
     }
   }
 }
@@ -291,8 +287,8 @@ TEST(ChainObservables, MergedBodiesAreCountedOneEach) {
   ParticleParams p = record_everything(0.0);
   p.r = 0.0;
   const Chain c = random_chain(rng, 2000, 0.02, true);
-  expect_matches_reference(c, p);
-  EXPECT_EQ(record(c, p).series.n_clusters.back(), 2000.0);
+  expect_matches_reference(c, p, true);
+  EXPECT_EQ(record(c, p, true).series.n_clusters.back(), 2000.0);
 }
 
 // Real states: the engine's snapshots (sorted, wrapped) turned back into chains,
@@ -325,7 +321,7 @@ TEST(ChainObservables, EngineStatesEqualTheSortedCopy) {
         c.m.push_back(b.m[i]);
         c.particles += static_cast<std::size_t>(b.m[i]);  // unit masses merge into integer ones
       }
-      expect_matches_reference(c, record_everything(run.delta));
+      expect_matches_reference(c, record_everything(run.delta), true);
     }
   }
 }
