@@ -6,11 +6,20 @@
 // are pushed left to right as one-body clusters, and while the cluster below the
 // top of the stack would sit to the right of the top one at time t,
 //
-//     x_left(t) > x_right(t),   x(t) = (centre of mass at 0) + t * (mean velocity),
+//     x_left(t) > x_right(t),   x(t) = c0 + t v,  c0 = centre of mass at 0, v = mean velocity,
 //
-// the two merge. x(t) is the slope of a hull edge, so this is exactly the
-// convexity test of the chain, but it compares positions of neighbouring
-// clusters instead of subtracting large cumulative sums S_k. O(N), one pass.
+// the two merge (mass and momentum add). x(t) is the slope of a hull edge, so
+// this is exactly the convexity test of the chain, but it compares positions of
+// neighbouring clusters instead of subtracting large cumulative sums S_k. O(N),
+// one pass; the stack is the runs' own arrays, 20 bytes a run (c0, v, count)
+// when the masses are equal (a run's mass is then m0 count), 28 with masses.
+//
+// Later times. Clusters only merge, so every cluster at a later time t' is a
+// union of consecutive clusters at t: a hull vertex at t' is a vertex at t (an
+// extreme point of the cumulative points stays extreme among a subset holding
+// it). The hull at t' of the clusters at t, each pushed as one body of its mass,
+// momentum and centre of mass, is therefore the hull at t' of the bodies. The
+// stack overwrites the runs it has read: in place.
 //
 // Ties. The merge test is strict: clusters that exactly touch at t (collinear
 // hull points) stay separate; they collide at t and are merged for any later
@@ -18,17 +27,19 @@
 // position. Because exact ties are decided by rounding anyway, this only fixes
 // which of two answers that agree in position to rounding is returned.
 //
-// Ring. After the Galilean shift u -> u - U (U = total momentum / total mass)
-// the periodically unrolled chain (body i + N is body i moved by L) has a
-// periodic hull, and no cluster holds more than N bodies. With
-// s = centre of mass and phi(k) = S_k - s M_k one finds
-// phi(k + N) - phi(k) = L M_k >= 0 and phi(k - N) - phi(k) = L (M - M_k) >= 0,
-// so the minimiser k* of phi over one period is a hull vertex of the infinite
-// chain (a supporting line of slope s touches it). One period is then a line
-// problem: bodies k*, ..., N-1, then 0, ..., k*-1 moved by L. Should rounding in
-// phi pick a point just above the hull, the two runs meeting at the seam
-// overlap; they are merged across it (and cascaded), which restores the hull.
+// Ring. The periodically unrolled chain (body i + N is body i moved by L) has a
+// periodic hull, and no cluster holds more than N bodies. One period, bodies
+// 0 .. N-1, is pushed as a line; every run of that line lies inside one cluster
+// of the ring (its vertices include the ring's, as above), and only the clusters
+// across the period's ends are cut. Closing the ring pools them: while the last
+// run would be to the right of the first one moved by one period, they merge,
+// cascading on both sides; then no two cyclic neighbours overlap, which is the
+// hull. Runs absorbed from the front move the chain's start (origin_) and are
+// counted at x + L inside the last run. The test is Galilean invariant, so no
+// frame (mean velocity) is removed.
 #include "shockgas/core/sticky_hull.hpp"
+
+#include <sys/mman.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,58 +51,25 @@ namespace shockgas {
 
 namespace {
 
-// A cluster: chain positions [first, first + count).
-struct Run {
-  double c0;          // centre of mass at t = 0 (chain coordinates)
-  double v;           // velocity (mass-weighted mean)
-  double m;           // mass
-  std::size_t first;  // chain position of its first body
-  std::size_t count;  // number of bodies
-};
-
-// Whether `left` would be to the right of `right` at time t (strictly).
-bool overlaps(const Run& left, const Run& right, double t) {
-  return left.c0 + t * left.v > right.c0 + t * right.v;
-}
-
-// Perfectly inelastic merge: mass and momentum add.
-Run merged(const Run& left, const Run& right) {
-  const double m = left.m + right.m;
-  return {left.c0 + (right.m / m) * (right.c0 - left.c0), (left.m * left.v + right.m * right.v) / m, m,
-          left.first, left.count + right.count};
-}
-
-// The monotone chain in cluster form; bodies are pushed left to right.
-class HullStack {
- public:
-  HullStack(std::size_t n, double t) : t_(t) { runs_.reserve(n); }
-  void push(double q, double u, double m) {
-    Run top{q, u, m, pushed_++, 1};
-    while (!runs_.empty() && overlaps(runs_.back(), top, t_)) {
-      top = merged(runs_.back(), top);
-      runs_.pop_back();
-    }
-    runs_.push_back(top);
-  }
-  std::vector<Run>& runs() { return runs_; }
-
- private:
-  double t_;
-  std::size_t pushed_ = 0;
-  std::vector<Run> runs_;
-};
-
-void check_bodies(const Bodies& b, double t) {
-  require_in_range("t", t, 0.0, std::numeric_limits<double>::max());
-  require(b.v.size() == b.size() && b.m.size() == b.size(), "bodies", b.size(),
-          "x, v and m of equal length");
+// Throws InputError naming the first bad body; called only when build() found one.
+void check_bodies(const Bodies& b, double L) {
   for (std::size_t i = 0; i < b.size(); ++i) {
     if (!(std::isfinite(b.x[i]) && std::isfinite(b.v[i])))
       throw InputError("bodies.x/v", to_text(b.x[i]) + ", " + to_text(b.v[i]), "finite values");
-    if (!(b.m[i] > 0 && std::isfinite(b.m[i]))) throw InputError("bodies.m", to_text(b.m[i]), "finite masses > 0");
+    if (!(b.m[i] > 0 && std::isfinite(b.m[i])))
+      throw InputError("bodies.m", to_text(b.m[i]), "finite masses > 0");
     if (i > 0 && !(b.x[i] >= b.x[i - 1]))
       throw InputError("bodies.x", to_text(b.x[i]), "positions sorted ascending");
   }
+  require(L == 0 || b.size() == 0 || (b.x.front() >= 0 && b.x.back() < L), "bodies.x", b.x.back(),
+          "positions in [0, L)");
+}
+
+void check_arguments(const Bodies& b, double t) {
+  require_in_range("t", t, 0.0, std::numeric_limits<double>::max());
+  require(b.v.size() == b.size() && b.m.size() == b.size(), "bodies", b.size(), "x, v and m of equal length");
+  require(b.size() <= std::numeric_limits<std::uint32_t>::max(), "bodies", b.size(),
+          "at most 2^32 - 1 bodies");
 }
 
 double wrap(double x, double L) {
@@ -100,76 +78,205 @@ double wrap(double x, double L) {
   return w >= L ? 0.0 : w;
 }
 
-// The start k* of the ring's period: the minimiser of
-// phi(k) = sum_{i<k} m_i (x_i + t u_i - s), s the centre of mass.
-std::size_t seam(const Bodies& b, double U, double t) {
-  const double M = total_mass(b);
-  double s = 0;
-  for (std::size_t i = 0; i < b.size(); ++i) s += b.m[i] * b.x[i] / M;
-  double phi = 0, best = 0;
-  std::size_t at = 0;
-  for (std::size_t k = 0; k < b.size(); ++k) {
-    if (phi < best) best = phi, at = k;
-    phi += b.m[k] * ((b.x[k] - s) + t * (b.v[k] - U));
-  }
-  return at;
+enum class Built { ok, unequal_masses, bad_input };
+
+}  // namespace
+
+StickyHull::StickyHull(std::size_t n, double L, double t, bool masses)
+    : n_(n),
+      L_(L),
+      t_(t),
+      masses_(masses),
+      c0_(std::make_unique_for_overwrite<double[]>(n)),
+      v_(std::make_unique_for_overwrite<double[]>(n)),
+      m_(masses ? std::make_unique_for_overwrite<double[]>(n) : nullptr),
+      count_(std::make_unique_for_overwrite<std::uint32_t[]>(n)) {}
+
+namespace {
+
+// Makes [from, to) elements of `base` resident in one system call, ahead of
+// their first writes: a page fault per 4 KiB costs about as much as the hull's
+// own work on the 200 runs it holds. A hint: where unsupported, pages fault in.
+void prefault(void* base, std::size_t from, std::size_t to, std::size_t size) {
+#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
+  constexpr std::uintptr_t page = 4096;
+  const auto address = reinterpret_cast<std::uintptr_t>(base);
+  const std::uintptr_t a = (address + from * size) / page * page;
+  const std::uintptr_t e = (address + to * size + page - 1) / page * page;
+  madvise(reinterpret_cast<void*>(a), e - a, MADV_POPULATE_WRITE);
+#else
+  (void)base, (void)from, (void)to, (void)size;
+#endif
 }
 
-// Merges runs across the seam while the last one (chain end) would be to the
-// right of the first one moved by one period; cascades on both sides.
-void close_ring(std::vector<Run>& runs, double L, double t) {
-  std::size_t front = 0;
-  auto shifted = [&](const Run& r) { return Run{r.c0 + L, r.v, r.m, r.first, r.count}; };
-  for (;;) {
-    if (runs.size() - front >= 2 && overlaps(runs.back(), shifted(runs[front]), t)) {
-      runs.back() = merged(runs.back(), shifted(runs[front]));
-      ++front;
-    } else if (runs.size() - front >= 2 && overlaps(runs[runs.size() - 2], runs.back(), t)) {
-      runs[runs.size() - 2] = merged(runs[runs.size() - 2], runs.back());
-      runs.pop_back();
+// The stack of runs [0, top) over the hull's arrays, with the top's position at
+// t kept in a register. Without masses, a run's weight is its count. Runs below
+// `ready` are resident; reserve() makes room for a block of pushes (each adds at
+// most one run) in steps of 2^14 runs: only the depth reached is resident.
+template <bool Masses>
+struct Stack {
+  static constexpr std::size_t step = std::size_t{1} << 14;
+  double* c0;
+  double* v;
+  double* m;
+  std::uint32_t* count;
+  double t;
+  std::size_t capacity;
+  std::size_t ready = 0;
+  std::size_t top = 0;
+  double top_x = -std::numeric_limits<double>::infinity();  // -inf: empty
+
+  // Pushes a cluster (centre of mass c at t = 0, velocity u, weight w, k
+  // bodies), merging while the run below would be to the right of it at t.
+  void push(double c, double u, double w, std::uint32_t k) {
+    double x = c + t * u;
+    while (top_x > x) {
+      const std::size_t b = top - 1;
+      const double total = (Masses ? m[b] : static_cast<double>(count[b])) + w;
+      const double share = w / total;
+      c = c0[b] + share * (c - c0[b]);
+      u = v[b] + share * (u - v[b]);
+      w = total;
+      k += count[b];
+      x = c + t * u;
+      top = b;
+      top_x = top > 0 ? c0[top - 1] + t * v[top - 1] : -std::numeric_limits<double>::infinity();
+    }
+    c0[top] = c, v[top] = u, count[top] = k;
+    if constexpr (Masses) m[top] = w;
+    ++top;
+    top_x = x;
+  }
+
+  // Makes room for `pushes` more pushes.
+  void reserve(std::size_t pushes) {
+    if (top + pushes <= ready) return;
+    const std::size_t to = std::min(capacity, std::max(top + pushes, ready + step));
+    prefault(c0, ready, to, sizeof(double));
+    prefault(v, ready, to, sizeof(double));
+    prefault(count, ready, to, sizeof(std::uint32_t));
+    if constexpr (Masses) prefault(m, ready, to, sizeof(double));
+    ready = to;
+  }
+};
+
+}  // namespace
+
+// One pass over the bodies, room made per block of 4096. Validity is folded into
+// it (branch-free) and judged at the end: x_i >= x_{i-1} for all i and finite
+// ends make every x finite. Unequal masses: false, and the caller starts again.
+template <bool Masses>
+bool StickyHull::build(const Bodies& initial) {
+  const double* x = initial.x.data();
+  const double* v = initial.v.data();
+  const double* m = initial.m.data();
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double m0 = m0_ = n_ > 0 ? m[0] : 1.0;
+  bool valid = m0 > 0 && m0 < inf;
+  double previous = -inf;
+  Stack<Masses> stack{c0_.get(), v_.get(), m_.get(), count_.get(), t_, n_};
+  constexpr std::size_t block = 4096;
+  for (std::size_t begin = 0; begin < n_; begin += block) {
+    const std::size_t end = std::min(n_, begin + block);
+    stack.reserve(end - begin);
+    for (std::size_t i = begin; i < end; ++i) {
+      if (!Masses && m[i] != m0) return false;
+      valid &= (x[i] >= previous) & (std::abs(v[i]) < inf);
+      if constexpr (Masses) valid &= (m[i] > 0) & (m[i] < inf);
+      previous = x[i];
+      stack.push(x[i], v[i], Masses ? m[i] : 1.0, 1);
+    }
+  }
+  if (n_ > 0) valid &= x[0] > -inf && x[n_ - 1] < inf && (L_ == 0 || (x[0] >= 0 && x[n_ - 1] < L_));
+  if (!valid) check_bodies(initial, L_);
+  end_ = stack.top;
+  if (L_ > 0) close_ring();
+  return true;
+}
+
+template <bool Masses>
+void StickyHull::pool_runs() {
+  Stack<Masses> stack{c0_.get(), v_.get(), m_.get(), count_.get(), t_, n_, end_};  // in place: resident
+  for (std::size_t r = begin_; r < end_; ++r)
+    stack.push(c0_[r], v_[r], Masses ? m_[r] : static_cast<double>(count_[r]), count_[r]);
+  begin_ = 0;
+  end_ = stack.top;
+}
+
+void StickyHull::close_ring() {
+  // Run `right` (its centre counted at + shift) joins run `left`.
+  auto merge = [&](std::size_t left, std::size_t right, double shift) {
+    const double ml = masses_ ? m_[left] : static_cast<double>(count_[left]);
+    const double mr = masses_ ? m_[right] : static_cast<double>(count_[right]);
+    const double share = mr / (ml + mr);
+    c0_[left] = c0_[left] + share * ((c0_[right] + shift) - c0_[left]);
+    v_[left] = v_[left] + share * (v_[right] - v_[left]);
+    if (masses_) m_[left] = ml + mr;
+    count_[left] += count_[right];
+  };
+  auto overlaps = [&](std::size_t left, std::size_t right, double shift) {
+    return c0_[left] + t_ * v_[left] > (c0_[right] + shift) + t_ * v_[right];
+  };
+  std::size_t front = begin_;
+  while (end_ - front >= 2) {
+    const std::size_t back = end_ - 1;
+    if (overlaps(back, front, L_)) {
+      merge(back, front, L_);
+      origin_ += count_[front++];
+    } else if (overlaps(back - 1, back, 0.0)) {
+      merge(back - 1, back, 0.0);
+      --end_;
     } else {
       break;
     }
   }
-  runs.erase(runs.begin(), runs.begin() + static_cast<std::ptrdiff_t>(front));
+  begin_ = front;
+  origin_ %= std::max<std::size_t>(n_, 1);
 }
 
-}  // namespace
+StickyHull StickyHull::line(const Bodies& initial, double t) { return make(initial, 0.0, t); }
+
+StickyHull StickyHull::ring(const Bodies& initial, double L, double t) {
+  require_above("L", L, 0.0);
+  return make(initial, L, t);
+}
+
+StickyHull StickyHull::make(const Bodies& initial, double L, double t) {
+  check_arguments(initial, t);
+  StickyHull h(initial.size(), L, t, false);
+  if (!h.build<false>(initial)) {
+    h = StickyHull(initial.size(), L, t, true);
+    h.build<true>(initial);
+  }
+  return h;
+}
+
+void StickyHull::advance(double t) {
+  require(std::isfinite(t) && t >= t_, "t", t, "a finite time >= the hull's time " + to_text(t_));
+  t_ = t;
+  masses_ ? pool_runs<true>() : pool_runs<false>();
+  if (L_ > 0) close_ring();
+}
+
+std::vector<StickyCluster> StickyHull::clusters() const {
+  std::vector<StickyCluster> out;
+  out.reserve(size());
+  for_each([&](StickyCluster c) {
+    if (L_ > 0) c.x = wrap(c.x, L_);
+    out.push_back(c);
+  });
+  // The ring's period is in cyclic order of x; rotate it so that x ascends.
+  auto by_x = [](const StickyCluster& a, const StickyCluster& b) { return a.x < b.x; };
+  std::rotate(out.begin(), std::min_element(out.begin(), out.end(), by_x), out.end());
+  return out;
+}
 
 std::vector<StickyCluster> sticky_clusters_line(const Bodies& initial, double t) {
-  check_bodies(initial, t);
-  HullStack hull(initial.size(), t);
-  for (std::size_t i = 0; i < initial.size(); ++i) hull.push(initial.x[i], initial.v[i], initial.m[i]);
-  std::vector<StickyCluster> out;
-  out.reserve(hull.runs().size());
-  for (const Run& r : hull.runs()) out.push_back({r.c0 + t * r.v, r.v, r.m, r.first, r.count});
-  return out;
+  return StickyHull::line(initial, t).clusters();
 }
 
 std::vector<StickyCluster> sticky_clusters_ring(const Bodies& initial, double L, double t) {
-  check_bodies(initial, t);
-  require_above("L", L, 0.0);
-  const std::size_t n = initial.size();
-  if (n == 0) return {};
-  require(initial.x.front() >= 0 && initial.x.back() < L, "bodies.x", initial.x.back(),
-          "positions in [0, L)");
-  const double U = total_momentum(initial) / total_mass(initial);
-  const std::size_t k0 = seam(initial, U, t);
-  HullStack hull(n, t);
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = k0 + k < n ? k0 + k : k0 + k - n;
-    hull.push(initial.x[i] + (k0 + k < n ? 0.0 : L), initial.v[i] - U, initial.m[i]);
-  }
-  close_ring(hull.runs(), L, t);
-  std::vector<StickyCluster> out;
-  out.reserve(hull.runs().size());
-  for (const Run& r : hull.runs())
-    out.push_back({wrap(r.c0 + t * r.v + U * t, L), r.v + U, r.m, (k0 + r.first) % n, r.count});
-  // The period is in cyclic order of x; rotate it so that x ascends.
-  auto lowest = std::min_element(out.begin(), out.end(),
-                                 [](const StickyCluster& a, const StickyCluster& b) { return a.x < b.x; });
-  std::rotate(out.begin(), lowest, out.end());
-  return out;
+  return StickyHull::ring(initial, L, t).clusters();
 }
 
 Bodies to_bodies(const std::vector<StickyCluster>& clusters) {

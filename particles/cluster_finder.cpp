@@ -24,16 +24,7 @@ void validate_input(const Bodies& b, double L, const ClusterCriteria& c) {
 // Whether bodies i and j = i + 1 (ring: j = 0 after N - 1) belong to one cluster.
 bool joined(const Bodies& b, std::size_t i, std::size_t j, double L, const ClusterCriteria& c) {
   const double gap = j > i ? b.x[j] - b.x[i] : b.x[j] + L - b.x[i];
-  return gap < c.max_gap && std::abs(b.v[j] - b.v[i]) < c.max_dv;
-}
-
-// links[i]: body i is joined to its right neighbour (ring: the last one to body 0).
-std::vector<bool> neighbour_links(const Bodies& b, double L, const ClusterCriteria& c) {
-  const std::size_t n = b.size();
-  std::vector<bool> links(n, false);
-  for (std::size_t i = 0; i + 1 < n; ++i) links[i] = joined(b, i, i + 1, L, c);
-  if (L > 0 && n > 1) links[n - 1] = joined(b, n - 1, 0, L, c);
-  return links;
+  return c.joins(gap, b.v[j] - b.v[i]);
 }
 
 // The cluster of `count` bodies starting at `first` (indices taken mod N; a
@@ -67,23 +58,25 @@ std::vector<Cluster> find_clusters(const Bodies& b, double L, const ClusterCrite
   const std::size_t n = b.size();
   std::vector<Cluster> clusters;
   if (n == 0) return clusters;
-  const std::vector<bool> links = neighbour_links(b, L, c);
+  // Whether body i is joined to its right neighbour (ring: the last one to body 0).
+  auto linked = [&](std::size_t i) {
+    if (i + 1 < n) return joined(b, i, i + 1, L, c);
+    return L > 0 && n > 1 && joined(b, n - 1, 0, L, c);
+  };
   // Start at a body whose left neighbour is not joined to it; on a fully linked
   // ring every body is in one cluster, started at body 0.
   std::size_t start = 0;
-  if (L > 0) {
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!links[(i + n - 1) % n]) {
+  if (L > 0)
+    for (std::size_t i = 0; i < n; ++i)
+      if (!linked((i + n - 1) % n)) {
         start = i;
         break;
       }
-    }
-  }
   std::size_t walked = 0;
   while (walked < n) {
     const std::size_t first = (start + walked) % n;
     std::size_t count = 1;
-    while (walked + count < n && links[(first + count - 1) % n]) ++count;
+    while (walked + count < n && linked((first + count - 1) % n)) ++count;
     clusters.push_back(make_cluster(b, L, first, count));
     walked += count;
   }

@@ -1,7 +1,7 @@
 #include "hull_model.hpp"
 
-#include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "recorder.hpp"
 #include "shockgas/core/sticky_hull.hpp"
@@ -10,23 +10,17 @@ namespace shockgas::particles::detail {
 
 namespace {
 
-// The clusters at time t in chain order (by first particle).
-ChainState hull_state(const Bodies& initial, double L, bool ring, double t) {
-  std::vector<StickyCluster> c =
-      ring ? sticky_clusters_ring(initial, L, t) : sticky_clusters_line(initial, t);
-  const std::size_t n = initial.size();
-  for (StickyCluster& k : c) k.first %= n;
-  std::sort(c.begin(), c.end(),
-            [](const StickyCluster& a, const StickyCluster& b) { return a.first < b.first; });
-  ChainState s;
-  for (const StickyCluster& k : c) s.push_back(k.first, k.x, k.v, k.m);
-  return s;
+// The hull's clusters as the recorder reads them, in chain order (x unrolled on a ring).
+auto chain_view(const StickyHull& hull) {
+  return make_chain_view(hull.size(), [&hull](auto&& f) {
+    hull.for_each([&](const StickyCluster& c) { f(c.first, c.x, c.v, c.m); });
+  });
 }
 
-Counters hull_counters(std::size_t n, double initial_energy, const ChainState& s) {
+Counters hull_counters(double initial_energy, const StickyHull& hull) {
   double energy = 0;
-  for (std::size_t b = 0; b < s.v.size(); ++b) energy += 0.5 * s.m[b] * s.v[b] * s.v[b];
-  const std::uint64_t merges = n - s.x.size();
+  hull.for_each([&](const StickyCluster& c) { energy += 0.5 * c.m * c.v * c.v; });
+  const std::uint64_t merges = hull.bodies() - hull.size();
   return {merges, 0, 0, merges, initial_energy - energy};
 }
 
@@ -34,16 +28,24 @@ Counters hull_counters(std::size_t n, double initial_energy, const ChainState& s
 
 RunResult simulate_hull(const Bodies& initial, double L, bool ring, const ParticleParams& p) {
   const auto start = std::chrono::steady_clock::now();
-  const std::size_t n = initial.size();
   const double energy = kinetic_energy(initial);
-  Recorder recorder(p, n, L, ring);
+  Recorder recorder(p, initial.size(), L, ring);
+  // Built from the bodies at the first stop, then advanced from its own clusters.
+  std::optional<StickyHull> hull;
+  auto reach = [&](double t) -> const StickyHull& {
+    if (!hull)
+      hull.emplace(ring ? StickyHull::ring(initial, L, t) : StickyHull::line(initial, t));
+    else if (hull->time() != t)
+      hull->advance(t);
+    return *hull;
+  };
   for (double t = recorder.next_stop(); t != Recorder::done; t = recorder.next_stop()) {
-    const ChainState s = hull_state(initial, L, ring, t);
-    recorder.observe(t, s, hull_counters(n, energy, s));
+    const StickyHull& h = reach(t);
+    recorder.observe(t, chain_view(h), hull_counters(energy, h));
   }
-  const ChainState final_state = hull_state(initial, L, ring, p.t_end);
-  RunResult out = recorder.finish(final_state, {StopReason::completed, p.t_end, 0.0},
-                                  hull_counters(n, energy, final_state));
+  const StickyHull& final_state = reach(p.t_end);
+  RunResult out = recorder.finish(chain_view(final_state), {StopReason::completed, p.t_end, 0.0},
+                                  hull_counters(energy, final_state));
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // The exact sticky gas as a model (particles.solver = hull, r = 0): the
 // observables of RunResult from the lower-convex-hull solution at each stop
-// time (core/sticky_hull.hpp), without simulating events. Private to particles/.
+// time (core/sticky_hull.hpp), without simulating events: built from the bodies
+// at the first stop, then advanced from its own clusters (they only merge), one
+// pass over the clusters per stop. Private to particles/.
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"

@@ -1,29 +1,13 @@
 #include "recorder.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace shockgas::particles::detail {
 
 namespace {
-
-double wrap_into(double x, double L) {
-  double w = x - L * std::floor(x / L);
-  return w >= L || w < 0 ? 0.0 : w;
-}
-
-// Mass-weighted mean velocity and temperature <v^2> - <v>^2 (two passes: no
-// cancellation).
-std::pair<double, double> mean_and_temperature(const ChainState& s) {
-  double mass = 0, momentum = 0;
-  for (std::size_t b = 0; b < s.v.size(); ++b) mass += s.m[b], momentum += s.m[b] * s.v[b];
-  const double mean = momentum / mass;
-  double T = 0;
-  for (std::size_t b = 0; b < s.v.size(); ++b) T += s.m[b] * (s.v[b] - mean) * (s.v[b] - mean);
-  return {mean, T / mass};
-}
 
 std::vector<double> sorted_copy(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -37,28 +21,41 @@ std::vector<double> frame_times(double t_end, std::size_t frames) {
   return t;
 }
 
+// Index of the first body whose wrapped position drops below its left neighbour's (0 if none).
+std::size_t seam_of(const std::vector<double>& x) {
+  for (std::size_t b = 1; b < x.size(); ++b)
+    if (x[b] < x[b - 1]) return b;
+  return 0;
+}
+
+// b reordered by a stable sort on x (rounding at the wrap can leave equal
+// neighbours misordered).
+Bodies stable_sorted(const Bodies& b) {
+  std::vector<std::size_t> order(b.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return b.x[i] < b.x[j]; });
+  Bodies out;
+  out.reserve(b.size());
+  for (std::size_t k : order) out.push_back(b.x[k], b.v[k], b.m[k]);
+  return out;
+}
+
 }  // namespace
 
-Bodies sorted_bodies(const ChainState& s, double L, bool ring) {
-  const std::size_t n = s.x.size();
-  std::vector<double> x = s.x;
-  std::size_t start = 0;
-  if (ring) {
-    for (double& xi : x) xi = wrap_into(xi, L);
-    for (std::size_t b = 1; b < n; ++b)
-      if (x[b] < x[b - 1]) {
-        start = b;
-        break;
-      }
-  }
-  std::vector<std::size_t> order(n);
-  for (std::size_t k = 0; k < n; ++k) order[k] = (start + k) % n;
-  // Rounding at the wrap can leave equal neighbours misordered: sort to be sure.
-  auto by_x = [&](std::size_t a, std::size_t b) { return x[a] < x[b]; };
-  if (!std::is_sorted(order.begin(), order.end(), by_x)) std::stable_sort(order.begin(), order.end(), by_x);
+Bodies sorted_bodies(const ChainView& s, double L, bool ring) {
   Bodies out;
-  out.reserve(n);
-  for (std::size_t k : order) out.push_back(x[k], s.v[k], s.m[k]);
+  out.reserve(s.size());
+  s.visit(
+      [&](const ChainChunk& c) {
+        for (std::size_t k = 0; k < c.size; ++k)
+          out.push_back(ring ? wrap_into(c.x[k], L) : c.x[k], c.v[k], c.m[k]);
+      },
+      Fields::all);
+  // The chain is sorted but for the ring's seam: rotate the seam to the front.
+  const auto start = static_cast<std::ptrdiff_t>(ring ? seam_of(out.x) : 0);
+  for (std::vector<double>* a : {&out.x, &out.v, &out.m})
+    std::rotate(a->begin(), a->begin() + start, a->end());
+  if (!std::is_sorted(out.x.begin(), out.x.end())) return stable_sorted(out);
   return out;
 }
 
@@ -94,70 +91,81 @@ double Recorder::next_stop() const {
   return t;
 }
 
-void Recorder::observe(double t, const ChainState& s, const Counters& c) {
-  const bool want_sample = next_sample_ < samples_.size() && samples_[next_sample_] <= t;
-  const bool want_snapshot = next_snapshot_ < snapshots_.size() && snapshots_[next_snapshot_] <= t;
-  Bodies sorted;
-  if ((want_sample && p_.clusters) || want_snapshot) sorted = sorted_bodies(s, L_, ring_);
-  for (; next_sample_ < samples_.size() && samples_[next_sample_] <= t; ++next_sample_)
-    sample(t, s, sorted, c);
-  for (; next_snapshot_ < snapshots_.size() && snapshots_[next_snapshot_] <= t; ++next_snapshot_)
-    out_.snapshots.push_back({t, sorted});
+void Recorder::observe(double t, const ChainView& s, const Counters& c) {
+  std::size_t samples = 0, snapshots = 0;
+  for (; next_sample_ < samples_.size() && samples_[next_sample_] <= t; ++next_sample_) ++samples;
+  for (; next_snapshot_ < snapshots_.size() && snapshots_[next_snapshot_] <= t; ++next_snapshot_) ++snapshots;
+  if (samples > 0) sample(t, s, c, samples);
+  if (snapshots > 0) {
+    const Bodies sorted = sorted_bodies(s, L_, ring_);
+    for (std::size_t k = 0; k < snapshots; ++k) out_.snapshots.push_back({t, sorted});
+  }
   for (; next_frame_ < frames_.size() && frames_[next_frame_] <= t; ++next_frame_) frame(t, s);
 }
 
-void Recorder::sample(double t, const ChainState& s, const Bodies& sorted, const Counters& c) {
+// Every sample due at t records the same values: they are measured once.
+void Recorder::sample(double t, const ChainView& s, const Counters& c, std::size_t copies) {
+  std::optional<ClusterCounter> counter;
+  if (p_.clusters) counter.emplace(L_, ring_, criteria_);
+  const ChainMoments moments = chain_moments(s, counter ? &*counter : nullptr);
+  const HistogramSpec spec{p_.histogram_bins, p_.histogram_zmax, std::cbrt(t)};
+  std::vector<double> row;
+  const double T = chain_temperature(s, moments, spec, spec.bins > 0 ? &row : nullptr);
+  const double clusters = counter ? static_cast<double>(count_clusters(s, *counter)) : 0.0;
   TimeSeries& ts = out_.series;
-  const auto [mean, T] = mean_and_temperature(s);
-  ts.t.push_back(t);
-  ts.T.push_back(T);
-  ts.mean_v.push_back(mean);
-  ts.n_bodies.push_back(static_cast<double>(s.x.size()));
-  if (p_.clusters)
-    ts.n_clusters.push_back(static_cast<double>(find_clusters(sorted, ring_ ? L_ : 0.0, criteria_).size()));
-  ts.collisions.push_back(static_cast<double>(c.all));
-  ts.inelastic.push_back(static_cast<double>(c.inelastic));
-  ts.elastic.push_back(static_cast<double>(c.elastic));
-  ts.merges.push_back(static_cast<double>(c.merges));
-  ts.dissipated.push_back(c.dissipated);
-  if (p_.histogram_bins > 0) histogram(t, s);
-}
-
-void Recorder::histogram(double t, const ChainState& s) {
-  ScaledHistogram& h = out_.histogram;
-  const std::size_t bins = h.bins;
-  const double dz = 2 * h.zmax / static_cast<double>(bins);
-  const auto [mean, T] = mean_and_temperature(s);
-  const double mass = std::accumulate(s.m.begin(), s.m.end(), 0.0);
-  const double scale = std::cbrt(t);
-  h.t.push_back(t);
-  h.density.resize(h.density.size() + bins, 0.0);
-  double* row = h.density.data() + h.density.size() - bins;
-  for (std::size_t b = 0; b < s.v.size(); ++b) {
-    const double bin = std::floor(((s.v[b] - mean) * scale + h.zmax) / dz);
-    if (bin >= 0 && bin < static_cast<double>(bins))
-      row[static_cast<std::size_t>(bin)] += s.m[b] / (mass * dz);
+  for (std::size_t k = 0; k < copies; ++k) {
+    ts.t.push_back(t);
+    ts.T.push_back(T);
+    ts.mean_v.push_back(moments.mean());
+    ts.n_bodies.push_back(static_cast<double>(s.size()));
+    if (counter) ts.n_clusters.push_back(clusters);
+    ts.collisions.push_back(static_cast<double>(c.all));
+    ts.inelastic.push_back(static_cast<double>(c.inelastic));
+    ts.elastic.push_back(static_cast<double>(c.elastic));
+    ts.merges.push_back(static_cast<double>(c.merges));
+    ts.dissipated.push_back(c.dissipated);
+    if (spec.bins == 0) continue;
+    out_.histogram.t.push_back(t);
+    out_.histogram.density.insert(out_.histogram.density.end(), row.begin(), row.end());
   }
 }
 
-void Recorder::frame(double t, const ChainState& s) {
+// The streamed count, or (rounding left the chain out of order) the count of the sorted copy.
+std::size_t Recorder::count_clusters(const ChainView& s, ClusterCounter& counter) const {
+  if (const std::optional<std::size_t> n = counter.count()) return *n;
+  return find_clusters(sorted_bodies(s, L_, ring_), ring_ ? L_ : 0.0, criteria_).size();
+}
+
+// Each original particle at its body's position: body b holds first[b] ..
+// first[b+1]-1, the last body the rest up to n and (ring) those before first[0].
+void Recorder::frame(double t, const ChainView& s) {
   SpaceTime& st = out_.spacetime;
   st.t.push_back(t);
   const std::size_t base = st.x.size();
   st.x.resize(base + n_);
-  const std::size_t bodies = s.x.size();
-  for (std::size_t b = 0; b < bodies; ++b) {
-    const std::size_t end = b + 1 < bodies ? s.first[b + 1] : n_;
-    const double x = ring_ ? wrap(s.x[b]) : s.x[b];
-    for (std::size_t k = s.first[b]; k < end; ++k) st.x[base + k] = x;
-  }
-  // Ring: the particles before the first body's belong to the last body.
-  for (std::size_t k = 0; k < s.first.front(); ++k) st.x[base + k] = wrap(s.x.back());
+  double* row = st.x.data() + base;
+  std::size_t first = 0, pending = 0;
+  bool started = false;
+  double x = 0;
+  s.visit(
+      [&](const ChainChunk& c) {
+        for (std::size_t k = 0; k < c.size; ++k) {
+          if (started)
+            std::fill(row + pending, row + c.first[k], x);  // the previous body's particles
+          else
+            first = c.first[k], started = true;
+          pending = c.first[k];
+          x = wrap(c.x[k]);
+        }
+      },
+      Fields::all);
+  std::fill(row + pending, row + n_, x);
+  std::fill(row, row + first, x);
 }
 
 double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }
 
-RunResult Recorder::finish(const ChainState& final_state, const RunStop& stop, const Counters& c) {
+RunResult Recorder::finish(const ChainView& final_state, const RunStop& stop, const Counters& c) {
   out_.final_state = sorted_bodies(final_state, L_, ring_);
   out_.stop = stop;
   out_.stop.position =

@@ -7,28 +7,15 @@
 #include <limits>
 #include <vector>
 
+#include "chain_observables.hpp"
+#include "chain_view.hpp"
+#include "ring_wrap.hpp"
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
 
 namespace shockgas::particles::detail {
-
-// The live bodies in chain order (increasing index of their first particle).
-// first[b]: index of the first original particle of body b; body b holds the
-// particles first[b] .. first[b+1]-1, the last body also those before first[0]
-// (ring). x unrolled or wrapped, either.
-struct ChainState {
-  std::vector<double> x, v, m;
-  std::vector<std::size_t> first;
-  void reserve(std::size_t n) { x.reserve(n), v.reserve(n), m.reserve(n), first.reserve(n); }
-  void push_back(std::size_t f, double xi, double vi, double mi) {
-    first.push_back(f);
-    x.push_back(xi);
-    v.push_back(vi);
-    m.push_back(mi);
-  }
-};
 
 // Cumulative collision counters at a stop.
 struct Counters {
@@ -37,7 +24,7 @@ struct Counters {
 };
 
 // The state as Bodies sorted by x, ring positions wrapped into [0, L).
-Bodies sorted_bodies(const ChainState& s, double L, bool ring);
+Bodies sorted_bodies(const ChainView& s, double L, bool ring);
 
 // Sample times: `samples` log-spaced times from 1 to t_end (from t_end / 1000 if
 // t_end <= 1); just t_end if samples = 1. The last is t_end exactly.
@@ -52,15 +39,15 @@ class Recorder {
 
   // The next time the run must reach and observe; `done` after the last.
   double next_stop() const;
-  // Observes every record due at t = next_stop().
-  void observe(double t, const ChainState& s, const Counters& c);
+  // Observes every record due at t = next_stop(); each observable only if asked.
+  void observe(double t, const ChainView& s, const Counters& c);
   // Moves the records out, with the final state and how the run ended.
-  RunResult finish(const ChainState& final_state, const RunStop& stop, const Counters& c);
+  RunResult finish(const ChainView& final_state, const RunStop& stop, const Counters& c);
 
  private:
-  void sample(double t, const ChainState& s, const Bodies& sorted, const Counters& c);
-  void histogram(double t, const ChainState& s);
-  void frame(double t, const ChainState& s);
+  void sample(double t, const ChainView& s, const Counters& c, std::size_t copies);
+  std::size_t count_clusters(const ChainView& s, ClusterCounter& counter) const;
+  void frame(double t, const ChainView& s);
   double wrap(double x) const;
 
   const ParticleParams& p_;

@@ -82,12 +82,10 @@ struct Watch {
   }
 };
 
+// The engine's live bodies at time t as the recorder reads them: streamed, not copied.
 template <bool Linked>
-detail::ChainState chain_state(const detail::EventEngine<Linked>& engine, double t) {
-  detail::ChainState s;
-  s.reserve(engine.alive());
-  engine.for_each_body(t, [&](std::size_t i, double x, double v, double m) { s.push_back(i, x, v, m); });
-  return s;
+auto chain_view(const detail::EventEngine<Linked>& engine, double t) {
+  return detail::make_chain_view(engine.alive(), [&engine, t](auto&& f) { engine.for_each_body(t, f); });
 }
 
 template <bool Linked>
@@ -129,10 +127,10 @@ RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleP
     if (s == detail::EngineStop::stall) stop = {StopReason::stall, engine.now(), engine.last_position()};
     if (s == detail::EngineStop::halted) stop = {watch.reason, engine.now(), 0.0};
     if (s != detail::EngineStop::reached) break;
-    recorder.observe(t, chain_state(engine, t), counters(engine));
+    recorder.observe(t, chain_view(engine, t), counters(engine));
   }
   if (stop.reason == StopReason::completed) stop.time = engine.now();
-  RunResult out = recorder.finish(chain_state(engine, engine.now()), stop, counters(engine));
+  RunResult out = recorder.finish(chain_view(engine, engine.now()), stop, counters(engine));
   out.wall_seconds = watch.elapsed();
   return out;
 }

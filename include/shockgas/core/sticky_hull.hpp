@@ -1,6 +1,6 @@
 #pragma once
 // The exact sticky-particle (adhesion) solution by the lower convex hull.
-// API fixed here; implemented in core/sticky_hull.cpp.
+// Implemented in core/sticky_hull.cpp.
 //
 // For point masses m_i at q_i with velocities u_i on a line, the state of the
 // perfectly inelastic (merging) gas at time t is given by the lower convex hull
@@ -8,8 +8,12 @@
 // S_k = sum_{i<=k} m_i (q_i + t u_i): each hull edge is one cluster, its mass
 // the edge's run of M, its position S-increment / mass-increment and its
 // velocity the mass-weighted mean of its members (E, Rykov & Sinai 1996;
-// Brenier & Grenier 1998).
+// Brenier & Grenier 1998). Clusters only merge: the partition at a later time
+// coarsens the one at an earlier time, so the later state is the hull of the
+// earlier clusters taken as bodies (StickyHull::advance).
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "shockgas/core/bodies.hpp"
@@ -24,14 +28,75 @@ struct StickyCluster {
   std::size_t count = 0;  // number of initial bodies in it
 };
 
+// The clusters of a sticky gas at one time, in chain order, kept as runs of
+// (centre of mass at t = 0, velocity, number of bodies) and, for unequal masses,
+// the mass: 20 bytes per cluster (28 with unequal masses), no copy of the bodies.
+// Building costs one pass over the bodies; advancing to a later time one pass
+// over the clusters, in place.
+//
+//   StickyHull h = StickyHull::ring(initial, L, 1.0);
+//   h.advance(10.0);                                   // = StickyHull::ring(initial, L, 10.0)
+//   h.for_each([](const StickyCluster& c) { ... });    // chain order
+class StickyHull {
+ public:
+  // The clusters at time t >= 0 of `initial` (sorted by x) on an open line.
+  // Throws InputError for t < 0, unsorted or non-finite positions, masses <= 0,
+  // or more than 2^32 - 1 bodies.
+  static StickyHull line(const Bodies& initial, double t);
+  // The same on a ring of length L > 0 (positions in [0, L)).
+  static StickyHull ring(const Bodies& initial, double L, double t);
+
+  // The clusters at time t >= time(). Throws InputError for t < time().
+  void advance(double t);
+
+  double time() const { return t_; }
+  std::size_t size() const { return end_ - begin_; }  // clusters
+  std::size_t bodies() const { return n_; }
+  // Bytes each cluster occupies while it is held.
+  std::size_t bytes_per_cluster() const { return masses_ ? 28 : 20; }
+
+  // Visits the clusters in chain order: f(const StickyCluster&), first running
+  // from the lowest index; on a ring the last cluster may wrap past N - 1 and
+  // its x is then unrolled (in [0, 2L)); else x is the position at time().
+  template <class F>
+  void for_each(F&& f) const {
+    std::size_t first = origin_;
+    for (std::size_t k = begin_; k < end_; ++k) {
+      f(StickyCluster{c0_[k] + t_ * v_[k], v_[k], mass(k), first, count_[k]});
+      first += count_[k];
+      if (first >= n_) first -= n_;
+    }
+  }
+
+  // The clusters sorted by x (ring: wrapped into [0, L)).
+  std::vector<StickyCluster> clusters() const;
+
+ private:
+  StickyHull(std::size_t n, double L, double t, bool masses);
+  static StickyHull make(const Bodies& initial, double L, double t);  // L = 0: line
+  template <bool Masses>
+  bool build(const Bodies& initial);
+  template <bool Masses>
+  void pool_runs();
+  void close_ring();
+  double mass(std::size_t k) const { return masses_ ? m_[k] : m0_ * count_[k]; }
+
+  std::size_t n_;
+  double L_;  // ring length; 0 = open line
+  double t_;
+  bool masses_;    // masses differ: m_ holds them
+  double m0_ = 0;  // the mass of every body, if they are equal
+  std::size_t origin_ = 0, begin_ = 0,
+              end_ = 0;                     // index of the first body of run begin_; runs [begin_, end_)
+  std::unique_ptr<double[]> c0_, v_, m_;    // centre of mass at t = 0 (unrolled), velocity, mass
+  std::unique_ptr<std::uint32_t[]> count_;  // bodies per run
+};
+
 // Exact state at time t >= 0 of merging point masses on an open line.
-// initial must be sorted by x. O(N).
+// initial must be sorted by x. O(N). Clusters sorted by x.
 std::vector<StickyCluster> sticky_clusters_line(const Bodies& initial, double t);
 
-// The same on a ring of length L (initial positions in [0, L), sorted). The mean
-// velocity is removed by a Galilean shift, the chain is unrolled periodically and
-// the hull of the unrolled chain gives the clusters: one period of it, starting at
-// a vertex found by a supporting line (see core/sticky_hull.cpp). O(N).
+// The same on a ring of length L (initial positions in [0, L), sorted). O(N).
 // Clusters are returned sorted by x; `first` + `count` may pass N - 1 (wrap).
 //
 // Both: clusters that exactly touch at t are not merged (they are from any later

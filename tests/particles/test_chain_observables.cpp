@@ -1,0 +1,330 @@
+// The observables streamed over the chain against the path they replace, kept
+// here as the reference: copy the state, wrap it, rotate and sort it
+// (sorted_bodies), run find_clusters on the copy and sum over the copy. Equal to
+// the bit: same sums in the same order, same cluster criteria on the same numbers.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+
+#include "chain_observables.hpp"
+#include "recorder.hpp"
+#include "shockgas/core/initial_condition.hpp"
+#include "shockgas/core/random.hpp"
+#include "shockgas/particles/simulate.hpp"
+
+namespace shockgas::particles::detail {
+namespace {
+
+// A state in chain order, as a model holds it (see chain_view.hpp).
+struct Chain {
+  std::vector<std::size_t> first;
+  std::vector<double> x, v, m;
+  std::size_t particles = 0;
+  double L = 0;
+};
+
+auto view_of(const Chain& c) {
+  return make_chain_view(c.x.size(), [&c](auto&& f) {
+    for (std::size_t b = 0; b < c.x.size(); ++b) f(c.first[b], c.x[b], c.v[b], c.m[b]);
+  });
+}
+
+// ---- The reference: the recorder's previous code, on a copy of the chain. ----
+
+double ref_wrap(double x, double L) {
+  double w = x - L * std::floor(x / L);
+  return w >= L || w < 0 ? 0.0 : w;
+}
+
+Bodies ref_sorted(const Chain& s, bool ring) {
+  const std::size_t n = s.x.size();
+  std::vector<double> x = s.x;
+  std::size_t start = 0;
+  if (ring) {
+    for (double& xi : x) xi = ref_wrap(xi, s.L);
+    for (std::size_t b = 1; b < n; ++b)
+      if (x[b] < x[b - 1]) {
+        start = b;
+        break;
+      }
+  }
+  std::vector<std::size_t> order(n);
+  for (std::size_t k = 0; k < n; ++k) order[k] = (start + k) % n;
+  auto by_x = [&](std::size_t a, std::size_t b) { return x[a] < x[b]; };
+  if (!std::is_sorted(order.begin(), order.end(), by_x)) std::stable_sort(order.begin(), order.end(), by_x);
+  Bodies out;
+  for (std::size_t k : order) out.push_back(x[k], s.v[k], s.m[k]);
+  return out;
+}
+
+std::pair<double, double> ref_mean_and_temperature(const Chain& s) {
+  double mass = 0, momentum = 0;
+  for (std::size_t b = 0; b < s.v.size(); ++b) mass += s.m[b], momentum += s.m[b] * s.v[b];
+  const double mean = momentum / mass;
+  double T = 0;
+  for (std::size_t b = 0; b < s.v.size(); ++b) T += s.m[b] * (s.v[b] - mean) * (s.v[b] - mean);
+  return {mean, T / mass};
+}
+
+std::vector<double> ref_histogram(const Chain& s, double t, std::size_t bins, double zmax) {
+  const double dz = 2 * zmax / static_cast<double>(bins);
+  const auto [mean, T] = ref_mean_and_temperature(s);
+  const double mass = std::accumulate(s.m.begin(), s.m.end(), 0.0);
+  const double scale = std::cbrt(t);
+  std::vector<double> row(bins, 0.0);
+  for (std::size_t b = 0; b < s.v.size(); ++b) {
+    const double bin = std::floor(((s.v[b] - mean) * scale + zmax) / dz);
+    if (bin >= 0 && bin < static_cast<double>(bins))
+      row[static_cast<std::size_t>(bin)] += s.m[b] / (mass * dz);
+  }
+  return row;
+}
+
+std::vector<double> ref_frame(const Chain& s, bool ring) {
+  auto wrap = [&](double x) { return ring ? ref_wrap(x, s.L) : x; };
+  std::vector<double> row(s.particles);
+  const std::size_t bodies = s.x.size();
+  for (std::size_t b = 0; b < bodies; ++b) {
+    const std::size_t end = b + 1 < bodies ? s.first[b + 1] : s.particles;
+    for (std::size_t k = s.first[b]; k < end; ++k) row[k] = wrap(s.x[b]);
+  }
+  for (std::size_t k = 0; k < s.first.front(); ++k) row[k] = wrap(s.x.back());
+  return row;
+}
+
+// ---- Streamed against the reference. ----
+
+ParticleParams record_everything(double delta) {
+  ParticleParams p;
+  p.r = 0.5;
+  p.delta = delta;
+  p.t_end = 100.0;
+  p.samples = 3;
+  p.histogram_bins = 24;
+  p.histogram_zmax = 3.0;
+  p.snapshots = {10.0};
+  p.spacetime = true;
+  p.spacetime_frames = 2;
+  return p;
+}
+
+// The recorder fed the same state at every stop.
+RunResult record(const Chain& s, const ParticleParams& p, bool ring) {
+  Recorder recorder(p, s.particles, s.L, ring);
+  for (double t = recorder.next_stop(); t != Recorder::done; t = recorder.next_stop())
+    recorder.observe(t, view_of(s), Counters{});
+  return recorder.finish(view_of(s), RunStop{}, Counters{});
+}
+
+void expect_bodies_equal(const Bodies& a, const Bodies& b) {
+  EXPECT_EQ(a.x, b.x);
+  EXPECT_EQ(a.v, b.v);
+  EXPECT_EQ(a.m, b.m);
+}
+
+void expect_matches_reference(const Chain& s, const ParticleParams& p, bool ring) {
+  const RunResult out = record(s, p, ring);
+  const ClusterCriteria criteria =
+      p.r == 0 && p.delta == 0 ? merged_bodies_criteria()
+                               : default_cluster_criteria(p.delta, s.L / static_cast<double>(s.particles));
+  const Bodies sorted = ref_sorted(s, ring);
+  const auto [mean, T] = ref_mean_and_temperature(s);
+  const double clusters = static_cast<double>(find_clusters(sorted, ring ? s.L : 0.0, criteria).size());
+  ASSERT_EQ(out.series.size(), p.samples);
+  for (std::size_t k = 0; k < p.samples; ++k) {
+    EXPECT_EQ(out.series.T[k], T);
+    EXPECT_EQ(out.series.mean_v[k], mean);
+    EXPECT_EQ(out.series.n_bodies[k], static_cast<double>(s.x.size()));
+    EXPECT_EQ(out.series.n_clusters[k], clusters);
+    const std::vector<double> row = ref_histogram(s, out.histogram.t[k], p.histogram_bins, p.histogram_zmax);
+    EXPECT_TRUE(std::equal(row.begin(), row.end(), out.histogram.density.begin() + k * p.histogram_bins));
+  }
+  ASSERT_EQ(out.snapshots.size(), 1u);
+  expect_bodies_equal(out.snapshots[0].bodies, sorted);
+  expect_bodies_equal(out.final_state, sorted);
+  const std::vector<double> frame = ref_frame(s, ring);
+  ASSERT_EQ(out.spacetime.x.size(), 2 * s.particles);
+  EXPECT_TRUE(std::equal(frame.begin(), frame.end(), out.spacetime.x.begin() + s.particles));
+}
+
+// A random chain with the features the observables must handle: merged bodies
+// (gaps in `first`), runs of close co-moving neighbours (clusters), gaps and
+// velocity differences at the criteria's limits, equal positions, a ring closed
+// by a close pair or a wide one, and (ring) positions unrolled by whole periods,
+// so that the wrapped chain has a seam. L = particles (mean spacing 1): the
+// default criteria at delta join neighbours closer than 1/2 whose velocities
+// differ by less than 5 delta.
+Chain random_chain(Rng& rng, std::size_t bodies, double delta, bool ring) {
+  Chain c;
+  std::size_t next = ring ? static_cast<std::size_t>(3 * rng.uniform()) : 0;
+  std::vector<double> gap(bodies, 0.0);
+  double v = 0;
+  for (std::size_t b = 0; b < bodies; ++b) {
+    const double u = rng.uniform();
+    if (b > 0)
+      gap[b] = u < 0.05 ? 0.0 : u < 0.1 ? 0.5 : u < 0.5 ? rng.uniform(0.0, 0.6) : rng.uniform(0.6, 3.0);
+    const double w = rng.uniform();
+    v = w < 0.05 ? v + 5 * delta : w < 0.7 ? v + rng.uniform(-6 * delta, 6 * delta) : rng.uniform(-1.0, 1.0);
+    c.first.push_back(next);
+    c.v.push_back(v);
+    c.m.push_back(rng.uniform() < 0.8 ? 1.0 : rng.uniform(0.5, 3.0));
+    next += rng.uniform() < 0.9 ? 1 : 2 + static_cast<std::size_t>(3 * rng.uniform());
+  }
+  // The ring closes at L = particles with a gap close (and co-moving) half the
+  // time: one inner gap takes up the rest of the period.
+  const bool close = rng.uniform() < 0.5;
+  const double closing = close ? rng.uniform(0.0, 0.6) : rng.uniform(0.6, 3.0);
+  if (close && bodies > 1) c.v.back() = c.v.front() + rng.uniform(-6 * delta, 6 * delta);
+  const double span = std::accumulate(gap.begin(), gap.end(), 0.0);
+  c.particles = std::max(next, static_cast<std::size_t>(std::ceil(span + closing)));
+  c.L = static_cast<double>(c.particles);
+  if (bodies > 1)
+    gap[1 + static_cast<std::size_t>(static_cast<double>(bodies - 1) * rng.uniform())] +=
+        c.L - closing - span;
+  // Whole periods, and a fraction of one (none: the seam is at the chain's start).
+  const double fraction = rng.uniform() < 0.2 ? 0.0 : rng.uniform(0.0, c.L);
+  const double offset = ring ? std::floor(rng.uniform(-3.0, 3.0)) * c.L + fraction : rng.uniform(-5.0, 5.0);
+  double x = offset;
+  for (std::size_t b = 0; b < bodies; ++b) c.x.push_back(x += gap[b]);
+  return c;
+}
+
+TEST(ChainObservables, RandomRingChainsEqualTheSortedCopy) {
+  Rng rng(21);
+  for (std::size_t bodies : {1u, 2u, 3u, 17u, 1000u, 2500u}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      SCOPED_TRACE("bodies " + std::to_string(bodies) + ", trial " + std::to_string(trial));
+      expect_matches_reference(random_chain(rng, bodies, 0.02, true), record_everything(0.02), true);
+    }
+  }
+}
+
+TEST(ChainObservables, RandomLineChainsEqualTheSortedCopy) {
+  Rng rng(22);
+  const ParticleParams p = record_everything(0.02);
+  for (std::size_t bodies : {1u, 2u, 17u, 2500u}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      SCOPED_TRACE("bodies " + std::to_string(bodies) + ", trial " + std::to_string(trial));
+      expect_matches_reference(random_chain(rng, bodies, 0.02, false), p, false);
+    }
+  }
+}
+
+// PeriodWrap skips the division while x stays in one period: its result must be
+// wrap_into's to the bit, at period boundaries and far from the first period too.
+TEST(PeriodWrap, EqualsWrapIntoToTheBit) {
+  Rng rng(28);
+  for (double L : {1.0, 3000.0, 1e7, 0.1 * 3}) {
+    PeriodWrap wrap(L);
+    double x = -5 * L;
+    for (int i = 0; i < 200000; ++i) {
+      const double u = rng.uniform();
+      // Mostly small steps (a chain), some jumps, some exact multiples of L and their neighbours.
+      const double k = std::floor(rng.uniform(-2000.0, 2000.0));
+      x = u < 0.8    ? x + rng.uniform(-0.01, 0.05) * L
+          : u < 0.9  ? rng.uniform(-1e6, 1e6) * L
+          : u < 0.95 ? k * L
+                     : std::nextafter(k * L, u < 0.975 ? -1e300 : 1e300);
+      const double got = wrap(x), want = wrap_into(x, L);
+      ASSERT_EQ(std::memcmp(&got, &want, sizeof got), 0) << "x = " << x << ", L = " << L;
+    }
+  }
+}
+
+// The counter alone, under criteria wide enough to join a whole ring.
+TEST(ClusterCounter, EqualsFindClustersOnTheSortedCopy) {
+  Rng rng(27);
+  std::size_t whole_rings = 0;
+  for (std::size_t bodies : {1u, 2u, 3u, 5u, 40u}) {
+    for (int trial = 0; trial < 50; ++trial) {
+      for (bool ring : {true, false}) {
+        const Chain c = random_chain(rng, bodies, 0.02, ring);
+        const ClusterCriteria criteria{rng.uniform(0.0, 4.0), rng.uniform(0.0, 0.3)};
+        ClusterCounter counter(c.L, ring, criteria);
+        view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); }, Fields::all);
+        const std::size_t expected = find_clusters(ref_sorted(c, ring), ring ? c.L : 0.0, criteria).size();
+        ASSERT_TRUE(counter.count().has_value());
+        EXPECT_EQ(*counter.count(), expected);
+        whole_rings += ring && bodies > 1 && expected == 1;
+      }
+    }
+  }
+  EXPECT_GT(whole_rings, 0u);  // the fully joined ring was exercised
+}
+
+// Rounding can leave two touching bodies out of order in x (a second drop of the
+// wrapped positions): the streamed count refuses, and the recorder counts on the
+// sorted copy, as before.
+TEST(ChainObservables, MisorderedChainsFallBackToTheSortedCopy) {
+  Rng rng(23);
+  for (bool ring : {true, false}) {
+    const ParticleParams p = record_everything(0.02);
+    for (int trial = 0; trial < 20; ++trial) {
+      SCOPED_TRACE(std::string(ring ? "ring" : "line") + ", trial " + std::to_string(trial));
+      Chain c = random_chain(rng, 300, 0.02, ring);
+      // A rounding-sized drop inside the chain, or (ring) across its ends.
+      const bool across = ring && trial % 2 == 1;
+      const std::size_t k = across ? 0 : 1 + static_cast<std::size_t>(298 * rng.uniform());
+      const std::size_t left = across ? c.x.size() - 1 : k - 1;
+      c.x[k] = c.x[left] - (across ? c.L : 0.0) - 1e-9 * c.L;
+      c.v[k] = c.v[left];
+      ClusterCounter counter(c.L, ring, default_cluster_criteria(0.02, 1.0));
+      view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); }, Fields::all);
+      if (!ring || ref_wrap(c.x[k], c.L) < ref_wrap(c.x[left], c.L)) {
+        EXPECT_FALSE(counter.count().has_value());
+      }
+      expect_matches_reference(c, p, ring);
+    }
+  }
+}
+
+// Merging gas (r = 0, delta = 0): every body is its own cluster.
+TEST(ChainObservables, MergedBodiesAreCountedOneEach) {
+  Rng rng(24);
+  ParticleParams p = record_everything(0.0);
+  p.r = 0.0;
+  const Chain c = random_chain(rng, 2000, 0.02, true);
+  expect_matches_reference(c, p, true);
+  EXPECT_EQ(record(c, p, true).series.n_clusters.back(), 2000.0);
+}
+
+// Real states: the engine's snapshots (sorted, wrapped) turned back into chains,
+// cut at a random body and unrolled by whole periods, as the engine holds them.
+TEST(ChainObservables, EngineStatesEqualTheSortedCopy) {
+  InitialParams ip;
+  ip.N = 3000;
+  ip.seed = 25;
+  Rng rng(26);
+  for (const char* subthreshold : {"elastic", "sticky"}) {
+    ParticleParams run;
+    run.r = 0.5;
+    run.subthreshold = subthreshold;
+    run.t_end = 300.0;
+    run.snapshots = {10.0, 100.0, 300.0};
+    const RunResult out = simulate(make_initial_bodies(ip), 3000.0, run);
+    for (const Snapshot& snap : out.snapshots) {
+      SCOPED_TRACE(std::string(subthreshold) + ", t = " + std::to_string(snap.t));
+      const Bodies& b = snap.bodies;
+      const std::size_t n = b.size();
+      const std::size_t cut = static_cast<std::size_t>(static_cast<double>(n) * rng.uniform());
+      const double periods = std::floor(rng.uniform(-3.0, 3.0)) * 3000.0;
+      Chain c;
+      c.L = 3000.0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = (cut + k) % n;
+        c.first.push_back(c.particles);
+        c.x.push_back(b.x[i] + (cut + k >= n ? c.L : 0.0) + periods);
+        c.v.push_back(b.v[i]);
+        c.m.push_back(b.m[i]);
+        c.particles += static_cast<std::size_t>(b.m[i]);  // unit masses merge into integer ones
+      }
+      expect_matches_reference(c, record_everything(run.delta), true);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace shockgas::particles::detail
