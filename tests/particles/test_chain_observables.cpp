@@ -298,7 +298,7 @@ TEST(ChainObservables, EngineStatesEqualTheSortedCopy) {
   ip.N = 3000;
   ip.seed = 25;
   Rng rng(26);
-  for (const char* subthreshold : {"elastic", "sticky"}) {
+  for (const Subthreshold subthreshold : {Subthreshold::elastic, Subthreshold::sticky}) {
     ParticleParams run;
     run.r = 0.5;
     run.subthreshold = subthreshold;
@@ -306,7 +306,8 @@ TEST(ChainObservables, EngineStatesEqualTheSortedCopy) {
     run.snapshots = {10.0, 100.0, 300.0};
     const RunResult out = simulate(make_initial_bodies(ip), 3000.0, run);
     for (const Snapshot& snap : out.snapshots) {
-      SCOPED_TRACE(std::string(subthreshold) + ", t = " + std::to_string(snap.t));
+      SCOPED_TRACE(std::string(subthreshold == Subthreshold::sticky ? "sticky" : "elastic") +
+                   ", t = " + std::to_string(snap.t));
       const Bodies& b = snap.bodies;
       const std::size_t n = b.size();
       const std::size_t cut = static_cast<std::size_t>(static_cast<double>(n) * rng.uniform());
