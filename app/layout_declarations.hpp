@@ -2,7 +2,7 @@
 // Helpers for the declarations of the output layout (output_layout.hpp), and the
 // declaration lists of each file: output_datasets.cpp (provenance, initial,
 // particles), output_fields.cpp (analysis, continuum, comparison, sweep),
-// summary_keys.cpp.
+// summary_keys.cpp, summary_fields.cpp, output_frames.cpp (frames).
 #include <functional>
 #include <string>
 #include <vector>
@@ -45,5 +45,8 @@ std::vector<Declaration> field_datasets();     // analysis, continuum, compariso
 
 std::vector<Declaration> run_keys();         // provenance, initial, particles, analysis
 std::vector<Declaration> comparison_keys();  // continuum, comparison, sweep
+
+std::vector<Declaration> frame_datasets();  // output_frames.cpp: the animation's record
+std::vector<Declaration> frame_keys();      // and the wave's evolution, the heaviest shock and cluster
 
 }  // namespace shockgas::app::layout

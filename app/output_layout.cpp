@@ -119,6 +119,8 @@ const char* part_title(Part part) {
       return "Continuum (one group per solver of continuum.solvers)";
     case Part::compare:
       return "Particles against continuum (when [compare] and [continuum] are present)";
+    case Part::animation:
+      return "Frames and the wave's evolution (when output.animation = true)";
     case Part::sweep:
       return "Sweep (a [sweep] scene's own result)";
   }
@@ -148,7 +150,7 @@ void table(std::ostringstream& out, const std::vector<Declaration>& decls, Part 
 }
 
 const std::vector<Part> kParts = {Part::provenance, Part::initial, Part::particles, Part::analysis,
-                                  Part::continuum,  Part::compare, Part::sweep};
+                                  Part::continuum,  Part::compare, Part::animation, Part::sweep};
 
 }  // namespace
 
@@ -157,6 +159,7 @@ const std::vector<Declaration>& dataset_declarations() {
     std::vector<Declaration> d = layout::provenance_datasets();
     layout::append(d, layout::particle_datasets());
     layout::append(d, layout::field_datasets());
+    layout::append(d, layout::frame_datasets());
     return d;
   }();
   return all;
@@ -166,6 +169,7 @@ const std::vector<Declaration>& summary_declarations() {
   static const std::vector<Declaration> all = [] {
     std::vector<Declaration> d = layout::run_keys();
     layout::append(d, layout::comparison_keys());
+    layout::append(d, layout::frame_keys());
     return d;
   }();
   return all;

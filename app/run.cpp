@@ -105,12 +105,18 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
       r.comparison = run_comparison(scene, initial, *r.particles, r.continuum);
       write(Part::compare);
     }
+    if (scene.output.animation) {
+      r.frames = run_frames(scene, initial, r.particles ? r.particles->frames : std::vector<particles::Snapshot>{},
+                            progress);
+      write(Part::animation);
+    }
     progress.finish();
     h5.close();
     std::ofstream(dir / "report.md") << report_text(r);
   }
   outputs.commit(summary);
   if (options.plots && scene.output.plots) make_plots(dir.string());
+  if (options.plots && scene.output.plots && scene.output.animation) make_animation(dir.string());
   return reduce(r, std::move(summary));
 }
 

@@ -59,6 +59,12 @@ const char* kSweepScene =
     "[initial]\nN = 200\n[particles]\nt_end = 20\nsamples = 6\nhistogram_bins = 8\n"
     "[sweep]\nvariants = [\"particles.r=0.5\", \"particles.r=0.9\"]\n[output]\nplots = false\n";
 
+// The frames of an animation: particles and two solvers (plots = false: the record, no movie).
+const char* kAnimatedScene =
+    "[initial]\nN = 200\n[particles]\nr = 0.5\nt_end = 20\nsamples = 6\n"
+    "[continuum]\nsolvers = [\"hopf_lax\", \"godunov\"]\ncells = 200\n"
+    "[output]\nplots = false\nanimation = true\nanimation_frames = 5\nanimation_spacing = \"log\"\n";
+
 // The groups and datasets of a file, each with the names of its attributes.
 std::vector<std::pair<std::string, std::vector<std::string>>> objects(const Hdf5File& h5) {
   std::set<std::string> paths = {"/"};
@@ -139,6 +145,10 @@ TEST(OutputDocs, ThePlotScriptReadsARunsFiles) {
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "plot_result.py failed";
   for (const char* png : {"temperature.png", "velocity_distribution.png", "spacetime.png", "fields.png"})
     EXPECT_TRUE(fs::exists(out / png)) << png;
+}
+
+TEST(OutputDocs, AnAnimatedRunWritesTheDeclaredLayout) {
+  expect_file_follows_layout(run_scene("animated", kAnimatedScene), {Part::animation});
 }
 
 TEST(OutputDocs, ASweepWritesTheDeclaredLayout) {
