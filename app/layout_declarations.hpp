@@ -2,7 +2,7 @@
 // Helpers for the declarations of the output layout (output_layout.hpp), and the
 // declaration lists of each file: output_datasets.cpp (provenance, initial,
 // particles), output_fields.cpp (analysis, continuum, comparison, sweep),
-// summary_keys.cpp, summary_fields.cpp, output_frames.cpp (frames).
+// summary_keys.cpp, summary_fields.cpp, output_frames.cpp (frames), summary_extremes.cpp.
 #include <functional>
 #include <string>
 #include <vector>
@@ -47,6 +47,7 @@ std::vector<Declaration> run_keys();         // provenance, initial, particles, 
 std::vector<Declaration> comparison_keys();  // continuum, comparison, sweep
 
 std::vector<Declaration> frame_datasets();  // output_frames.cpp: the animation's record
-std::vector<Declaration> frame_keys();      // and the wave's evolution, the heaviest shock and cluster
+std::vector<Declaration> frame_keys();      // and the wave's evolution
+std::vector<Declaration> extreme_keys();    // summary_extremes.cpp: the heaviest shock and cluster, ...
 
 }  // namespace shockgas::app::layout

@@ -169,6 +169,7 @@ const std::vector<Declaration>& summary_declarations() {
   static const std::vector<Declaration> all = [] {
     std::vector<Declaration> d = layout::run_keys();
     layout::append(d, layout::comparison_keys());
+    layout::append(d, layout::extreme_keys());
     layout::append(d, layout::frame_keys());
     return d;
   }();
