@@ -5,6 +5,7 @@
 
 #include "hdf5_file.hpp"
 #include "plots.hpp"
+#include "report_html.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -22,6 +23,7 @@ void animate(const std::string& dir) {
   require(has_frames(result), "output.animation", std::string("false"),
           "true: the run must record its frames (run the scene again with --set output.animation=true)");
   make_animation(dir);
+  write_report_html(dir);
 }
 
 }  // namespace shockgas::app

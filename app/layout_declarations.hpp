@@ -16,22 +16,28 @@ using Emit = std::function<void(const RunResults&, Emitter&)>;
 inline Declaration dataset(Part part, std::string path, std::string unit, std::string description,
                            std::string when, Emit emit) {
   return {{LayoutEntry::Kind::dataset, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when)},
+           std::move(when), ""},
           std::move(emit)};
 }
 
 inline Declaration attribute(Part part, std::string path, std::string unit, std::string description,
                              std::string when, Emit emit) {
   return {{LayoutEntry::Kind::attribute, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when)},
+           std::move(when), ""},
           std::move(emit)};
 }
 
 inline Declaration key(Part part, std::string path, std::string unit, std::string description,
                        std::string when, Emit emit) {
   return {{LayoutEntry::Kind::summary, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when)},
+           std::move(when), ""},
           std::move(emit)};
+}
+
+// d with what theory says its value should be (LayoutEntry::theory).
+inline Declaration with_theory(Declaration d, std::string theory) {
+  d.entry.theory = std::move(theory);
+  return d;
 }
 
 // Appends b to a.

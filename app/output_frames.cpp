@@ -123,6 +123,21 @@ std::vector<Declaration> record() {
               evolution_series(&Evolution::negative_area)),
       dataset(p, "/animation/evolution/shocks", "1", "shocks at each frame", continuum,
               evolution_series(&Evolution::shocks)),
+      dataset(p, "/animation/evolution/breaking_fit", "1",
+              "1 for the smooth, resolved frames whose -1 / min dv/dx the breaking time is fitted on, else 0",
+              continuum, evolution_series(&Evolution::formation_fit)),
+      dataset(p, "/animation/evolution/amplitude_fit_t", "time",
+              "the window of the amplitude's power-law fit", "with the fit",
+              with_frames([](const Frames& f, Emitter& out) {
+                if (const auto& a = f.evolution.amplitude_fit) out.values({a->t_min, a->t_max});
+              })),
+      dataset(p, "/animation/evolution/amplitude_fit", "length/time",
+              "the fitted power law at the window's ends", "with the fit",
+              with_frames([](const Frames& f, Emitter& out) {
+                if (const auto& a = f.evolution.amplitude_fit)
+                  out.values({a->prefactor * std::pow(a->t_min, a->exponent),
+                              a->prefactor * std::pow(a->t_max, a->exponent)});
+              })),
   };
 }
 
@@ -143,30 +158,31 @@ std::vector<Declaration> evolution() {
           "the frame before it (the breaking time lies between the two)",
           "when a shock appears after a smooth frame",
           evolution_key([](const Evolution& e) { return Json(e.last_smooth_time); })),
-      key(p, "evolution.shock_formation_time", "time",
-          "breaking time t* measured: where -1 / min dv/dx, a straight line t* - t, reaches zero",
-          "with 2 or more resolved smooth frames",
-          evolution_key([](const Evolution& e) { return Json(e.shock_formation_time); })),
+      with_theory(key(p, "evolution.shock_formation_time", "time",
+                      "breaking time t* measured: where -1 / min dv/dx, a straight line t* - t, reaches zero",
+                      "with 2 or more resolved smooth frames",
+                      evolution_key([](const Evolution& e) { return Json(e.shock_formation_time); })),
+                  "{evolution.breaking_time_theory}"),
       key(p, "evolution.shock_formation_frames", "1", "the smooth frames resolved well enough for that line",
           continuum, evolution_key([](const Evolution& e) { return Json(e.formation_frames); })),
       key(p, "evolution.breaking_time_theory", "time", "theory: t* = 1 / max(-v0') of the initial velocity",
           "for initial.velocities = \"expression\"", with_frames([](const Frames& f, Emitter& out) {
             if (std::isfinite(f.breaking_time_theory)) out.json(f.breaking_time_theory);
           })),
-      key(p, "evolution.amplitude_exponent", "1",
-          "fitted a in (max v - min v) / 2 ~ t^a on [t_end / compare.fit_window, t_end] (N-wave -1/2, "
-          "sawtooth -1)",
-          "with 3 or more frames in the window", evolution_key([](const Evolution& e) {
-            return e.amplitude_fit ? Json(e.amplitude_fit->exponent) : Json(nullptr);
-          })),
+      with_theory(key(p, "evolution.amplitude_exponent", "1",
+                      "fitted a in (max v - min v) / 2 ~ t^a on [t_end / compare.fit_window, t_end]",
+                      "with 3 or more frames in the window", evolution_key([](const Evolution& e) {
+                        return e.amplitude_fit ? Json(e.amplitude_fit->exponent) : Json(nullptr);
+                      })),
+                  "-1/2 (N-wave), -1 (periodic sawtooth)"),
       key(p, "evolution.amplitude_exponent_error", "1", "its least-squares standard error",
           "with the exponent", evolution_key([](const Evolution& e) {
             return e.amplitude_fit ? Json(e.amplitude_fit->exponent_error) : Json(nullptr);
           })),
-      key(p, "evolution.lobe_area_change", "1",
-          "largest |A(t) / A(0) - 1| of the lobes above and below the mean over the frames (isolated waves: "
-          "0)",
-          continuum, evolution_key([](const Evolution& e) { return Json(e.lobe_area_change); })),
+      with_theory(key(p, "evolution.lobe_area_change", "1",
+                      "largest |A(t) / A(0) - 1| of the lobes above and below the mean over the frames",
+                      continuum, evolution_key([](const Evolution& e) { return Json(e.lobe_area_change); })),
+                  "0 (isolated wave)"),
       key(p, "evolution.shocks_max", "1", "most shocks in one frame", continuum,
           evolution_key([](const Evolution& e) {
             double n = 0;

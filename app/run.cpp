@@ -11,6 +11,7 @@
 #include "plots.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
+#include "report_html.hpp"
 #include "run_internal.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
@@ -117,6 +118,7 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
   outputs.commit(summary);
   if (options.plots && scene.output.plots) make_plots(dir.string());
   if (options.plots && scene.output.plots && scene.output.animation) make_animation(dir.string());
+  write_report_html(dir);
   return reduce(r, std::move(summary));
 }
 

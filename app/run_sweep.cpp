@@ -11,6 +11,7 @@
 #include "partial_outputs.hpp"
 #include "plots.hpp"
 #include "report.hpp"
+#include "report_html.hpp"
 #include "run_internal.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -101,6 +102,7 @@ std::string run_sweep(const Scene& scene, const fs::path& dir, const RunOptions&
   outputs.commit(summary);
   write_report(dir, scene, r.variants);
   if (options.plots && scene.output.plots) make_plots(dir.string());
+  write_report_html(dir);
   return dir.string();
 }
 

@@ -42,13 +42,15 @@ std::vector<Declaration> extreme_keys() {
   const Part a = Part::analysis, c = Part::continuum;
   const char* heavy = "solvers whose shocks hold mass";
   return {
-      key(a, "analysis.T_steepest_local_exponent", "1",
-          "least d ln T / d ln t (theory: -2 in homogeneous cooling, reached when 1/eps << t << eps^(-3/2))",
-          "with 2 or more samples",
-          [](const RunResults& r, Emitter& out) {
-            if (r.particles && r.particles->cooling.crossovers.t_min_exponent > 0)
-              out.json(r.particles->cooling.crossovers.min_exponent);
-          }),
+      with_theory(
+          key(a, "analysis.T_steepest_local_exponent", "1",
+              "least d ln T / d ln t (the homogeneous-cooling plateau, when 1/eps << t << eps^(-3/2))",
+              "with 2 or more samples",
+              [](const RunResults& r, Emitter& out) {
+                if (r.particles && r.particles->cooling.crossovers.t_min_exponent > 0)
+                  out.json(r.particles->cooling.crossovers.min_exponent);
+              }),
+          "-2 (homogeneous cooling, as eps -> 0)"),
       key(a, "analysis.heaviest_cluster_x", "length", "position of the heaviest cluster at the end", "",
           cluster(&particles::Cluster::x)),
       key(a, "analysis.heaviest_cluster_m", "mass", "its mass", "", cluster(&particles::Cluster::m)),

@@ -41,11 +41,13 @@ FrameFigures measure(const continuum::ContinuumResult& r) {
 void fit_formation(FieldEvolution& e, const std::vector<FrameFigures>& figures, std::size_t smooth_frames,
                    double dx) {
   std::vector<double> t, y;
+  e.formation_fit.assign(e.t.size(), 0.0);
   for (std::size_t k = 0; k < smooth_frames; ++k) {
     const FrameFigures& f = figures[k];
     if (f.steepest < 0 && -f.steepest * dx <= kResolvedStep * f.range) {
       t.push_back(e.t[k]);
       y.push_back(-1.0 / f.steepest);
+      e.formation_fit[k] = 1;
     }
   }
   e.formation_frames = t.size();

@@ -15,6 +15,7 @@ try:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import numpy as np
+    from plot_evolution import plot_evolution, plot_regimes
 except ImportError as exc:  # the command turns this into a warning
     print(f"plot_result.py: {exc}", file=sys.stderr)
     sys.exit(3)
@@ -27,7 +28,9 @@ def attr(obj, name, default=None):
 
 def save(fig, out_dir, name):
     fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, name), dpi=110)
+    # the first axes' title names the picture in report.html (PNG tEXt "Title")
+    title = next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
+    fig.savefig(os.path.join(out_dir, name), dpi=110, metadata={"Title": title} if title else None)
     plt.close(fig)
 
 
@@ -192,6 +195,10 @@ def main():
             plot_spacetime(f, out_dir)
         if "continuum" in f:
             plot_fields(f, out_dir)
+        if "animation/evolution" in f:
+            plot_evolution(f, out_dir)
+        if "particles/analysis" in f:
+            plot_regimes(f, out_dir)
 
 
 if __name__ == "__main__":

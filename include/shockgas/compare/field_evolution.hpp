@@ -44,6 +44,7 @@ struct FieldEvolution {
   std::vector<double> positive_area;         // A+ [length^2/time]
   std::vector<double> negative_area;         // A- (<= 0) [length^2/time]
   std::vector<double> shocks;                // shocks in the frame [1]
+  std::vector<double> formation_fit;         // 1 for the frames in the breaking-time fit, else 0 [1]
   double first_shock_time = kNone;           // the first frame holding a shock [time]
   double last_smooth_time = kNone;           // the frame before it, if at t > 0 [time]
   double shock_formation_time = kNone;       // t* from the smooth frames' slopes [time]
