@@ -58,6 +58,7 @@ class Movie:
         self._draw_spacetime()
         self._legend()
         self.title = self.fig.suptitle("", x=0.075, y=0.985, ha="left", va="top", fontsize=15)
+        self.background = None
 
     def _mass_norm(self):
         if self.rec.clusters is None:
@@ -71,7 +72,9 @@ class Movie:
         self.lines = []
         for fl in rec.fields.values():
             (lv,) = self.av.plot(fl["x"], fl["v"][0], label=fl["label"], **fl["style"])
-            lr = self.ar.stairs(fl["rho_bins"][0], rec.edges, **fl["style"]) if fl["rho"] is not None else None
+            lr = None
+            if fl["rho"] is not None:  # no baseline: no edge down to 0 at the domain's ends
+                lr = self.ar.stairs(fl["rho_bins"][0], rec.edges, baseline=None, **fl["style"])
             self.lines.append((fl, lv, lr))
         v_all = [fl["v"] for fl in rec.fields.values()]
         if rec.clusters is not None:
@@ -124,8 +127,8 @@ class Movie:
         else:  # one mass throughout: no scale to read
             self.acb.set_visible(False)
         if self.ar.get_visible():
-            self.hist = self.ar.stairs(self.rec.particle_density(0), self.rec.particle_edges, color=PARTICLE_DENSITY,
-                                       lw=1.0, label="particles (mass per bin)")
+            self.hist = self.ar.stairs(self.rec.particle_density(0), self.rec.particle_edges, baseline=None,
+                                       color=PARTICLE_DENSITY, lw=1.0, label="particles (mass per bin)")
 
     def _dot_sizes(self, m):
         # area ~ sqrt(mass): a cluster of 100 particles is a dot 10 times the area of one
@@ -237,9 +240,34 @@ class Movie:
             self.trail.set_offsets(p[:, :2])
             self.trail.set_array(p[:, 2])
 
+    def _dynamic(self):
+        """What changes from frame to frame outside the velocity panel."""
+        parts = [lr for _, _, lr in self.lines if lr is not None] + [self.title, self.now]
+        return parts + [a for a in (self.hist, self.trail) if a is not None]
+
     def rgba(self):
-        self.fig.canvas.draw()
-        return np.asarray(self.fig.canvas.buffer_rgba())
+        """The frame's pixels. The static rest (space-time image, colour bars,
+        legend, the density axes) is drawn once and restored; each frame redraws
+        the velocity panel (whose axis may follow the frame) and what moves."""
+        canvas = self.fig.canvas
+        if self.background is None:
+            for a in self._dynamic():
+                a.set_animated(True)
+            self.av.set_visible(False)
+            canvas.draw()
+            self.background = canvas.copy_from_bbox(self.fig.bbox)
+            self.av.set_visible(True)
+        canvas.restore_region(self.background)
+        renderer = canvas.get_renderer()
+        self.av.draw(renderer)
+        for a in self._dynamic():
+            a.draw(renderer)
+        return np.asarray(canvas.buffer_rgba())
+
+    def save_still(self, path):
+        for a in self._dynamic():
+            a.set_animated(False)
+        self.fig.savefig(path, dpi=DPI)
 
 
 def time_text(t):
@@ -301,7 +329,7 @@ def main():
               file=sys.stderr)
         gif_with_pillow(movie, n, fps, paths["gif"])
     movie.update(n - 1)
-    movie.fig.savefig(paths["png"], dpi=DPI)
+    movie.save_still(paths["png"])
 
 
 if __name__ == "__main__":
