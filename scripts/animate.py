@@ -327,6 +327,8 @@ def main():
     else:
         print("animate.py: warning: ffmpeg not found (run scripts/setup): no animation.mp4; the GIF by Pillow",
               file=sys.stderr)
+        if os.path.exists(paths["mp4"]):
+            os.remove(paths["mp4"])  # an older run's movie must not stand beside this one's frames
         gif_with_pillow(movie, n, fps, paths["gif"])
     movie.update(n - 1)
     movie.save_still(paths["png"])
