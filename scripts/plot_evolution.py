@@ -141,8 +141,10 @@ def _homogeneous_cooling(summary, t):
 
 def plot_regimes(f, out_dir):
     """T(t) through its three regimes and the local exponent, when the run shows them."""
-    a = read_summary(out_dir).get("analysis", {})
-    if a.get("t_stick") is None or "particles/analysis/T_local_exponent" not in f:
+    summary = read_summary(out_dir)
+    a = summary.get("analysis", {})
+    gas = summary.get("initial", {}).get("N", 0) >= 100  # regimes of a gas, not of a few bodies
+    if not gas or a.get("t_stick") is None or "particles/analysis/T_local_exponent" not in f:
         return
     p = f["particles"]
     t, T = p["t"][:], p["T"][:]

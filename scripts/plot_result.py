@@ -154,8 +154,10 @@ def plot_sweep(f, out_dir):
         if power is not None:
             ax.loglog(t, T[-1] * (t / t[-1]) ** power, ":", color="gray",
                       label=f"t^{Fraction(power).limit_denominator(12)}")
-        ax.set_xlabel("t")
-        ax.set_ylabel("T(t)")
+        unit = {name: attr(g["particles/" + name], "unit", "") for name in ("t", "T")}
+        ax.set_xlabel(f"time t [{unit['t']}]")
+        ax.set_ylabel(f"temperature T [{unit['T']}]")
+        ax.set_title("temperature of each variant")
         ax.legend(fontsize=8)
         save(fig, out_dir, "temperature.png")
     else:
