@@ -11,7 +11,7 @@
 
 #include "frames.hpp"
 #include "hdf5_file.hpp"
-#include "shockgas/app/command.hpp"
+#include "run_command.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -19,12 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(std::vector<std::string> args) {
-  args.insert(args.begin(), "shockgas");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return run_command(static_cast<int>(argv.size()), argv.data());
-}
+using testing_support::run;
 
 fs::path scene_file(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / ("shockgas-test-frames-" + name);

@@ -14,7 +14,7 @@
 
 #include "hdf5_file.hpp"
 #include "output_layout.hpp"
-#include "shockgas/app/command.hpp"
+#include "run_command.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -29,12 +29,7 @@ std::string read_file(const fs::path& path) {
   return text.str();
 }
 
-int run(std::vector<std::string> args) {
-  args.insert(args.begin(), "shockgas");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return run_command(static_cast<int>(argv.size()), argv.data());
-}
+using testing_support::run;
 
 // Runs `scene` (text) into a fresh directory and returns it.
 fs::path run_scene(const std::string& name, const std::string& scene) {
