@@ -124,14 +124,37 @@ std::map<std::string, std::string> provenance(const fs::path& dir) {
   return attrs;
 }
 
-std::string description(const std::map<std::string, std::string>& p) {
+// The parameters the run was made with (result.h5's resolved_parameters).
+toml::table resolved(const std::map<std::string, std::string>& p) {
   const auto it = p.find("resolved_parameters");
-  if (it == p.end()) return "";
+  if (it == p.end()) return {};
   try {
-    return toml::parse(it->second)["scene"]["description"].value_or(std::string());
+    return toml::parse(it->second);
   } catch (const toml::parse_error&) {
-    return "";
+    return {};
   }
+}
+
+// A sweep's reference_key beside its reference_values, variant by variant (as report.md).
+std::string reference_table(const toml::table& scene, const Json& summary) {
+  const Json* variants = lookup(summary, "variants");
+  const std::string key = scene["sweep"]["reference_key"].value_or(std::string());
+  if (!variants || !variants->is_array() || key.empty()) return "";
+  const auto* values = scene["sweep"]["reference_values"].as_array();
+  const LayoutEntry* e = find_in_layout(LayoutEntry::Kind::summary, key);
+  std::string out = "<table>\n<thead><tr><th>variant</th><th>" + html::escape(e ? e->description : key) +
+                    " <code>" + html::escape(key) + "</code></th><th>reference</th></tr></thead>\n<tbody>\n";
+  for (std::size_t k = 0; k < variants->size(); ++k) {
+    const Json& v = (*variants)[k];
+    const Json* ours = v.contains("summary") ? lookup(v["summary"], key) : nullptr;
+    const std::string ref = values && k < values->size() ? (*values)[k].value_or(std::string()) : "";
+    out += "<tr><td>" + html::escape(v.value("label", "")) + "</td><td class=\"value\">" +
+           html::escape(ours ? value_text(*ours) : "—") + "</td><td>" +
+           html::escape(ref.empty() ? "—" : ref) + "</td></tr>\n";
+  }
+  out += "</tbody>\n</table>\n";
+  const std::string source = scene["sweep"]["reference_source"].value_or(std::string());
+  return source.empty() ? out : out + "<p class=\"muted\">Reference: " + html::escape(source) + "</p>\n";
 }
 
 std::string animation_section(const fs::path& dir) {
@@ -148,12 +171,9 @@ std::string animation_section(const fs::path& dir) {
   }
   return "<h2 id=\"animation\">Animation</h2>\n<figure>\n" + media +
          "<figcaption>Left: the particles as dots (each cluster one dot, coloured by its mass) over every "
-         "solver's "
-         "velocity and density at the same time; right: space-time, the density of the exact solver (else "
-         "the "
-         "first) with the paths of the heaviest clusters. Drawn from result.h5 by <code>shockgas "
-         "animate</code>."
-         "</figcaption>\n</figure>\n";
+         "solver's velocity and density at the same time; right: space-time, the density of the exact "
+         "solver (else the first) with the paths of the heaviest clusters. Drawn from result.h5 by "
+         "<code>shockgas animate</code>.</figcaption>\n</figure>\n";
 }
 
 std::string plots_section(const fs::path& dir) {
@@ -216,9 +236,10 @@ Json read_summary(const fs::path& dir) {
 void write_report_html(const fs::path& dir) {
   const Json summary = read_summary(dir);
   const auto p = provenance(dir);
+  const toml::table scene = resolved(p);
   const std::string name = p.count("scene_name") ? p.at("scene_name") : summary.value("scene", "");
   std::string body = "<header>\n<h1>" + html::escape(name) + "</h1>\n";
-  if (const std::string d = description(p); !d.empty())
+  if (const std::string d = scene["scene"]["description"].value_or(std::string()); !d.empty())
     body += "<p class=\"lead\">" + html::escape(d) + "</p>\n";
   const std::string animation = animation_section(dir), plots = plots_section(dir);
   body += "<nav>" + std::string(animation.empty() ? "" : "<a href=\"#animation\">animation</a>") +
@@ -229,7 +250,7 @@ void write_report_html(const fs::path& dir) {
   body +=
       "<h2 id=\"figures\">Figures of merit</h2>\n<p class=\"muted\">Each value with what it means and what "
       "theory says it should be (docs/output.md).</p>\n" +
-      figures_table(summary) + variants_section(dir, summary);
+      figures_table(summary) + reference_table(scene, summary) + variants_section(dir, summary);
   body += plots + scene_section(p);
   const fs::path tmp = dir / "report.html.partial";
   {
