@@ -159,10 +159,11 @@ class Movie:
         fl = rec.fields[rec.measured]
         te = self._time_edges(rec.t[keep])
         if fl["rho"] is not None:
-            data = np.ma.masked_less_equal(fl["rho_bins"][keep], 0)
+            rho, xe = rec.spacetime_density(fl)
+            data = np.ma.masked_less_equal(rho[keep], 0)
             # four decades below the densest: a fan's vacuum (0, or rounding) is dark
             norm = LogNorm(max(np.percentile(data.compressed(), 2), 1e-4 * data.max()), data.max())
-            cmap, what, xe = plt.get_cmap("magma").copy(), with_unit(f"ρ ({fl['label']})", fl["rho_unit"]), rec.edges
+            cmap, what = plt.get_cmap("magma").copy(), with_unit(f"ρ ({fl['label']})", fl["rho_unit"])
             cmap.set_bad(cmap(0.0))  # vacuum: as dark as the thinnest gas
         else:
             data = fl["v"][keep]

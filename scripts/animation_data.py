@@ -10,6 +10,7 @@ is drawn on the same bins.
 import numpy as np
 
 MAX_BINS = 600
+MAX_SPACETIME_BINS = 200  # the space-time panel is about 300 pixels wide: a bin a pixel or more
 
 
 def text(value):
@@ -24,9 +25,9 @@ def with_unit(name, u):
     return f"{name} [{u}]" if u and u != "1" else name
 
 
-def block_edges(cells):
-    """Indices of the first cell of each display bin, and the bins' count."""
-    per_bin = max(1, -(-cells // MAX_BINS))
+def block_edges(cells, max_bins=MAX_BINS):
+    """Indices of the first cell of each display bin, and the cells per bin."""
+    per_bin = max(1, -(-cells // max_bins))
     starts = np.arange(0, cells, per_bin)
     return starts, per_bin
 
@@ -122,6 +123,13 @@ class Record:
         if self.fields:
             bins = min(bins, len(self.edges) - 1)
         return np.linspace(self.x0, self.x1, bins + 1)
+
+    def spacetime_density(self, fl):
+        """The field's density on at most MAX_SPACETIME_BINS bins (mass kept, so that a
+        delta-shock stays a bright bin rather than falling between pixels), and their edges."""
+        starts, _ = block_edges(len(fl["x"]), MAX_SPACETIME_BINS)
+        dx = (self.x1 - self.x0) / len(fl["x"])
+        return block_mean(fl["rho"], starts), np.append(self.x0 + starts * dx, self.x1)
 
     def cluster_frame(self, k):
         """The particles' frame for frame time k: the last one reached by then, and its time."""
