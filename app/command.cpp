@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "animate.hpp"
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
@@ -52,6 +53,11 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     std::cout << (args.layout ? describe_layout() : describe_result(args.result_path));
     return kExitOk;
   }
+  if (app.got_subcommand("animate")) {
+    animate(args.result_path);
+    std::cout << "animation in " << args.result_path << "/\n";
+    return kExitOk;
+  }
   if (app.got_subcommand("bench")) {
     const std::string dir = studies::run_studies(args.bench);
     make_bench_charts(dir);
@@ -82,6 +88,9 @@ int run_command(int argc, char** argv) {
   scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range");
   scene->add_flag("--markdown", args.markdown, "print the reference of every key as markdown (docs/scenes.md)");
   scene->require_option(1);
+  auto* anim = app.add_subcommand("animate", "Draw a run's animation (MP4, GIF) from its result.h5");
+  anim->add_option("DIR", args.result_path, "a run's output directory (its scene has [output] animation = true)")
+      ->required();
   auto* bench = app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
   bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)");
   bench->add_flag("--full", args.bench.full, "the record size (long) instead of the quick one");

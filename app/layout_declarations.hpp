@@ -2,7 +2,7 @@
 // Helpers for the declarations of the output layout (output_layout.hpp), and the
 // declaration lists of each file: output_datasets.cpp (provenance, initial,
 // particles), output_fields.cpp (analysis, continuum, comparison, sweep),
-// summary_keys.cpp.
+// summary_keys.cpp, summary_fields.cpp, output_frames.cpp (frames), summary_extremes.cpp.
 #include <functional>
 #include <string>
 #include <vector>
@@ -16,22 +16,28 @@ using Emit = std::function<void(const RunResults&, Emitter&)>;
 inline Declaration dataset(Part part, std::string path, std::string unit, std::string description,
                            std::string when, Emit emit) {
   return {{LayoutEntry::Kind::dataset, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when)},
+           std::move(when), ""},
           std::move(emit)};
 }
 
 inline Declaration attribute(Part part, std::string path, std::string unit, std::string description,
                              std::string when, Emit emit) {
   return {{LayoutEntry::Kind::attribute, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when)},
+           std::move(when), ""},
           std::move(emit)};
 }
 
 inline Declaration key(Part part, std::string path, std::string unit, std::string description,
                        std::string when, Emit emit) {
   return {{LayoutEntry::Kind::summary, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when)},
+           std::move(when), ""},
           std::move(emit)};
+}
+
+// d with what theory says its value should be (LayoutEntry::theory).
+inline Declaration with_theory(Declaration d, std::string theory) {
+  d.entry.theory = std::move(theory);
+  return d;
 }
 
 // Appends b to a.
@@ -45,5 +51,9 @@ std::vector<Declaration> field_datasets();     // analysis, continuum, compariso
 
 std::vector<Declaration> run_keys();         // provenance, initial, particles, analysis
 std::vector<Declaration> comparison_keys();  // continuum, comparison, sweep
+
+std::vector<Declaration> frame_datasets();  // output_frames.cpp: the animation's record
+std::vector<Declaration> frame_keys();      // and the wave's evolution
+std::vector<Declaration> extreme_keys();    // summary_extremes.cpp: the heaviest shock and cluster, ...
 
 }  // namespace shockgas::app::layout

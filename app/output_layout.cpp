@@ -105,24 +105,11 @@ bool matches_attribute(const std::string& pattern, const std::string& concrete) 
   return matches(pattern.substr(0, p), concrete.substr(0, c), '/');
 }
 
-const char* part_title(Part part) {
-  switch (part) {
-    case Part::provenance:
-      return "Provenance";
-    case Part::initial:
-      return "The initial condition (when particles run)";
-    case Part::particles:
-      return "Particles (when [particles] is present)";
-    case Part::analysis:
-      return "The particles' cooling law and velocity distribution";
-    case Part::continuum:
-      return "Continuum (one group per solver of continuum.solvers)";
-    case Part::compare:
-      return "Particles against continuum (when [compare] and [continuum] are present)";
-    case Part::sweep:
-      return "Sweep (a [sweep] scene's own result)";
-  }
-  return "";
+// "~ {analysis.t_stick_theory}" -> "~ `analysis.t_stick_theory`".
+std::string theory_markdown(std::string text) {
+  for (char& c : text)
+    if (c == '{' || c == '}') c = '`';
+  return text;
 }
 
 std::string cell(const std::string& text) {
@@ -142,13 +129,14 @@ void table(std::ostringstream& out, const std::vector<Declaration>& decls, Part 
     any = true;
     std::string meaning = e.description;
     if (!e.when.empty()) meaning += " (" + e.when + ")";
+    if (!e.theory.empty()) meaning += "; theory: " + theory_markdown(e.theory);
     out << "| `" << e.path << "` | " << (e.unit.empty() ? "" : cell(e.unit)) << " | " << cell(meaning)
         << " |\n";
   }
 }
 
 const std::vector<Part> kParts = {Part::provenance, Part::initial, Part::particles, Part::analysis,
-                                  Part::continuum,  Part::compare, Part::sweep};
+                                  Part::continuum,  Part::compare, Part::animation, Part::sweep};
 
 }  // namespace
 
@@ -157,6 +145,7 @@ const std::vector<Declaration>& dataset_declarations() {
     std::vector<Declaration> d = layout::provenance_datasets();
     layout::append(d, layout::particle_datasets());
     layout::append(d, layout::field_datasets());
+    layout::append(d, layout::frame_datasets());
     return d;
   }();
   return all;
@@ -166,6 +155,8 @@ const std::vector<Declaration>& summary_declarations() {
   static const std::vector<Declaration> all = [] {
     std::vector<Declaration> d = layout::run_keys();
     layout::append(d, layout::comparison_keys());
+    layout::append(d, layout::extreme_keys());
+    layout::append(d, layout::frame_keys());
     return d;
   }();
   return all;
@@ -204,6 +195,28 @@ const LayoutEntry* find_in_layout(LayoutEntry::Kind kind, const std::string& con
       return &d.entry;
   }
   return nullptr;
+}
+
+std::string part_title(Part part) {
+  switch (part) {
+    case Part::provenance:
+      return "Provenance";
+    case Part::initial:
+      return "The initial condition (when particles run)";
+    case Part::particles:
+      return "Particles (when [particles] is present)";
+    case Part::analysis:
+      return "The particles' cooling law and velocity distribution";
+    case Part::continuum:
+      return "Continuum (one group per solver of continuum.solvers)";
+    case Part::compare:
+      return "Particles against continuum (when [compare] and [continuum] are present)";
+    case Part::animation:
+      return "Frames and the wave's evolution (when output.animation = true)";
+    case Part::sweep:
+      return "Sweep (a [sweep] scene's own result)";
+  }
+  return "";
 }
 
 std::string output_layout_markdown() {

@@ -15,7 +15,7 @@
 namespace shockgas::app {
 
 // The parts of a run, in the order they are written.
-enum class Part { provenance, initial, particles, analysis, continuum, compare, sweep };
+enum class Part { provenance, initial, particles, analysis, continuum, compare, animation, sweep };
 
 struct LayoutEntry {
   enum class Kind { dataset, attribute, summary };
@@ -28,6 +28,10 @@ struct LayoutEntry {
   std::string unit;  // "1" for a pure number, "" for text
   std::string description;
   std::string when;  // the condition under which it is written; "" = always (for its part)
+  // What theory says the value should be, where it says anything: a value and a
+  // word of where it holds ("-2/3 (sticky gas)"), or another key's value
+  // ("~ {analysis.t_dissip_theory}"). Reports show it beside the value.
+  std::string theory;
 };
 
 // Hands the values of one declaration to the file or the summary: each call
@@ -65,5 +69,8 @@ const LayoutEntry* find_in_layout(LayoutEntry::Kind kind, const std::string& con
 
 // The declared layout as markdown tables: the generated sections of docs/output.md.
 std::string output_layout_markdown();
+
+// The heading of a part's tables ("Particles (when [particles] is present)").
+std::string part_title(Part part);
 
 }  // namespace shockgas::app

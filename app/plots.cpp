@@ -39,6 +39,10 @@ void run_plot_script(const std::string& script, const char* env_override, const 
 
 void make_plots(const std::string& dir) { run_plot_script("plot_result.py", "SHOCKGAS_PLOT_SCRIPT", dir, "plots"); }
 
+void make_animation(const std::string& dir) {
+  run_plot_script("animate.py", "SHOCKGAS_ANIMATE_SCRIPT", dir, "animation");
+}
+
 void make_bench_charts(const std::string& dir) {
   run_plot_script("plot_bench.py", "SHOCKGAS_PLOT_BENCH_SCRIPT", dir, "bench charts");
 }

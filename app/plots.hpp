@@ -14,6 +14,9 @@ void run_plot_script(const std::string& script, const char* env_override, const 
 // its result files.
 void make_plots(const std::string& dir);
 
+// The animation of a result directory (scripts/animate.py), from its result.h5.
+void make_animation(const std::string& dir);
+
 // The charts of `shockgas bench` (scripts/plot_bench.py), read only from the CSV
 // files of the studies in dir.
 void make_bench_charts(const std::string& dir);

@@ -11,6 +11,7 @@
 #include "plots.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
+#include "report_html.hpp"
 #include "run_internal.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
@@ -105,12 +106,19 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
       r.comparison = run_comparison(scene, initial, *r.particles, r.continuum);
       write(Part::compare);
     }
+    if (scene.output.animation) {
+      r.frames = run_frames(scene, initial, r.particles ? r.particles->frames : std::vector<particles::Snapshot>{},
+                            progress);
+      write(Part::animation);
+    }
     progress.finish();
     h5.close();
     std::ofstream(dir / "report.md") << report_text(r);
   }
   outputs.commit(summary);
   if (options.plots && scene.output.plots) make_plots(dir.string());
+  if (options.plots && scene.output.plots && scene.output.animation) make_animation(dir.string());
+  write_report_html(dir);
   return reduce(r, std::move(summary));
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "frames.hpp"
 #include "shockgas/app/scene.hpp"
 #include "shockgas/compare/particle_analysis.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
@@ -22,6 +23,7 @@ class ProgressBar;
 
 struct ParticleResults {
   particles::EnsembleResult ensemble;
+  std::vector<particles::Snapshot> frames;  // realization 0 at the animation's frame times (frames.hpp)
   compare::ZHistogram histogram;  // the ensemble-mean scaled histogram (empty: bins = 0)
   compare::CoolingAnalysis cooling;
   compare::DistributionAnalysis distribution;
@@ -55,6 +57,7 @@ struct RunResults {
   std::optional<ParticleResults> particles;
   std::vector<ContinuumRun> continuum;
   std::optional<Comparison> comparison;
+  std::optional<Frames> frames;         // when output.animation
   std::vector<VariantResult> variants;  // a sweep's
 };
 

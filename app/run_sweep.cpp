@@ -11,6 +11,7 @@
 #include "partial_outputs.hpp"
 #include "plots.hpp"
 #include "report.hpp"
+#include "report_html.hpp"
 #include "run_internal.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -40,7 +41,11 @@ const ordered_json* lookup(const ordered_json& j, const std::string& dotted) {
 
 std::string table_row(const VariantResult& v, const SweepParams& sweep, std::size_t k) {
   const ordered_json* ours = lookup(v.summary, sweep.reference_key);
-  std::string row = "| " + v.label + " | " + (ours && ours->is_number() ? brief(ours->get<double>()) : "—");
+  const std::string value = !ours               ? "—"
+                            : ours->is_number() ? brief(ours->get<double>())
+                            : ours->is_string() ? ours->get<std::string>()
+                                                : ours->dump();
+  std::string row = "| " + v.label + " | " + value;
   if (!sweep.reference_values.empty())
     row += " | " + (sweep.reference_values[k].empty() ? std::string("—") : sweep.reference_values[k]);
   return row + " |";
@@ -97,6 +102,7 @@ std::string run_sweep(const Scene& scene, const fs::path& dir, const RunOptions&
   outputs.commit(summary);
   write_report(dir, scene, r.variants);
   if (options.plots && scene.output.plots) make_plots(dir.string());
+  write_report_html(dir);
   return dir.string();
 }
 

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "frames.hpp"
 #include "output_layout.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/app/scene.hpp"
@@ -142,6 +143,7 @@ void validate_scene(const Scene& scene) {
     require(scene.continuum.t_end > 0, "continuum.t_end", scene.continuum.t_end,
             "a time > 0 (a scene without [particles] must give continuum.t_end)");
   if (scene.has_compare) validate_compare(scene);
+  check_animation(scene);
 }
 
 }  // namespace

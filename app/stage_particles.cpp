@@ -1,16 +1,46 @@
 // Stage 1: the particle gas (an ensemble of event-driven or exact-hull runs from
 // the scene's initial condition), and what it shows alone: the cooling law and
-// the scaled velocity distribution (compare/particle_analysis.hpp).
+// the scaled velocity distribution (compare/particle_analysis.hpp). An animation
+// adds its frame times to realization 0's snapshots (frames.hpp).
+#include <algorithm>
+
+#include "frames.hpp"
 #include "progress_bar.hpp"
 #include "run_results.hpp"
 
 namespace shockgas::app {
 
+namespace {
+
+bool contains(const std::vector<double>& times, double t) {
+  return std::find(times.begin(), times.end(), t) != times.end();
+}
+
+// The snapshots at frame times go to r.frames; the scene's own stay.
+void split_frames(ParticleResults& r, const Scene& scene, const std::vector<double>& frames) {
+  auto& snaps = r.ensemble.first.snapshots;
+  std::vector<particles::Snapshot> own;
+  for (auto& s : snaps) {
+    if (contains(frames, s.t)) r.frames.push_back(s);
+    if (contains(scene.particles.snapshots, s.t)) own.push_back(std::move(s));
+  }
+  snaps = std::move(own);
+}
+
+}  // namespace
+
 ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress) {
   progress.stage("particles");
+  particles::ParticleParams params = scene.particles;
+  const std::vector<double> frames = scene.output.animation ? frame_times(scene) : std::vector<double>{};
+  params.snapshots.insert(params.snapshots.end(), frames.begin(), frames.end());
+  std::sort(params.snapshots.begin(), params.snapshots.end());
+  params.snapshots.erase(std::unique(params.snapshots.begin(), params.snapshots.end()),
+                         params.snapshots.end());
   ParticleResults r;
-  r.ensemble = particles::run_ensemble(initial, scene.particles, progress.callback());
+  r.ensemble = particles::run_ensemble(initial, params, progress.callback());
   progress.finish();
+  if (!frames.empty()) split_frames(r, scene, frames);
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
   r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r,

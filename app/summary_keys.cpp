@@ -128,22 +128,25 @@ std::vector<Declaration> analysis() {
   using Fit = compare::PowerLawFit;
   using Dist = compare::DistributionAnalysis;
   return {
-      key(p, "analysis.T_exponent", "1",
-          "fitted exponent of T(t) on [t_end / fit_window, t_end] (theory -2/3)",
-          "with 3 or more samples in the window",
-          fit([](const Cooling&, const Fit& f) { return f.exponent; })),
+      with_theory(key(p, "analysis.T_exponent", "1", "fitted exponent of T(t) on [t_end / fit_window, t_end]",
+                      "with 3 or more samples in the window",
+                      fit([](const Cooling&, const Fit& f) { return f.exponent; })),
+                  "-2/3 (sticky gas, t_stick << t << N^(3/2))"),
       key(p, "analysis.T_exponent_error", "1", "its least-squares standard error", "",
           fit([](const Cooling&, const Fit& f) { return f.exponent_error; })),
       key(p, "analysis.T_fit_window", "time", "the fit window [t_min, t_max]", "",
           fit([](const Cooling&, const Fit& f) {
             return Json{f.t_min, f.t_max};
           })),
-      key(p, "analysis.t_dissip", "time",
-          "end of the elastic regime read off d ln T / d ln t (null: not crossed)", "",
-          fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_dissip); })),
-      key(p, "analysis.t_stick", "time",
-          "end of homogeneous cooling read off d ln T / d ln t (null: not crossed)", "",
-          fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_stick); })),
+      with_theory(
+          key(p, "analysis.t_dissip", "time",
+              "end of the elastic regime read off d ln T / d ln t (null: not crossed)", "",
+              fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_dissip); })),
+          "~ {analysis.t_dissip_theory}"),
+      with_theory(key(p, "analysis.t_stick", "time",
+                      "end of homogeneous cooling read off d ln T / d ln t (null: not crossed)", "",
+                      fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_stick); })),
+                  "~ {analysis.t_stick_theory}"),
       key(p, "analysis.t_dissip_theory", "time", "1/eps", "",
           fit([](const Cooling& a, const Fit&) { return a.crossovers.t_dissip_theory; })),
       key(p, "analysis.t_stick_theory", "time", "eps^(-3/2)", "",
@@ -154,14 +157,15 @@ std::vector<Declaration> analysis() {
             if (r.particles && !r.particles->cooling.not_determined.empty())
               out.json(r.particles->cooling.not_determined);
           }),
-      key(p, "analysis.velocity_collapse_distance", "1",
-          "mean L1 distance between the scaled distributions of the late samples (0 = perfect collapse, 2 = "
-          "disjoint)",
-          "with 2 or more late samples",
-          [](const RunResults& r, Emitter& out) {
-            if (r.particles && r.particles->distribution.collapse_distance)
-              out.json(*r.particles->distribution.collapse_distance);
-          }),
+      with_theory(key(p, "analysis.velocity_collapse_distance", "1",
+                      "mean L1 distance between the scaled distributions of the late samples "
+                      "(0 = perfect collapse, 2 = disjoint)",
+                      "with 2 or more late samples",
+                      [](const RunResults& r, Emitter& out) {
+                        if (r.particles && r.particles->distribution.collapse_distance)
+                          out.json(*r.particles->distribution.collapse_distance);
+                      }),
+                  "0 (one scaled distribution)"),
       key(p, "analysis.velocity_distribution_not_determined", "",
           "why the distribution could not be analysed", "when the data refuse it",
           [](const RunResults& r, Emitter& out) {
@@ -171,11 +175,12 @@ std::vector<Declaration> analysis() {
       key(p, "analysis.velocity_tail_zmin", "length/time^(2/3)",
           "start of the tail fit: one standard deviation of z", "",
           distribution([](const Dist& a, Emitter& out) { out.json(a.tail_z_min); })),
-      key(p, "analysis.velocity_tail_exponent", "1",
-          "fitted a in Phi(z) ~ exp(-c |z|^a) (theory 3; null: not determined)", "",
-          distribution([](const Dist& a, Emitter& out) {
-            out.json(a.tail.at_bound ? Json(nullptr) : Json(a.tail.exponent));
-          })),
+      with_theory(key(p, "analysis.velocity_tail_exponent", "1",
+                      "fitted a in Phi(z) ~ exp(-c |z|^a) (null: not determined)", "",
+                      distribution([](const Dist& a, Emitter& out) {
+                        out.json(a.tail.at_bound ? Json(nullptr) : Json(a.tail.exponent));
+                      })),
+                  "3"),
       key(p, "analysis.velocity_tail_exponent_error", "1", "its error (profile least squares)", "",
           distribution([](const Dist& a, Emitter& out) {
             if (!a.tail.at_bound) out.json(a.tail.exponent_error);

@@ -50,4 +50,16 @@ double validity_time(double delta) {
   return delta > 0 ? std::pow(delta, -3.0) : std::numeric_limits<double>::infinity();
 }
 
+double breaking_time(const std::function<double(double)>& v0, double length) {
+  require_above("initial.domain", length, 0.0);
+  constexpr int kPoints = 1 << 16;
+  const double h = length / kPoints;
+  double steepest = 0;  // max(-v0'), by differences centred on the midpoints
+  for (int i = 0; i < kPoints; ++i) {
+    const double right = i + 1 == kPoints ? 0.0 : (i + 1) * h;
+    steepest = std::max(steepest, (v0(i * h) - v0(right)) / h);
+  }
+  return steepest > 0 ? 1.0 / steepest : std::numeric_limits<double>::infinity();
+}
+
 }  // namespace shockgas::compare

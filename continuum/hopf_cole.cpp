@@ -116,6 +116,7 @@ SolverInfo hopf_cole_solver() {
   s.label = s.name + " (viscous, exact)";
   s.colour = "tab:red";
   s.viscous = true;
+  s.direct_in_time = true;
   s.preflight = [](const InitialField&, const ContinuumParams& p, double t_end) { check_input(p, t_end); };
   s.run = solve_hopf_cole;
   return s;

@@ -65,6 +65,7 @@ SolverInfo hopf_lax_solver() {
   s.density = true;
   s.shocks = true;
   s.exact = true;
+  s.direct_in_time = true;
   s.by_default = true;
   s.preflight = [](const InitialField& f, const ContinuumParams& p, double t_end) {
     check_grid(f, p.cells, t_end);

@@ -15,6 +15,7 @@ try:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import numpy as np
+    from plot_evolution import plot_evolution, plot_regimes
 except ImportError as exc:  # the command turns this into a warning
     print(f"plot_result.py: {exc}", file=sys.stderr)
     sys.exit(3)
@@ -27,7 +28,9 @@ def attr(obj, name, default=None):
 
 def save(fig, out_dir, name):
     fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, name), dpi=110)
+    # the first axes' title names the picture in report.html (PNG tEXt "Title")
+    title = next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
+    fig.savefig(os.path.join(out_dir, name), dpi=110, metadata={"Title": title} if title else None)
     plt.close(fig)
 
 
@@ -151,8 +154,10 @@ def plot_sweep(f, out_dir):
         if power is not None:
             ax.loglog(t, T[-1] * (t / t[-1]) ** power, ":", color="gray",
                       label=f"t^{Fraction(power).limit_denominator(12)}")
-        ax.set_xlabel("t")
-        ax.set_ylabel("T(t)")
+        unit = {name: attr(g["particles/" + name], "unit", "") for name in ("t", "T")}
+        ax.set_xlabel(f"time t [{unit['t']}]")
+        ax.set_ylabel(f"temperature T [{unit['T']}]")
+        ax.set_title("temperature of each variant")
         ax.legend(fontsize=8)
         save(fig, out_dir, "temperature.png")
     else:
@@ -192,6 +197,10 @@ def main():
             plot_spacetime(f, out_dir)
         if "continuum" in f:
             plot_fields(f, out_dir)
+        if "animation/evolution" in f:
+            plot_evolution(f, out_dir)
+        if "particles/analysis" in f:
+            plot_regimes(f, out_dir)
 
 
 if __name__ == "__main__":

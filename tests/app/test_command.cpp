@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/app/command.hpp"
+#include "run_command.hpp"
 #include "hdf5_file.hpp"
 #include "shockgas/app/info.hpp"
 
@@ -16,12 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(std::vector<std::string> args) {
-  args.insert(args.begin(), "shockgas");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return run_command(static_cast<int>(argv.size()), argv.data());
-}
+using testing_support::run;
 
 fs::path temp_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("shockgas-test-" + name);

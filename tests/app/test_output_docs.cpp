@@ -14,7 +14,7 @@
 
 #include "hdf5_file.hpp"
 #include "output_layout.hpp"
-#include "shockgas/app/command.hpp"
+#include "run_command.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -29,12 +29,7 @@ std::string read_file(const fs::path& path) {
   return text.str();
 }
 
-int run(std::vector<std::string> args) {
-  args.insert(args.begin(), "shockgas");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return run_command(static_cast<int>(argv.size()), argv.data());
-}
+using testing_support::run;
 
 // Runs `scene` (text) into a fresh directory and returns it.
 fs::path run_scene(const std::string& name, const std::string& scene) {
@@ -58,6 +53,12 @@ const char* kFullScene =
 const char* kSweepScene =
     "[initial]\nN = 200\n[particles]\nt_end = 20\nsamples = 6\nhistogram_bins = 8\n"
     "[sweep]\nvariants = [\"particles.r=0.5\", \"particles.r=0.9\"]\n[output]\nplots = false\n";
+
+// The frames of an animation: particles and two solvers (plots = false: the record, no movie).
+const char* kAnimatedScene =
+    "[initial]\nN = 200\n[particles]\nr = 0.5\nt_end = 20\nsamples = 6\n"
+    "[continuum]\nsolvers = [\"hopf_lax\", \"godunov\"]\ncells = 200\n"
+    "[output]\nplots = false\nanimation = true\nanimation_frames = 5\nanimation_spacing = \"log\"\n";
 
 // The groups and datasets of a file, each with the names of its attributes.
 std::vector<std::pair<std::string, std::vector<std::string>>> objects(const Hdf5File& h5) {
@@ -139,6 +140,10 @@ TEST(OutputDocs, ThePlotScriptReadsARunsFiles) {
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "plot_result.py failed";
   for (const char* png : {"temperature.png", "velocity_distribution.png", "spacetime.png", "fields.png"})
     EXPECT_TRUE(fs::exists(out / png)) << png;
+}
+
+TEST(OutputDocs, AnAnimatedRunWritesTheDeclaredLayout) {
+  expect_file_follows_layout(run_scene("animated", kAnimatedScene), {Part::animation});
 }
 
 TEST(OutputDocs, ASweepWritesTheDeclaredLayout) {

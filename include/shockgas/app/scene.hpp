@@ -2,6 +2,8 @@
 // A scene: one TOML file with a table per part ([initial], [particles],
 // [continuum], [compare], [output]). Which tables are present decides what runs:
 // a scene without [particles] runs no particles, without [continuum] no solver.
+#include <array>
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,10 +26,20 @@ struct SweepParams {
   std::string reference_source;
 };
 
+// How the frames of an animation are spaced in time (app/frames.hpp).
+enum class FrameSpacing { linear, log };
+constexpr std::array<EnumName<FrameSpacing>, 2> enum_names(FrameSpacing) {
+  return {{{FrameSpacing::linear, "linear"}, {FrameSpacing::log, "log"}}};
+}
+
 // Scene table [output].
 struct OutputParams {
   bool plots = true;   // needs /usr/bin/python3 with matplotlib, h5py
   bool fields = true;
+  bool animation = false;  // record frames; animation.mp4 and .gif (app/frames.hpp)
+  std::size_t animation_frames = 60;
+  FrameSpacing animation_spacing = FrameSpacing::linear;
+  double animation_t_min = 0;  // first frame after t = 0 of log spacing; 0 = t_end / 1000
 };
 
 struct Scene {

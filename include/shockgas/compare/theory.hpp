@@ -20,7 +20,20 @@
 // Phi(z) ~ exp(-c |z|^3) (BCDR eq. 6; Frachebourg & Martin, J. Fluid Mech. 417,
 // 323 (2000)). Between shocks v = (x - q) / t (BCDR eq. 7): slope * t = 1.
 // The threshold method is valid while v ~ t^(-1/3) >> delta: t << delta^-3.
+//
+// Three particles on a line without a threshold (delta = 0) collapse -- infinitely
+// many collisions in a finite time -- for r < 7 - 4 sqrt(3) and escape above it
+// (Bernu & Mazighi, J. Phys. A 23, 5745 (1990); McNamara & Young, Phys. Fluids A
+// 4, 496 (1992)).
+//
+// Waves of the inviscid Burgers equation (Whitham, Linear and Nonlinear Waves,
+// 1974, ch. 2): a smooth v0 breaks -- its first shock forms -- at
+// t* = 1 / max(-v0'), where the characteristics from the steepest descent of v0
+// first cross. An isolated N-wave keeps the area A of each lobe (int v dx over
+// it) and its amplitude decays as sqrt(2 A / t); a periodic sawtooth of period
+// l decays as l / (2 t).
 #include <cstddef>
+#include <functional>
 
 namespace shockgas::compare {
 
@@ -30,6 +43,11 @@ inline constexpr const char* kStickyCoolingExponentText = "-2/3";
 inline constexpr double kVelocityScalingExponent = 1.0 / 3.0;  // z = v t^(1/3) (eq. 4)
 inline constexpr double kTailExponent = 3.0;                   // Phi ~ exp(-c |z|^3) (eq. 6)
 inline constexpr double kSawtoothSlopeTimesT = 1.0;            // v = (x - q) / t (eq. 7)
+
+// Three particles; waves.
+inline constexpr double kThreeParticleCollapseR = 0.071796769724490825;  // 7 - 4 sqrt(3)
+inline constexpr double kNWaveAmplitudeExponent = -0.5;                  // amplitude sqrt(2 A / t)
+inline constexpr double kSawtoothAmplitudeExponent = -1.0;               // amplitude l / (2 t)
 
 // eps = (1 - r) / 2. Throws InputError unless 0 <= r <= 1.
 double inelasticity(double r);
@@ -62,5 +80,12 @@ double scaled_velocity(double v, double t);
 
 // delta^-3: the time up to which the threshold method can be trusted (+infinity for delta = 0).
 double validity_time(double delta);
+
+// t* = 1 / max(-v0') of a velocity v0 on [0, length) (periodic), the slope taken
+// by centred differences on 2^16 points: relative error O((h / wavelength)^2),
+// 1.5e-9 for a sine of period 1 (its steepest point falls between samples).
+// +infinity where v0 nowhere decreases; a jump J down gives t* = h / J with
+// h = length / 2^16 (a shock at once, to the sampling).
+double breaking_time(const std::function<double(double)>& v0, double length);
 
 }  // namespace shockgas::compare

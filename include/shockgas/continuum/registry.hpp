@@ -29,6 +29,10 @@ struct SolverInfo {
   bool viscous = false;     // solves at viscosity continuum.nu
   bool exact = false;       // the exact inviscid solution: the others' L1 errors are measured against it
   bool by_default = false;  // run when a scene does not name continuum.solvers
+  // Evaluates its fields at any t directly (closed form in t, no marching): the
+  // fields at several times are one evaluation each. A solver without it marches,
+  // and continues from its own cell averages at each output time (series.hpp).
+  bool direct_in_time = false;
   // Its own limits for these data, parameters and end time (CFL bound, cells
   // against nu, ...), checked without solving; InputError naming the key.
   std::function<void(const InitialField&, const ContinuumParams&, double t_end)> preflight;

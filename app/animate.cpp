@@ -1,0 +1,29 @@
+// shockgas animate DIR (animate.hpp).
+#include "animate.hpp"
+
+#include <filesystem>
+
+#include "hdf5_file.hpp"
+#include "plots.hpp"
+#include "report_html.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+bool has_frames(const std::string& result_path) {
+  for (const auto& d : Hdf5File::open(result_path).datasets())
+    if (d.path == "/animation/t") return true;
+  return false;
+}
+
+void animate(const std::string& dir) {
+  const std::string result = (std::filesystem::path(dir) / "result.h5").string();
+  require(std::filesystem::is_regular_file(result), "DIR", dir,
+          "a run's output directory, holding result.h5");
+  require(has_frames(result), "output.animation", std::string("false"),
+          "true: the run must record its frames (run the scene again with --set output.animation=true)");
+  make_animation(dir);
+  write_report_html(dir);
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,99 @@
+// report.html (app/report_html.hpp): every summary key with its declared
+// meaning and theory, nothing fetched from outside, a sweep's reference table;
+// and the pieces of the page (app/html_page.hpp).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "html_page.hpp"
+#include "output_layout.hpp"
+#include "run_command.hpp"
+
+namespace shockgas::app {
+namespace {
+
+namespace fs = std::filesystem;
+using testing_support::run;
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+fs::path run_scene(const std::string& name, const std::string& scene) {
+  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-html-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.toml") << scene;
+  EXPECT_EQ(run({"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(), "-q", "--no-plots"}),
+            0);
+  return dir / "out";
+}
+
+const char* kGas =
+    "[scene]\ndescription = \"a gas & its <shocks>\"\n[initial]\nN = 400\n[particles]\nr = 0.9\nt_end = 200\n"
+    "samples = 20\n[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 400\n[compare]\nfit_window = 4\n";
+
+TEST(ReportHtml, ShowsEverySummaryKeyWithItsMeaningAndTheory) {
+  const fs::path out = run_scene("gas", kGas);
+  const std::string page = read_file(out / "report.html");
+  EXPECT_NE(page.find("a gas &amp; its &lt;shocks&gt;"), std::string::npos);  // the description, escaped
+  for (const char* key :
+       {"analysis.T_exponent", "compare.matched_mass_fraction", "continuum.hopf_lax.mass_drift"}) {
+    EXPECT_NE(page.find(std::string("<code>") + key + "</code>"), std::string::npos) << key;
+    const LayoutEntry* e = find_in_layout(LayoutEntry::Kind::summary, key);
+    ASSERT_TRUE(e);
+    EXPECT_NE(page.find(html::escape(e->description)), std::string::npos) << key;
+    EXPECT_NE(page.find(html::escape(e->theory)), std::string::npos) << key;
+  }
+  // a theory that names another key shows that key's value: t_dissip ~ 1/eps = 20 at r = 0.9
+  EXPECT_NE(page.find("~ 20 time"), std::string::npos);
+  // nothing but what it carries: no address to fetch, and a policy refusing any
+  EXPECT_EQ(page.find("://"), std::string::npos);
+  EXPECT_EQ(page.find(" src=\"data:"), std::string::npos);  // --no-plots: no picture to embed
+  EXPECT_NE(page.find("default-src 'none'"), std::string::npos);
+}
+
+TEST(ReportHtml, SweepSetsItsResultBesideTheReference) {
+  const fs::path out = run_scene(
+      "sweep",
+      "[initial]\nN = 200\n[particles]\nt_end = 20\nsamples = 6\n[sweep]\nvariants = [\"particles.r=0.5\", "
+      "\"particles.r=0.9\"]\nreference_key = \"particles.stop\"\nreference_values = [\"completed\", \"\"]\n");
+  const std::string page = read_file(out / "report.html");
+  EXPECT_NE(page.find("<td class=\"value\">completed</td><td>completed</td>"), std::string::npos);
+  EXPECT_NE(page.find("<td class=\"value\">completed</td><td>—</td>"), std::string::npos);
+  EXPECT_NE(page.find("href=\"0-particles.r_0.5/report.html\""), std::string::npos);
+}
+
+TEST(HtmlPage, EscapesAndEmbeds) {
+  EXPECT_EQ(html::escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+  const fs::path file = fs::temp_directory_path() / "shockgas-test-html-bytes";
+  std::ofstream(file, std::ios::binary) << "Man";  // the base64 textbook example
+  EXPECT_EQ(html::data_uri(file, "text/plain"), "data:text/plain;base64,TWFu");
+  std::ofstream(file, std::ios::binary) << "Ma";
+  EXPECT_EQ(html::data_uri(file, "text/plain"), "data:text/plain;base64,TWE=");
+}
+
+TEST(HtmlPage, ReadsThePngTitle) {
+  // A PNG's signature, then a tEXt chunk "Title\0..." (the CRC is not checked), then IEND.
+  auto chunk = [](const std::string& type, const std::string& data) {
+    std::string c;
+    for (int shift : {24, 16, 8, 0}) c += static_cast<char>((data.size() >> shift) & 0xff);
+    return c + type + data + std::string(4, '\0');
+  };
+  const fs::path png = fs::temp_directory_path() / "shockgas-test-html.png";
+  std::ofstream(png, std::ios::binary)
+      << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("tEXt", std::string("Title\0fields at t = 1", 21))
+      << chunk("IEND", "");
+  EXPECT_EQ(html::png_title(png).value_or("(none)"), "fields at t = 1");
+  std::ofstream(png, std::ios::binary) << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("IEND", "");
+  EXPECT_FALSE(html::png_title(png));
+}
+
+}  // namespace
+}  // namespace shockgas::app

@@ -1,0 +1,27 @@
+# What a lecture room sees, label `browser` (part of the default `ctest -LE slow`):
+# the report.html of two gallery runs opened in headless Chromium
+# (tests/browser/check_report_html.py), and the cooling scene's animation
+# (tests/browser/check_animation.py: frames, size, the file plays). Both need
+# Debian's /usr/bin/python3 with its packages, and Chromium or ffmpeg; where
+# one is missing the test is skipped with a message (exit 77).
+set(browser_out ${PROJECT_BINARY_DIR}/browser-tests)
+set(gallery ${PROJECT_SOURCE_DIR}/data/scenes/gallery)
+set(checks ${CMAKE_CURRENT_SOURCE_DIR}/browser)
+set(python "[ -x /usr/bin/python3 ] || { echo 'skipped: no /usr/bin/python3 (scripts/setup)'; exit 77; }")
+
+# Two runs with their plots and a short animation (12 frames), then their pages.
+add_test(NAME browser.report_html
+         COMMAND sh -c "${python}; rm -rf '${browser_out}/report' && \
+'$<TARGET_FILE:shockgas>' run '${gallery}/sine.toml' --set output.animation_frames=12 --out '${browser_out}/report/sine' -q && \
+'$<TARGET_FILE:shockgas>' run '${gallery}/riemann.toml' --set output.animation_frames=12 --out '${browser_out}/report/riemann' -q && \
+/usr/bin/python3 '${checks}/check_report_html.py' '${browser_out}/report/sine' '${browser_out}/report/riemann'")
+
+# The cooling scene as it stands, its frames recorded by the run and drawn by `shockgas animate`.
+add_test(NAME browser.cooling_animation
+         COMMAND sh -c "${python}; rm -rf '${browser_out}/cooling' && \
+'$<TARGET_FILE:shockgas>' run '${gallery}/cooling.toml' --no-plots --out '${browser_out}/cooling' -q && \
+'$<TARGET_FILE:shockgas>' animate '${browser_out}/cooling' && \
+/usr/bin/python3 '${checks}/check_animation.py' '${browser_out}/cooling'")
+
+set_tests_properties(browser.report_html browser.cooling_animation PROPERTIES LABELS browser SKIP_RETURN_CODE 77
+                     TIMEOUT 300 WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
