@@ -49,8 +49,9 @@ def _eligible_at_the_comparison(ax, summary):
     if "t" not in c or "n_clusters" not in c:
         return
     m = c.get("min_mass", 0)
-    ax.plot([c["t"]], [max(c["n_clusters"], 0.5)], **dict(CLUSTER, ms=8),
-            label=f"comparison: clusters of mass >= {m:.3g} (criteria at its time)")
+    if c["n_clusters"] > 0:  # (none to draw on a log axis otherwise)
+        ax.plot([c["t"]], [c["n_clusters"]], **dict(CLUSTER, ms=8),
+                label=f"comparison: clusters of mass >= {m:.3g} (criteria at its time)")
     if "n_shocks_exact" in c:  # one number: a short dashed level around its time
         ax.plot([c["t"] / 2, c["t"] * 1.5], [c["n_shocks_exact"]] * 2, **EXACT,
                 label=f"exact: expected shocks of mass >= {m:.3g} at that time")

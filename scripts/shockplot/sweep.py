@@ -6,7 +6,7 @@ import numpy as np
 
 from .common import EXACT, GUIDE, attr, draw_guide, finish, fraction, label, power_law, unit
 from .distribution import axes_labels, draw_exact
-from .temperature import ALPHA_NAME, T_NAME, TIME_NAME
+from .temperature import ALPHA_NAME, T_NAME, TIME_NAME, exponent_ticks
 
 
 def _variants(f, needs):
@@ -52,6 +52,7 @@ def figure_sweep_temperature(f, summary):
     else:
         draw_guide(ax_T, t, T, power, (t[-1] / 10, t[-1]), (t[0], t[-1]), "sticky gas")
     ax_a.axhline(power, ls="--", **GUIDE, label=f"theory: exponent {fraction(power)} (sticky gas)")
+    exponent_ticks(ax_a, [power])
     ax_T.set_xscale("log")
     ax_T.set_yscale("log")
     ax_T.set_ylabel(label(T_NAME, unit(g["particles/T"])))

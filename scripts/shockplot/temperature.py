@@ -66,7 +66,12 @@ def draw_levels(ax, an):
         ax.axhline(level, ls="--", **GUIDE,
                    label="theory: exponent 0 (elastic), -2 (homogeneous cooling), -2/3 (sticky gas)" if k == 0
                    else None)
-    ticks = sorted(set([-2.0, -1.5, -1.0, 0.0] + levels))
+    exponent_ticks(ax, levels)
+
+
+def exponent_ticks(ax, levels):
+    """Ticks of the exponent axis, the theory levels among them, as fractions."""
+    ticks = sorted(set([-2.0, -1.5, -1.0, 0.0] + list(levels)))
     ax.set_yticks(ticks, [fraction(tick) for tick in ticks])
 
 
