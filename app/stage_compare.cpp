@@ -25,8 +25,8 @@ const continuum::ContinuumResult& compared_field(const Scene& scene,
 std::vector<double> mass_edges(const std::vector<particles::Cluster>& clusters) {
   double heaviest = 0;
   for (const auto& c : clusters) heaviest = std::max(heaviest, c.m);
-  std::vector<double> edges{1.5};
-  for (double m = 2; edges.back() <= heaviest; m *= 2) edges.push_back(m + 0.5);
+  std::vector<double> edges{1.5, 2.5};  // at least one bin, when no cluster is heavier than a particle
+  for (double m = 4; edges.back() <= heaviest; m *= 2) edges.push_back(m + 0.5);
   return edges;
 }
 
