@@ -12,19 +12,14 @@
 #include <vector>
 
 #include "hdf5_file.hpp"
-#include "shockgas/app/command.hpp"
+#include "run_command.hpp"
 
 namespace shockgas::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-int run(std::vector<std::string> args) {
-  args.insert(args.begin(), "shockgas");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return run_command(static_cast<int>(argv.size()), argv.data());
-}
+using testing_support::run;
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path);
