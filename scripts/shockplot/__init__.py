@@ -1,17 +1,17 @@
 """The plots of a shockgas result directory, read only from its result files
 (result.h5, summary.json). figures() builds them (the tests inspect these);
-draw_all() writes them as PNGs. One module per picture; the teaching plots of
-an animated run and of a cooling gas's regimes come from plot_evolution.py."""
+draw_all() writes them as PNGs. One module per picture."""
 import json
 import os
 
 import h5py
-from plot_evolution import plot_evolution, plot_regimes
 
 from .clusters import figure_clusters
 from .common import save
 from .distribution import figure_distribution
+from .evolution import figure_evolution
 from .fields import figure_fields
+from .regimes import figure_regimes
 from .spacetime import figure_spacetime
 from .sweep import figure_sweep_distribution, figure_sweep_temperature
 from .temperature import figure_temperature
@@ -38,6 +38,10 @@ def figures(f, summary):
         drawn["fields.png"] = figure_fields(f, summary)
     if "particles/n_clusters" in f or "compare/cluster_mass_edges" in f:
         drawn["clusters.png"] = figure_clusters(f, summary)
+    if "animation/evolution" in f:
+        drawn["evolution.png"] = figure_evolution(f, summary)
+    if "particles/analysis" in f:
+        drawn["regimes.png"] = figure_regimes(f, summary)
     return {name: fig for name, fig in drawn.items() if fig is not None}
 
 
@@ -46,7 +50,3 @@ def draw_all(out_dir):
     with h5py.File(os.path.join(out_dir, "result.h5"), "r") as f:
         for name, fig in figures(f, summary).items():
             save(fig, out_dir, name)
-        if "animation/evolution" in f:
-            plot_evolution(f, out_dir)
-        if "particles/analysis" in f:
-            plot_regimes(f, out_dir)

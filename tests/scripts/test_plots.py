@@ -55,6 +55,9 @@ solvers = ["godunov", "hopf_cole", "pressureless", "hopf_lax"]
 cells = 128
 t_end = 0.5
 nu = 0.02
+[output]
+animation = true
+animation_frames = 21
 """
 
 # Random positions (no exact law: guides instead) and r = 0.95, whose
@@ -85,7 +88,7 @@ variants = ["particles.r=0", "particles.r=0.5"]
 
 def run(tmp, name, scene):
     path = tmp / f"{name}.toml"
-    path.write_text(scene + "[output]\nplots = false\n")
+    path.write_text(scene + ("" if "[output]" in scene else "[output]\n") + "plots = false\n")
     out = tmp / name
     command = os.environ.get("SHOCKGAS", os.path.join(SCRIPTS, "..", "build", "shockgas"))
     subprocess.run([command, "run", str(path), "--out", str(out), "-q"], check=True, stdout=subprocess.DEVNULL)
@@ -257,6 +260,25 @@ def test_clusters_against_the_exact_count_masses_and_shocks(runs, figures):
     with h5py.File(runs["gas"] / "result.h5", "r") as f:
         coefficient = f["particles/analysis"].attrs["n_shocks_exact_coefficient"]
     assert abs(coefficient / 600 - 1.9157) < 5e-5  # 1.916 N for uniform velocities on [-1, 1]
+
+
+def test_the_wave_in_time_against_the_exact_breaking_time(runs, figures):
+    fig = figures["sine"]["evolution.png"]
+    legend = the_legend(fig)
+    exact = [t for t in legend if t.startswith("exact: t* - t")]
+    assert len(exact) == 1 and f"{1 / (2 * np.pi):.4g}" in exact[0]  # t* = 1 / max(-v0') = 1 / (2 pi)
+    assert any(t.startswith("theory: 1, an isolated wave") for t in legend)
+    for ax in panels(fig):
+        assert ax.get_legend() is None
+
+
+def test_the_regimes_of_a_cooling_gas(figures):
+    fig = figures["cooling"]["regimes.png"]
+    legend = the_legend(fig)
+    for regime in ("elastic", "homogeneous cooling", "sticky gas (clusters)"):
+        assert f"theory: {regime} regime" in legend
+    assert any(t.startswith("measured t_stick") for t in legend)
+    assert any(t.startswith("theory: homogeneous cooling") for t in legend)
 
 
 def test_the_script_writes_every_picture(runs):
