@@ -3,6 +3,7 @@
 #include <ctime>
 
 #include "layout_declarations.hpp"
+#include "shockgas/continuum/field.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app::layout {
@@ -139,6 +140,14 @@ std::vector<Declaration> records() {
                       histogram([](const compare::ZHistogram& h, Emitter& out) {
                         out.matrix(h.density, h.t.size(), h.bins);
                       })));
+  d.push_back(dataset(p, "/particles/histogram/exact", "time^(2/3)/length",
+                      "the exact mass-weighted law of z of the sticky gas (r = 0) from this white noise, "
+                      "averaged over each bin (compare/cluster_velocity_law.hpp): the fixed point the gas "
+                      "approaches at every r",
+                      "when particles.histogram_bins > 0 and the start is white noise on a lattice",
+                      from_particles([](const ParticleResults& pr, Emitter& out) {
+                        if (!pr.histogram_exact.empty()) out.values(pr.histogram_exact);
+                      })));
   const char* st = "when particles.spacetime";
   auto spacetime = [](auto f) {
     return [f](const RunResults& r, Emitter& out) {
@@ -207,10 +216,32 @@ std::vector<Declaration> particle_datasets() {
       if (r.scene->has_particles && r.initial) out.values(r.initial->bodies().*data);
     };
   };
+  // The continuum's initial cell averages (continuum::cell_averages), when a solver runs.
+  const char* cells = "when [continuum] runs";
+  const char* bodies = "when [particles] runs";
+  enum class Cells { centres, velocity, density };
+  auto initial_cells = [](Cells column) {
+    return [column](const RunResults& r, Emitter& out) {
+      if (!r.scene->has_continuum || !r.initial) return;
+      const auto& f = r.initial->field();
+      if (column == Cells::centres)
+        return out.values(continuum::cell_centres(f.length, r.scene->continuum.cells));
+      const continuum::CellAverages a = continuum::cell_averages(f, r.scene->continuum.cells);
+      out.values(column == Cells::velocity ? a.v : a.rho);
+    };
+  };
   std::vector<Declaration> d = {
-      dataset(p, "/initial/x", "length", "initial positions (realization 0)", "", initial(&Bodies::x)),
-      dataset(p, "/initial/v", "length/time", "initial velocities (realization 0)", "", initial(&Bodies::v)),
-      dataset(p, "/initial/m", "mass", "initial masses (realization 0)", "", initial(&Bodies::m)),
+      dataset(p, "/initial/x", "length", "initial positions (realization 0)", bodies, initial(&Bodies::x)),
+      dataset(p, "/initial/v", "length/time", "initial velocities (realization 0)", bodies,
+              initial(&Bodies::v)),
+      dataset(p, "/initial/m", "mass", "initial masses (realization 0)", bodies, initial(&Bodies::m)),
+      dataset(p, "/initial/cells/x", "length", "cell centres of the continuum's grid", cells,
+              initial_cells(Cells::centres)),
+      dataset(p, "/initial/cells/v", "length/time",
+              "the initial velocity averaged over each cell: what every solver starts from", cells,
+              initial_cells(Cells::velocity)),
+      dataset(p, "/initial/cells/rho", "mass/length", "the initial density averaged over each cell", cells,
+              initial_cells(Cells::density)),
       dataset(Part::particles, "/particles/t", "time", "log-spaced sample times", "",
               from_particles([](const ParticleResults& pr, Emitter& out) { out.values(pr.ensemble.t); })),
       dataset(Part::particles, "/particles/count", "1", "realizations that reached each sample", "",

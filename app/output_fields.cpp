@@ -31,6 +31,12 @@ std::vector<Declaration> analysis() {
       if (r.particles) out.number(value);
     };
   };
+  auto exact = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      if (r.particles && r.particles->exact) f(*r.particles->exact, out);
+    };
+  };
+  const char* white_noise = "when the start is white noise on a lattice";
   return {
       dataset(p, "/particles/analysis/T_fit_t", "time", "window of the late-time power-law fit", "",
               fitted([](const auto&, const compare::PowerLawFit& f, Emitter& out) {
@@ -52,6 +58,19 @@ std::vector<Declaration> analysis() {
                 "theory: T ~ t^(-2/3) in the sticky-gas regime", "", theory(compare::kStickyCoolingExponent)),
       attribute(p, "/particles/analysis@T_cooling_exponent_theory", "1",
                 "theory: T ~ t^-2 in homogeneous cooling", "", theory(compare::kHomogeneousCoolingExponent)),
+      attribute(
+          p, "/particles/analysis@T_amplitude_exact", "length^2/time^(4/3)",
+          "exact T t^(2/3) of the sticky gas (r = 0) from this white noise, the late-time law of every r "
+          "(compare/white_noise_references.hpp)",
+          white_noise, exact([](const compare::WhiteNoiseReferences& w, Emitter& out) {
+            out.number(w.temperature_amplitude);
+          })),
+      attribute(p, "/particles/analysis@n_shocks_exact_coefficient", "time^(2/3)",
+                "C of the exact number of shocks C t^(-2/3) of Burgers turbulence from this white noise, the "
+                "small ones included (compare/white_noise_references.hpp)",
+                white_noise, exact([](const compare::WhiteNoiseReferences& w, Emitter& out) {
+                  out.number(w.shock_count_coefficient);
+                })),
   };
 }
 
@@ -101,6 +120,10 @@ std::vector<Declaration> continuum() {
                 each([info](const Result& c, Emitter& out) { out.text(info(c).label, {c.solver}); })),
       attribute(p, "/continuum/{solver}@colour", "", "the solver's plot colour (its registration)", "",
                 each([info](const Result& c, Emitter& out) { out.text(info(c).colour, {c.solver}); })),
+      attribute(
+          p, "/continuum/{solver}@exact", "1",
+          "1 for the exact solver (its registration), else 0: the plots draw it black and dashed as exact",
+          "", each([info](const Result& c, Emitter& out) { out.number(info(c).exact ? 1 : 0, {c.solver}); })),
       attribute(p, "/continuum/{solver}@t", "time", "time of the fields", "",
                 each([](const Result& c, Emitter& out) { out.number(c.t, {c.solver}); })),
       attribute(p, "/continuum/{solver}@method", "", "which path ran and why", "",
@@ -129,8 +152,14 @@ std::vector<Declaration> comparison() {
               "particle mass deposited on the grid (compare.deposit)", "",
               snap([](const Snap& c, Emitter& out) { out.values(c.particle_fields.rho); })),
       dataset(p, "/compare/v_particles", "length/time",
-              "particle momentum / mass on the grid; empty cells interpolated between occupied ones", "",
-              snap([](const Snap& c, Emitter& out) { out.values(c.particle_fields.v); })),
+              "particle momentum / mass in the cells with mass (/compare/occupied = 1); an empty cell holds "
+              "the velocity interpolated linearly (periodically) between its occupied neighbours, not data",
+              "", snap([](const Snap& c, Emitter& out) { out.values(c.particle_fields.v); })),
+      dataset(p, "/compare/occupied", "1",
+              "1 where particle mass was deposited in the cell, 0 where /compare/v_particles is interpolated",
+              "", snap([](const Snap& c, Emitter& out) {
+                out.values(column(c.particle_fields.mass, [](double m) { return m > 0 ? 1.0 : 0.0; }));
+              })),
       dataset(p, "/compare/clusters_x", "length", "cluster positions", "",
               snap([](const Snap& c, Emitter& out) {
                 out.values(column(c.clusters, [](auto& k) { return k.x; }));
@@ -153,10 +182,38 @@ std::vector<Declaration> comparison() {
               snap([](const Snap& c, Emitter& out) {
                 out.values(column(c.shocks, [](auto& s) { return s.jump; }));
               })),
+      dataset(p, "/compare/matched_shock", "1", "each matched pair's shock: its index in /compare/shocks_x",
+              "", snap([](const Snap& c, Emitter& out) {
+                out.values(column(c.match.pairs, [](auto& q) { return static_cast<double>(q.shock); }));
+              })),
+      dataset(p, "/compare/matched_cluster", "1",
+              "each matched pair's cluster: its index in /compare/clusters_x", "",
+              snap([](const Snap& c, Emitter& out) {
+                out.values(column(c.match.pairs, [](auto& q) { return static_cast<double>(q.cluster); }));
+              })),
       dataset(p, "/compare/matched_position_error", "length", "x_cluster - x_shock of each matched pair", "",
               snap([](const Snap& c, Emitter& out) {
                 out.values(column(c.match.pairs, [](auto& q) { return q.position_error; }));
               })),
+      dataset(p, "/compare/cluster_mass_edges", "mass",
+              "bin edges 1.5, 2.5, 4.5, ..., 2^k + 0.5 of the clusters' masses (a lone particle is not a "
+              "cluster)",
+              "",
+              [](const RunResults& r, Emitter& out) {
+                if (r.comparison) out.values(r.comparison->mass_edges);
+              }),
+      dataset(p, "/compare/cluster_mass_count", "1", "clusters of the particle state in each mass bin", "",
+              [](const RunResults& r, Emitter& out) {
+                if (r.comparison) out.values(r.comparison->mass_count);
+              }),
+      dataset(
+          p, "/compare/cluster_mass_exact", "1",
+          "the exact expected number of shocks of Burgers turbulence from this white noise in each mass bin "
+          "(compare/shock_mass_law.hpp)",
+          "when the start is white noise on a lattice",
+          [](const RunResults& r, Emitter& out) {
+            if (r.comparison && !r.comparison->mass_exact.empty()) out.values(r.comparison->mass_exact);
+          }),
       dataset(p, "/compare/sawtooth_slope_times_t", "1",
               "slope of v on each ramp between shocks, times t (theory: 1)", "",
               snap([](const Snap& c, Emitter& out) {
@@ -217,6 +274,20 @@ std::vector<Declaration> sweep() {
               each(hist([](const compare::ZHistogram& h, Emitter& out, const auto& at) {
                 out.matrix(h.density, h.t.size(), h.bins, at);
               }))),
+      dataset(p, "/sweep/{k}/particles/histogram/exact", "time^(2/3)/length",
+              "variant k: the exact mass-weighted law of z of the sticky gas on the bins (as "
+              "/particles/histogram/exact)",
+              "when particles.histogram_bins > 0 and the start is white noise on a lattice",
+              each([](const VariantResult& v, Emitter& out, const auto& at) {
+                if (!v.histogram_exact.empty()) out.values(v.histogram_exact, at);
+              })),
+      attribute(p, "/sweep/{k}/particles@T_amplitude_exact", "length^2/time^(4/3)",
+                "variant k: exact T t^(2/3) of the sticky gas (as /particles/analysis@T_amplitude_exact)",
+                "when the start is white noise on a lattice",
+                each([](const VariantResult& v, Emitter& out, const auto& at) {
+                  if (v.temperature_amplitude_exact && !v.t.empty())
+                    out.number(*v.temperature_amplitude_exact, at);
+                })),
   };
 }
 

@@ -202,7 +202,7 @@ std::string part_title(Part part) {
     case Part::provenance:
       return "Provenance";
     case Part::initial:
-      return "The initial condition (when particles run)";
+      return "The initial condition";
     case Part::particles:
       return "Particles (when [particles] is present)";
     case Part::analysis:

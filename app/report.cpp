@@ -15,6 +15,10 @@ std::string brief(double value) {
   return buf;
 }
 
+std::string percent(double fraction) {
+  return std::isfinite(fraction) ? brief(100 * fraction) + " %" : "nan";
+}
+
 namespace {
 
 void particles_part(std::ostream& out, const Scene& scene, const particles::EnsembleResult& e) {
@@ -55,7 +59,7 @@ void cooling_part(std::ostream& out, const compare::CoolingAnalysis& a) {
 
 void distribution_part(std::ostream& out, const compare::DistributionAnalysis& a) {
   if (a.collapse_distance)
-    out << "## Velocity distribution\n\n- Collapse of P(v,t) t^(-1/3) against z = v t^(1/3) over "
+    out << "## Velocity distribution\n\n- Collapse of P(v,t) t^(-1/3) against z = (v - <v>) t^(1/3) over "
         << a.late.size() << " times in [" << brief(a.late.front().t) << ", " << brief(a.late.back().t)
         << "]: mean L1 distance " << brief(*a.collapse_distance)
         << " (0 = perfect collapse, 2 = disjoint).\n";
@@ -79,9 +83,12 @@ void continuum_part(std::ostream& out, const Scene& scene, const std::vector<Con
   for (const auto& run : runs) {
     const auto& r = run.result;
     out << "- `" << r.solver << "`: " << r.x.size() << " cells, " << brief(r.wall_seconds) << " s";
-    if (run.l1_error_v) {
-      out << "; L1 distance to the exact Hopf-Lax solution: v " << brief(*run.l1_error_v);
-      if (run.l1_error_rho) out << ", rho " << brief(*run.l1_error_rho);
+    if (run.l1_v) {
+      out << "; L1 distance to the exact solution per unit length: v " << brief(run.l1_v->per_length) << " ("
+          << percent(run.l1_v->relative) << " of the exact v's variation about its mean)";
+      if (run.l1_rho)
+        out << ", rho " << brief(run.l1_rho->per_length) << " (" << percent(run.l1_rho->relative)
+            << " of the mass misplaced)";
     }
     if (!r.method_note.empty()) out << " (" << r.method_note << ")";
     out << "\n";
@@ -98,7 +105,9 @@ void comparison_part(std::ostream& out, const Scene& scene, const Comparison& cm
   out << "| figure of merit | value | theory / ideal |\n|---|---|---|\n";
   out << "| shocks (mass >= " << brief(c.min_mass) << ") | " << c.n_shocks << " | N t^(-2/3) = "
       << brief(std::round(compare::expected_shock_count(static_cast<double>(scene.initial.N), c.t)))
-      << " (ratio " << brief(c.shock_count_ratio) << ") |\n";
+      << " (ratio " << brief(c.shock_count_ratio) << ")";
+  if (cmp.n_shocks_exact) out << "; exact for this white noise: " << brief(*cmp.n_shocks_exact);
+  out << " |\n";
   out << "| clusters (mass >= " << brief(c.min_mass) << ") | " << c.n_clusters << " | = shocks |\n";
   out << "| matched cluster mass fraction | " << brief(c.match.matched_mass_fraction) << " | 1 |\n";
   out << "| largest matched position error | " << brief(c.match.max_position_error) << " | 0 |\n";
@@ -113,8 +122,7 @@ void comparison_part(std::ostream& out, const Scene& scene, const Comparison& cm
 std::string report_text(const RunResults& r) {
   const Scene& scene = *r.scene;
   std::ostringstream out;
-  out << "# shockgas report: " << scene.name << "\n\n";
-  if (!scene.description.empty()) out << scene.description << "\n\n";
+  out << report_header(scene);
   if (r.particles) {
     particles_part(out, scene, r.particles->ensemble);
     cooling_part(out, r.particles->cooling);

@@ -45,6 +45,8 @@ VariantResult reduce(const RunResults& r, nlohmann::ordered_json summary) {
     v.T = r.particles->ensemble.T.mean;
     v.T_stderr = r.particles->ensemble.T.stderr_;
     v.histogram = r.particles->histogram;
+    v.histogram_exact = r.particles->histogram_exact;
+    if (r.particles->exact) v.temperature_amplitude_exact = r.particles->exact->temperature_amplitude;
   }
   return v;
 }

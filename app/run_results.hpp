@@ -11,8 +11,10 @@
 
 #include "frames.hpp"
 #include "shockgas/app/scene.hpp"
+#include "shockgas/compare/field_distance.hpp"
 #include "shockgas/compare/particle_analysis.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
+#include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/particles/simulate.hpp"
@@ -27,19 +29,30 @@ struct ParticleResults {
   compare::ZHistogram histogram;  // the ensemble-mean scaled histogram (empty: bins = 0)
   compare::CoolingAnalysis cooling;
   compare::DistributionAnalysis distribution;
+  // The exact inviscid references of a white-noise start on a lattice (else none),
+  // and the exact mass-weighted law of z averaged over the histogram's bins.
+  std::optional<compare::WhiteNoiseReferences> exact;
+  std::vector<double> histogram_exact;
 };
 
 struct ContinuumRun {
   continuum::ContinuumResult result;
   std::optional<double> mass_drift;    // sum rho dx at t over its initial value, minus 1 (if rho)
-  std::optional<double> l1_error_v;    // sum |v - v_exact| dx against the exact solver on the same grid
-  std::optional<double> l1_error_rho;  // the same for rho, where both have it
+  // L1 distances to the exact solver on the same grid (compare/field_distance.hpp):
+  // v relative to the exact v's variation about its mean, rho relative to the mass.
+  std::optional<compare::L1Distance> l1_v;
+  std::optional<compare::L1Distance> l1_rho;  // where both have a density
 };
 
 struct Comparison {
   std::string solver;  // compare.solver
   compare::SnapshotComparison snapshot;
   std::string note;  // set if the solver was re-run to the particles' final time
+  // The clusters' masses in bins of doubling width (edges 1.5, 2.5, 4.5, 8.5, ...
+  // particle masses: a lone particle is not a cluster), and for a white-noise
+  // start the exact expected number of shocks in each bin and of mass >= min_mass.
+  std::vector<double> mass_edges, mass_count, mass_exact;
+  std::optional<double> n_shocks_exact;
 };
 
 // A variant of a sweep, reduced to what the side-by-side needs: its summary and
@@ -49,6 +62,8 @@ struct VariantResult {
   nlohmann::ordered_json summary;
   std::vector<double> t, T, T_stderr;  // ensemble-mean T(t) (empty if no particles ran)
   compare::ZHistogram histogram;
+  std::vector<double> histogram_exact;                // as ParticleResults
+  std::optional<double> temperature_amplitude_exact;  // T t^(2/3) of the sticky gas, white noise only
 };
 
 struct RunResults {

@@ -54,8 +54,7 @@ std::string table_row(const VariantResult& v, const SweepParams& sweep, std::siz
 void write_report(const fs::path& dir, const Scene& scene, const std::vector<VariantResult>& variants) {
   const auto& sweep = scene.sweep;
   std::ofstream out(dir / "report.md");
-  out << "# shockgas report: " << scene.name << "\n\n";
-  if (!scene.description.empty()) out << scene.description << "\n\n";
+  out << report_header(scene);
   if (!sweep.reference_key.empty()) {
     out << "| variant | " << sweep.reference_key << " (shockgas)"
         << (sweep.reference_values.empty() ? "" : " | reference") << " |\n|---|---|"

@@ -1,8 +1,6 @@
 // Stage 2: the continuum solvers, side by side, each measured against the exact
-// solver when the scene runs it too (its L1 distance) and against its own
-// initial mass (the drift).
-#include <cmath>
-
+// solver when the scene runs it too (its L1 distance, per unit length and
+// relative: compare/field_distance.hpp) and against its own initial mass (the drift).
 #include "progress_bar.hpp"
 #include "run_results.hpp"
 #include "shockgas/continuum/registry.hpp"
@@ -11,13 +9,6 @@
 namespace shockgas::app {
 
 namespace {
-
-// L1 distance of cell averages, sum |a - b| dx.
-double l1_distance(const std::vector<double>& a, const std::vector<double>& b, double dx) {
-  double s = 0;
-  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) s += std::abs(a[i] - b[i]);
-  return s * dx;
-}
 
 double total(const std::vector<double>& rho, double length) {
   double sum = 0;
@@ -29,9 +20,9 @@ void assess(ContinuumRun& run, const continuum::ContinuumResult* exact, double m
   const auto& r = run.result;
   if (!r.rho.empty()) run.mass_drift = total(r.rho, r.length) / mass0 - 1;  // 0 up to rounding if conserved
   if (!exact || exact == &r || exact->v.size() != r.v.size()) return;
-  const double dx = r.length / static_cast<double>(r.v.size());
-  run.l1_error_v = l1_distance(r.v, exact->v, dx);
-  if (r.rho.size() == exact->rho.size()) run.l1_error_rho = l1_distance(r.rho, exact->rho, dx);
+  run.l1_v = compare::l1_distance(r.v, exact->v, compare::L1Scale::about_mean);
+  if (!r.rho.empty() && r.rho.size() == exact->rho.size())
+    run.l1_rho = compare::l1_distance(r.rho, exact->rho, compare::L1Scale::absolute);
 }
 
 }  // namespace

@@ -1,12 +1,14 @@
 // Stage 1: the particle gas (an ensemble of event-driven or exact-hull runs from
 // the scene's initial condition), and what it shows alone: the cooling law and
-// the scaled velocity distribution (compare/particle_analysis.hpp). An animation
-// adds its frame times to realization 0's snapshots (frames.hpp).
+// the scaled velocity distribution (compare/particle_analysis.hpp), with the
+// exact laws of a white-noise start beside them (compare/white_noise_references.hpp).
+// An animation adds its frame times to realization 0's snapshots (frames.hpp).
 #include <algorithm>
 
 #include "frames.hpp"
 #include "progress_bar.hpp"
 #include "run_results.hpp"
+#include "shockgas/compare/cluster_velocity_law.hpp"
 
 namespace shockgas::app {
 
@@ -46,6 +48,9 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r,
                                        scene.particles.t_end, scene.compare.fit_window);
   r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
+  r.exact = compare::white_noise_references(scene.initial);
+  if (r.exact && r.histogram.bins > 0)
+    r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
   return r;
 }
 

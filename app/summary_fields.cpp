@@ -1,5 +1,7 @@
 // The keys of summary.json from the continuum, the comparison and a sweep,
 // declared once: key, unit, meaning, and where each comes from.
+#include <cmath>
+
 #include "layout_declarations.hpp"
 
 namespace shockgas::app::layout {
@@ -20,6 +22,17 @@ std::vector<Declaration> continuum() {
   using Run = ContinuumRun;
   using Opt = std::optional<Json>;
   auto optional = [](const std::optional<double>& x) { return x ? Opt(*x) : Opt(); };
+  // One number of an L1 distance (field of run), null where it is not finite.
+  using L1 = compare::L1Distance;
+  const auto per_length = &L1::per_length, relative = &L1::relative;
+  auto l1 = [](auto field, double L1::*number) {
+    return [field, number](const Run& c) {
+      const std::optional<L1>& d = field(c);
+      if (!d) return Opt();
+      const double x = (*d).*number;
+      return Opt(std::isfinite(x) ? Json(x) : Json(nullptr));
+    };
+  };
   return {
       key(p, "continuum.{solver}.cells", "1", "grid cells", "",
           each([](const Run& c) { return Opt(c.result.x.size()); })),
@@ -44,11 +57,19 @@ std::vector<Declaration> continuum() {
               "solvers that give a density",
               each([optional](const Run& c) { return optional(c.mass_drift); })),
           "0 (conservative schemes)"),
-      key(p, "continuum.{solver}.l1_error_v", "length^2/time",
-          "sum |v - v_exact| dx against the exact solver", "when the exact solver runs too",
-          each([optional](const Run& c) { return optional(c.l1_error_v); })),
-      key(p, "continuum.{solver}.l1_error_rho", "mass", "sum |rho - rho_exact| dx against the exact solver",
-          "when both give a density", each([optional](const Run& c) { return optional(c.l1_error_rho); })),
+      key(p, "continuum.{solver}.l1_v", "length/time",
+          "(1/L) int |v - v_exact| dx: the mean distance to the exact solver per unit length",
+          "when the exact solver runs too", each(l1([](const Run& c) { return c.l1_v; }, per_length))),
+      key(p, "continuum.{solver}.l1_v_relative", "1",
+          "int |v - v_exact| dx / int |v_exact - <v_exact>| dx: against the exact field's variation "
+          "about its mean (null: the exact field is constant)",
+          "when the exact solver runs too", each(l1([](const Run& c) { return c.l1_v; }, relative))),
+      key(p, "continuum.{solver}.l1_rho", "mass/length",
+          "(1/L) int |rho - rho_exact| dx: the mean distance to the exact density per unit length",
+          "when both give a density", each(l1([](const Run& c) { return c.l1_rho; }, per_length))),
+      key(p, "continuum.{solver}.l1_rho_relative", "1",
+          "int |rho - rho_exact| dx / int rho_exact dx: the fraction of the mass misplaced (at most 2)",
+          "when both give a density", each(l1([](const Run& c) { return c.l1_rho; }, relative))),
   };
 }
 
@@ -103,6 +124,14 @@ std::vector<Declaration> comparison() {
       with_theory(key(p, "compare.shock_count_ratio", "1", "n_shocks / (N t^(-2/3))", "",
                       cmp([](const C&, const S& s) { return s.shock_count_ratio; })),
                   "O(1), constant in the sticky regime"),
+      key(p, "compare.n_shocks_exact", "1",
+          "the exact expected number of shocks of mass >= min_mass of Burgers turbulence from this white "
+          "noise (compare/shock_mass_law.hpp): what n_shocks of hopf_lax and n_clusters of an r = 0 gas "
+          "approach",
+          "when the start is white noise on a lattice",
+          [](const RunResults& r, Emitter& out) {
+            if (r.comparison && r.comparison->n_shocks_exact) out.json(*r.comparison->n_shocks_exact);
+          }),
       key(p, "compare.min_mass", "mass",
           "the eligibility threshold: compare.min_cluster_particles mean particle masses", "",
           cmp([](const C&, const S& s) { return s.min_mass; })),

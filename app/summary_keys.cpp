@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "layout_declarations.hpp"
+#include "scene_schema.hpp"
+#include "shockgas/core/error.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app::layout {
@@ -26,6 +28,15 @@ Emit particle(F f) {
   };
 }
 
+// What a summary key that echoes a scene key means: that key's doc, as declared
+// beside its params struct (scene_schema.hpp), so that it is written once.
+std::string as_used(const std::string& table, const std::string& name) {
+  const TableSpec* t = find_table(table);
+  const KeySpec* k = t ? t->find(name) : nullptr;
+  if (!k) throw RunError("summary layout: no scene key " + table + "." + name);
+  return "the scene key " + table + "." + name + " as used: " + k->info.doc;
+}
+
 std::vector<Declaration> provenance_and_initial() {
   const Part p = Part::provenance, i = Part::initial;
   auto initial = [](auto f) {
@@ -40,15 +51,15 @@ std::vector<Declaration> provenance_and_initial() {
       key(p, "git_commit", "", "its commit", "", always([](const RunResults&) { return kGitCommit; })),
       key(p, "overrides", "", "the --set overrides, in order", "",
           always([](const RunResults& r) { return r.scene->overrides; })),
-      key(i, "initial.N", "1", "particles", "",
+      key(i, "initial.N", "1", as_used("initial", "N"), "",
           initial([](const InitialCondition& c) { return c.params().N; })),
       key(i, "initial.length", "length", "domain length (L, or N for unit spacing; domain for expressions)",
           "", initial([](const InitialCondition& c) { return c.length(); })),
-      key(i, "initial.positions", "", "initial.positions", "",
+      key(i, "initial.positions", "", as_used("initial", "positions"), "",
           initial([](const InitialCondition& c) { return name_of(c.params().positions); })),
-      key(i, "initial.velocities", "", "initial.velocities", "",
+      key(i, "initial.velocities", "", as_used("initial", "velocities"), "",
           initial([](const InitialCondition& c) { return name_of(c.params().velocities); })),
-      key(i, "initial.seed", "", "initial.seed", "",
+      key(i, "initial.seed", "", as_used("initial", "seed"), "",
           initial([](const InitialCondition& c) { return c.params().seed; })),
       key(i, "initial.temperature", "length^2/time^2", "temperature of realization 0", "when particles run",
           [](const RunResults& r, Emitter& out) {
@@ -62,13 +73,13 @@ std::vector<Declaration> particles() {
   using PR = ParticleResults;
   using StopReason = particles::StopReason;
   return {
-      key(p, "particles.solver", "", "particles.solver", "",
+      key(p, "particles.solver", "", as_used("particles", "solver"), "",
           particle([](const PR&, const Scene& s) { return name_of(s.particles.solver); })),
-      key(p, "particles.r", "1", "particles.r", "",
+      key(p, "particles.r", "1", as_used("particles", "r"), "",
           particle([](const PR&, const Scene& s) { return s.particles.r; })),
-      key(p, "particles.delta", "length/time", "particles.delta", "",
+      key(p, "particles.delta", "length/time", as_used("particles", "delta"), "",
           particle([](const PR&, const Scene& s) { return s.particles.delta; })),
-      key(p, "particles.realizations", "1", "particles.realizations", "",
+      key(p, "particles.realizations", "1", as_used("particles", "realizations"), "",
           particle([](const PR&, const Scene& s) { return s.particles.realizations; })),
       key(p, "particles.collisions", "1", "total collisions of all realizations", "",
           particle([](const PR& pr, const Scene&) { return pr.ensemble.total_collisions; })),
@@ -147,9 +158,9 @@ std::vector<Declaration> analysis() {
                       "end of homogeneous cooling read off d ln T / d ln t (null: not crossed)", "",
                       fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_stick); })),
                   "~ {analysis.t_stick_theory}"),
-      key(p, "analysis.t_dissip_theory", "time", "1/eps", "",
+      key(p, "analysis.t_dissip_theory", "time", "theory: end of the elastic regime, 1/eps, eps = (1 - r)/2", "",
           fit([](const Cooling& a, const Fit&) { return a.crossovers.t_dissip_theory; })),
-      key(p, "analysis.t_stick_theory", "time", "eps^(-3/2)", "",
+      key(p, "analysis.t_stick_theory", "time", "theory: end of homogeneous cooling, eps^(-3/2)", "",
           fit([](const Cooling& a, const Fit&) { return a.crossovers.t_stick_theory; })),
       key(p, "analysis.cooling_law_not_determined", "", "why the cooling law could not be fitted",
           "when the data refuse it",

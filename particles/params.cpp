@@ -30,7 +30,7 @@ ParameterTable<ParticleParams> declare() {
         Allowed{at_least(0), {}, "times in [0, t_end]"});
   t.add(&P::spacetime, "spacetime", "", "record trajectories (space-time diagram)");
   t.add(&P::histogram_bins, "histogram_bins", "1",
-        "bins of the scaled velocity histogram z = v t^(1/3); 0 = none", allowed(at_least(0)));
+        "bins of the mass-weighted histogram of z = (v - <v>) t^(1/3); 0 = none", allowed(at_least(0)));
   t.add(&P::histogram_zmax, "histogram_zmax", "length/time^(2/3)", "histogram range |z| <= zmax",
         allowed(above(0)));
   t.add(&P::spacetime_frames, "spacetime_frames", "1",

@@ -138,7 +138,8 @@ TEST(OutputDocs, ThePlotScriptReadsARunsFiles) {
   if (WIFEXITED(status) && WEXITSTATUS(status) == 3)
     GTEST_SKIP() << "matplotlib or h5py missing for /usr/bin/python3";
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "plot_result.py failed";
-  for (const char* png : {"temperature.png", "velocity_distribution.png", "spacetime.png", "fields.png"})
+  for (const char* png :
+       {"temperature.png", "velocity_distribution.png", "spacetime.png", "fields.png", "clusters.png"})
     EXPECT_TRUE(fs::exists(out / png)) << png;
 }
 

@@ -1,0 +1,101 @@
+// The numbers of a run as a physicist reads them: report.md says what was asked
+// and what was run (the overrides, the parameters used), and the L1 distances
+// of the summary are normalised (per unit length, relative to the reference).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "hdf5_file.hpp"
+#include "run_command.hpp"
+
+namespace shockgas::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+using testing_support::run;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs `scene` with `overrides` into a fresh directory; returns the output directory.
+fs::path run_scene(const std::string& name, const std::string& scene,
+                   const std::vector<std::string>& overrides) {
+  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-report-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.toml") << scene;
+  std::vector<std::string> args = {"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(),
+                                   "-q"};
+  for (const auto& o : overrides) args.insert(args.end(), {"--set", o});
+  EXPECT_EQ(run(args), 0);
+  return dir / "out";
+}
+
+// The gas of 4096 lattice particles and two continuum solvers on L = 4096: the
+// size at which the old, unnormalised density distance read 4980.
+const char* kWhiteNoise =
+    "[scene]\ndescription = \"Burgers turbulence of 20000 particles\"\n"
+    "[initial]\nN = 20000\nseed = 3\n[continuum]\nsolvers = [\"hopf_lax\", \"godunov\"]\ncells = 4096\n"
+    "t_end = 100\n[output]\nplots = false\n";
+
+// After --set initial.N=4096 the description (the author's words) still says
+// 20000: report.md keeps it as written and states the run as made beside it.
+TEST(Report, StatesTheOverridesAndTheParametersUsed) {
+  const fs::path out = run_scene("overrides", kWhiteNoise, {"initial.N=4096"});
+  const std::string report = read_text(out / "report.md");
+  EXPECT_NE(report.find("Burgers turbulence of 20000 particles"), std::string::npos) << report;
+  EXPECT_NE(report.find("`--set initial.N=4096`"), std::string::npos) << report;
+  EXPECT_NE(report.find("`initial.N = 4096` (override)"), std::string::npos) << report;
+  EXPECT_NE(report.find("`continuum.cells = 4096`"), std::string::npos) << report;
+  EXPECT_EQ(report.find("initial.N = 20000"), std::string::npos) << report;
+  const fs::path plain = run_scene("plain", kWhiteNoise, {"continuum.t_end=10"});
+  EXPECT_NE(read_text(plain / "report.md").find("`continuum.t_end = 10` (override)"), std::string::npos);
+}
+
+double mean_abs_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += std::abs(a[i] - b[i]);
+  return s / static_cast<double>(a.size());
+}
+
+// The summary's distances recomputed from the fields in result.h5: per unit
+// length = the mean over cells of |difference| (uniform grid), relative = the
+// sum of |difference| over the sum of |reference - its mean| (v) or of the
+// reference (rho, the mass). They agree to rounding (1e-12 relative).
+TEST(Report, L1DistancesArePerUnitLengthAndRelative) {
+  const fs::path out = run_scene("l1", kWhiteNoise, {"initial.N=4096"});
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  const auto& g = summary["continuum"]["godunov"];
+  const Hdf5File h5 = Hdf5File::open((out / "result.h5").string());
+  const auto v = h5.read("/continuum/godunov/v"), v_exact = h5.read("/continuum/hopf_lax/v");
+  const auto rho = h5.read("/continuum/godunov/rho"), rho_exact = h5.read("/continuum/hopf_lax/rho");
+  ASSERT_EQ(v.size(), 4096u);
+  double v_mean = 0, mass = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) v_mean += v_exact[i] / 4096.0, mass += rho_exact[i] / 4096.0;
+  std::vector<double> v_spread(v.size(), v_mean), none(v.size(), 0.0);
+  EXPECT_NEAR(g["l1_v"].get<double>(), mean_abs_difference(v, v_exact),
+              1e-12 * mean_abs_difference(v, v_exact));
+  EXPECT_NEAR(g["l1_v_relative"].get<double>(),
+              mean_abs_difference(v, v_exact) / mean_abs_difference(v_exact, v_spread), 1e-12);
+  EXPECT_NEAR(g["l1_rho"].get<double>(), mean_abs_difference(rho, rho_exact), 1e-12);
+  EXPECT_NEAR(g["l1_rho_relative"].get<double>(), mean_abs_difference(rho, rho_exact) / mass, 1e-12);
+  // Two densities of the same mass are at most 2 apart relative to it (the old
+  // unnormalised number was 4980, above the mass 4096 itself).
+  EXPECT_LE(g["l1_rho_relative"].get<double>(), 2.0);
+  EXPECT_NEAR(mass, 1.0, 1e-12);  // unit mean density: per length = relative for rho here
+  EXPECT_FALSE(summary["continuum"]["hopf_lax"].contains("l1_v"));  // the reference itself
+}
+
+}  // namespace
+}  // namespace shockgas::app
