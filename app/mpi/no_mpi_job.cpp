@@ -1,0 +1,16 @@
+// shockgas built without MPI: there is never a job of several processes.
+#include "../job.hpp"
+
+namespace shockgas::app {
+
+struct JobSession::State {};
+
+JobSession::JobSession(int&, char**&) {}
+JobSession::~JobSession() = default;
+int JobSession::end(int code) { return code; }
+
+Job* current_job() { return nullptr; }
+bool speaks_for_job() { return true; }
+bool built_with_mpi() { return false; }
+
+}  // namespace shockgas::app
