@@ -133,10 +133,10 @@ int run_command(int argc, char** argv) {
   try {
     return dispatch(app, args);
   } catch (const InputError& e) {
-    if (speaks_for_job()) std::cerr << "shockgas: error: " << e.what() << "\n";
+    report_for_job(std::string("shockgas: error: ") + e.what() + "\n");
     return kExitBadInput;
   } catch (const std::exception& e) {
-    if (speaks_for_job()) std::cerr << "shockgas: run failed: " << e.what() << "\n";
+    report_for_job(std::string("shockgas: run failed: ") + e.what() + "\n");
     return kExitFailure;
   }
 }

@@ -66,6 +66,14 @@ class JobSession {
 // or the only process.
 bool speaks_for_job();
 
+// Prints an error line (with newline) on stderr for the job: at once from the
+// process that speaks for it; another rank waits kQuietSeconds for rank 0,
+// which fails the same way on the same input, to say it and end the job, and
+// says it itself, naming its rank, only if rank 0 has not (it alone failed: a
+// scene file missing on its node, say).
+void report_for_job(const std::string& line);
+inline constexpr double kQuietSeconds = 2;
+
 // Whether shockgas was built with MPI.
 bool built_with_mpi();
 

@@ -1,5 +1,7 @@
 #include "realization_pool.hpp"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <mutex>
@@ -134,7 +136,10 @@ bool RealizationPool::finished() const {
 }
 
 std::size_t resolved_threads(std::size_t setting) {
-  return setting > 0 ? setting : std::max<std::size_t>(1, std::thread::hardware_concurrency());
+  if (setting > 0) return setting;
+  cpu_set_t cpus;  // the cores this process may run on: a launcher may bind each rank to its own
+  if (sched_getaffinity(0, sizeof cpus, &cpus) == 0) return std::max(1, CPU_COUNT(&cpus));
+  return std::max<std::size_t>(1, std::thread::hardware_concurrency());
 }
 
 }  // namespace shockgas::app

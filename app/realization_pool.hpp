@@ -55,7 +55,8 @@ class RealizationPool {
   bool abandon_;
 };
 
-// The threads "particles.threads = n" means for this process: n, or every core for 0.
+// The threads "particles.threads = n" means for this process: n, or for 0 the
+// cores it may run on (its CPU affinity: mpirun and srun bind ranks to cores).
 std::size_t resolved_threads(std::size_t setting);
 
 }  // namespace shockgas::app

@@ -7,7 +7,10 @@
 #include <climits>
 #include <csignal>
 #include <cstdlib>
+#include <chrono>
+#include <iostream>
 #include <list>
+#include <thread>
 
 #include "../job.hpp"
 #include "shockgas/core/error.hpp"
@@ -119,6 +122,14 @@ int JobSession::end(int code) {
 Job* current_job() { return g_job; }
 
 bool speaks_for_job() { return !g_job || g_job->rank() == 0; }
+
+void report_for_job(const std::string& line) {
+  if (!speaks_for_job()) {
+    std::this_thread::sleep_for(std::chrono::duration<double>(kQuietSeconds));
+    std::cerr << "(rank " << g_job->rank() << ") ";
+  }
+  std::cerr << line;
+}
 
 bool built_with_mpi() { return true; }
 

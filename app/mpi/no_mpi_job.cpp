@@ -1,4 +1,6 @@
 // shockgas built without MPI: there is never a job of several processes.
+#include <iostream>
+
 #include "../job.hpp"
 
 namespace shockgas::app {
@@ -11,6 +13,7 @@ int JobSession::end(int code) { return code; }
 
 Job* current_job() { return nullptr; }
 bool speaks_for_job() { return true; }
+void report_for_job(const std::string& line) { std::cerr << line; }
 bool built_with_mpi() { return false; }
 
 }  // namespace shockgas::app

@@ -10,19 +10,14 @@
 
 #include "hdf5_file.hpp"
 #include "run_comparison.hpp"
-#include "shockgas/app/command.hpp"
+#include "run_command.hpp"
 
 namespace shockgas::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-int run(std::vector<std::string> args) {
-  args.insert(args.begin(), "shockgas");
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  return run_command(static_cast<int>(argv.size()), argv.data());
-}
+using testing_support::run;
 
 // Ten realizations with every record a merge must carry: series, histogram,
 // a snapshot and the final state of realization 0, the continuum and the
