@@ -2,7 +2,7 @@
 # `mpirun -np K shockgas run` on a small ensemble and a small sweep, with 2 and
 # with 3 ranks (3 ranks on this 2-core machine: --oversubscribe), each result
 # compared bit for bit with the one-process run; more ranks than realizations;
-# a rank killed during a run.
+# a rank killed during a run; every rank interrupted.
 add_executable(compare_runs tools/compare_runs.cpp)
 target_link_libraries(compare_runs PRIVATE shockgas_app)
 target_include_directories(compare_runs PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/app)
@@ -28,5 +28,9 @@ endforeach()
 shockgas_mpi_test(more_ranks_than_realizations sh ${mpi_dir}/same_as_one_process.sh $<TARGET_FILE:shockgas>
                   $<TARGET_FILE:compare_runs> ${SHOCKGAS_MPIRUN} 3 ${mpi_dir}/few.toml
                   ${PROJECT_BINARY_DIR}/mpi-tests/few "note: 3 ranks for 2 realizations: rank 2 has none to run")
-shockgas_mpi_test(killed_rank sh ${mpi_dir}/killed_rank.sh $<TARGET_FILE:shockgas> ${SHOCKGAS_MPIRUN}
-                  ${mpi_dir}/long.toml ${PROJECT_BINARY_DIR}/mpi-tests/killed)
+shockgas_mpi_test(killed_rank sh ${mpi_dir}/signalled_ranks.sh $<TARGET_FILE:shockgas> ${SHOCKGAS_MPIRUN}
+                  ${mpi_dir}/long.toml ${PROJECT_BINARY_DIR}/mpi-tests/killed KILL 1
+                  "^shockgas: run failed: rank 1 stopped while running realization [0-9]")
+shockgas_mpi_test(interrupted_job sh ${mpi_dir}/signalled_ranks.sh $<TARGET_FILE:shockgas> ${SHOCKGAS_MPIRUN}
+                  ${mpi_dir}/long.toml ${PROJECT_BINARY_DIR}/mpi-tests/interrupted TERM "0 1"
+                  "^shockgas: .*interrupted by signal 15")
