@@ -18,16 +18,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The messages of the protocol (MPI tags).
-enum Tag : int {
-  kProgress = 1,     // any rank -> 0 (and 0 -> 1): fraction done, time reached, items running
-  kRecord = 2,       // -> 0: a finished realization (encode())
-  kFailed = 3,       // -> 0: an item and the error that stopped it
-  kInterrupted = 4,  // -> 0: a signal (0: an answer to kStop) and the items running
-  kStop = 5,         // 0 -> all: the job is ending, answer with kInterrupted
-  kDone = 6,         // 0 -> all: every record arrived
-};
-
 constexpr auto kPoll = std::chrono::milliseconds(50);
 constexpr double kBeatSeconds = 0.2;
 

@@ -27,6 +27,17 @@ namespace shockgas::app {
 
 class ProgressBar;
 
+// The messages between the ranks (MPI tags). Numbers travel as doubles, an
+// item as its ensemble and index.
+enum JobTag : int {
+  kProgress = 1,     // any rank -> 0 (and 0 -> 1): fraction done, time reached, items running
+  kRecord = 2,       // -> 0: a finished realization (encode())
+  kFailed = 3,       // -> 0: an item, then the text of the error that stopped it
+  kInterrupted = 4,  // -> 0: a signal (0: an answer to kStop), then the items running
+  kStop = 5,         // 0 -> all: the job is ending, answer with kInterrupted
+  kDone = 6,         // 0 -> all: every record arrived
+};
+
 inline constexpr double kAnswerSeconds = 0.5;  // well inside Open MPI's 1 s from SIGTERM to SIGKILL
 inline constexpr double kSilenceSeconds = 30;  // a rank sends a heartbeat every 0.2 s
 

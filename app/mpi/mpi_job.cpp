@@ -4,10 +4,10 @@
 // returns has succeeded.
 #include <mpi.h>
 
+#include <chrono>
 #include <climits>
 #include <csignal>
 #include <cstdlib>
-#include <chrono>
 #include <iostream>
 #include <list>
 #include <thread>
