@@ -68,7 +68,7 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
         scene.name + ".shard-" + options.realizations + (variants ? "-v" + options.variants : "");
     std::replace(name.begin(), name.end(), ':', '-');
     const fs::path where = options.out_dir.empty() ? fs::path("out") / name : dir;
-    write_shard(where, scene, *plan, computed);
+    write_shard(where, scene, *plan, std::move(computed));
     return where.string();
   }
   const ParallelRun parallel{computed.ranks, computed.threads, 0};

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "frames.hpp"
+#include "realization_record.hpp"
 #include "shockgas/app/scene.hpp"
 #include "shockgas/compare/particle_analysis.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
@@ -61,6 +62,15 @@ struct VariantResult {
   compare::ZHistogram histogram;
 };
 
+// A shard's content (shard_file.hpp): the records of its slice of the run.
+struct ShardResults {
+  std::string realizations, variants;  // the slices, "A:B" or "all"
+  std::vector<std::string> overrides;  // the --set overrides, to parse the scene again
+  std::vector<RealizationRecord> records;
+  ParallelRun parallel;
+  double wall_seconds = 0;
+};
+
 struct RunResults {
   const Scene* scene = nullptr;
   const InitialCondition* initial = nullptr;  // none for a sweep
@@ -69,6 +79,7 @@ struct RunResults {
   std::optional<Comparison> comparison;
   std::optional<Frames> frames;         // when output.animation
   std::vector<VariantResult> variants;  // a sweep's
+  std::optional<ShardResults> shard;    // a shard's
 };
 
 // A particle ensemble computed elsewhere (gathered from the ranks of an MPI job,

@@ -12,10 +12,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string record_group(const RealizationRecord& r) {
-  return "/shard/" + std::to_string(r.ensemble) + "/" + std::to_string(r.index);
-}
-
 std::string slice_or_all(const std::optional<Slice>& s) { return s ? slice_text(*s) : "all"; }
 
 std::map<std::string, std::string> attribute_map(const Hdf5File& h5, const std::string& object) {
@@ -38,31 +34,25 @@ void write_report(const fs::path& dir, const Scene& scene, const EnsemblePlan& p
 }  // namespace
 
 void write_shard(const fs::path& dir, const Scene& scene, const EnsemblePlan& plan,
-                 const ComputedRecords& computed) {
+                 ComputedRecords computed) {
   PartialOutputs outputs(dir);
   nlohmann::ordered_json summary;
   RunResults r;
   r.scene = &scene;
+  r.shard = ShardResults{slice_or_all(plan.realization_slice()),
+                         slice_or_all(plan.variant_slice()),
+                         scene.overrides,
+                         std::move(computed.records),
+                         {computed.ranks, computed.threads, 0},
+                         computed.wall_seconds};
   {
     Hdf5File h5 = Hdf5File::create(outputs.h5_path());
-    write_part(h5, r, Part::provenance);
-    summarize_part(summary, r, Part::provenance);
-    h5.set_attribute("/shard", "realizations", slice_or_all(plan.realization_slice()));
-    h5.set_attribute("/shard", "variants", slice_or_all(plan.variant_slice()));
-    h5.set_attribute("/shard", "overrides", nlohmann::json(scene.overrides).dump());
-    h5.set_attribute("/shard", "ranks", static_cast<double>(computed.ranks));
-    h5.set_attribute("/shard", "threads", static_cast<double>(computed.threads));
-    h5.set_attribute("/shard", "wall_seconds", computed.wall_seconds);
-    for (const RealizationRecord& record : computed.records)
-      for (const auto& [name, data] : to_fields(record.run))
-        h5.write(record_group(record) + "/" + name, data, "",
-                 "realization record field (realization_record.hpp)");
+    for (Part part : {Part::provenance, Part::shard}) {
+      write_part(h5, r, part);
+      summarize_part(summary, r, part);
+    }
     h5.close();
   }
-  summary["shard"] = {{"realizations", slice_or_all(plan.realization_slice())},
-                      {"variants", slice_or_all(plan.variant_slice())},
-                      {"records", computed.records.size()}};
-  summary["parallel"] = {{"ranks", computed.ranks}, {"threads", computed.threads}};
   write_report(dir, scene, plan);
   outputs.commit(summary);
 }

@@ -3,14 +3,10 @@
 // written by `shockgas run --realizations A:B` (or --variants) and read by
 // `shockgas merge`. Its directory holds result.h5, summary.json and report.md,
 // written like a run's (partial_outputs.hpp); result.h5 holds the provenance of
-// a run (scene text, overrides, resolved parameters, version) and
-//
-//   /shard@realizations, @variants    the slices ("A:B"; "all")
-//   /shard@overrides                  the --set overrides, as a JSON list
-//   /shard@ranks, @threads, @wall_seconds   how it was computed
-//   /shard/{e}/{k}/{field}            the record of realization k of ensemble e
-//                                     (realization_record.hpp: series/T, stop, ...;
-//                                     for k = 0 also final/x, snapshots/0/x, ...)
+// a run (scene text, overrides, resolved parameters, version) and the part
+// Part::shard of the output layout (output_shard.cpp, docs/output.md): which
+// slice it is and, under /shard/{e}/{k}/, the record of realization k of
+// ensemble e, one dataset per field (realization_record.hpp).
 #include <filesystem>
 #include <map>
 #include <string>
@@ -22,7 +18,7 @@
 namespace shockgas::app {
 
 void write_shard(const std::filesystem::path& dir, const Scene& scene, const EnsemblePlan& plan,
-                 const ComputedRecords& computed);
+                 ComputedRecords computed);
 
 // What a merge needs of a shard, read without its records first.
 struct ShardHeader {
