@@ -28,7 +28,7 @@ for rank in $ranks; do
   [ -n "$pid" ] || { echo "rank $rank not found"; kill "$launcher"; exit 1; }
   pids="$pids $pid"
 done
-sleep 1.5  # inside the first realizations
+sleep 2.5  # inside the first realizations (each takes about 6 s of a core)
 kill -s "$signal" $pids
 wait "$launcher"
 status=$?
