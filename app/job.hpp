@@ -1,7 +1,7 @@
 #pragma once
 // The processes of a job launched by mpirun or srun, and the messages between
 // them: what shockgas needs of MPI and nothing more. The MPI C API is called in
-// one file only, app/mpi_job.cpp (built when CMake finds MPI: SHOCKGAS_MPI);
+// one file only, app/mpi/mpi_job.cpp (built when CMake finds MPI: SHOCKGAS_MPI);
 // everything else sees this interface. Without MPI, or when the program was not
 // started by a launcher, there is no job and shockgas runs as one process.
 //

@@ -31,6 +31,13 @@ const char* kSweep =
     "[initial]\nN = 200\n[particles]\nt_end = 10\nsamples = 6\nrealizations = 4\n"
     "[sweep]\nvariants = [\"particles.r=0.2\", \"particles.r=0.8\"]\n[output]\nplots = false\n";
 
+// An animation: realization 0 also stops at the frame times, every realization
+// runs with them, and the frames are drawn at merge time.
+const char* kAnimated =
+    "[initial]\nN = 200\n[particles]\nr = 0.5\nt_end = 10\nsamples = 6\nrealizations = 4\n"
+    "[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 200\n"
+    "[output]\nplots = false\nanimation = true\nanimation_frames = 5\n";
+
 class Shards : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -41,6 +48,7 @@ class Shards : public ::testing::Test {
     fs::create_directories(dir_);
     std::ofstream(dir_ / "scene.toml") << kScene;
     std::ofstream(dir_ / "sweep.toml") << kSweep;
+    std::ofstream(dir_ / "animated.toml") << kAnimated;
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   int shard(const std::string& scene, const std::string& option, const std::string& slice,
@@ -101,6 +109,17 @@ TEST_F(Shards, ASweepShardedByVariantAndRealizationMerges) {
   ASSERT_EQ(shard("sweep.toml", "--variants", "1:2", "v1b", {"--realizations", "1:4"}), 0);
   ASSERT_EQ(merge({"v0", "v1a", "v1b"}, "merged"), 0) << said_;
   EXPECT_EQ(testing::result_differences(dir_ / "whole", dir_ / "merged"), std::vector<std::string>{});
+}
+
+TEST_F(Shards, AnAnimatedRunMergesWithItsFrames) {
+  ASSERT_EQ(run({"run", path("animated.toml"), "--out", path("whole"), "-q"}), 0);
+  ASSERT_EQ(shard("animated.toml", "--realizations", "0:1", "s0"), 0);
+  ASSERT_EQ(shard("animated.toml", "--realizations", "1:4", "s1"), 0);
+  ASSERT_EQ(merge({"s0", "s1"}, "merged"), 0) << said_;
+  EXPECT_EQ(testing::result_differences(dir_ / "whole", dir_ / "merged"), std::vector<std::string>{});
+  bool has_frames = false;
+  for (const auto& d : Hdf5File::open(path("merged/result.h5")).datasets()) has_frames |= d.path == "/animation/t";
+  EXPECT_TRUE(has_frames);
 }
 
 TEST_F(Shards, OverlappingSlicesAreRefused) {
