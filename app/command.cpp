@@ -8,6 +8,8 @@
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
+#include "job.hpp"
+#include "merge.hpp"
 #include "plots.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/studies/studies.hpp"
@@ -20,7 +22,8 @@ namespace {
 constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 
 struct Arguments {
-  std::string scene_path, out_dir, result_path;
+  std::string scene_path, out_dir, result_path, realizations, variants;
+  std::vector<std::string> shards;
   std::vector<std::string> overrides;
   bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false;
   studies::StudyOptions bench;
@@ -34,21 +37,46 @@ void add_run(CLI::App& app, Arguments& args) {
       ->allow_extra_args(false);
   run->add_flag("--quiet,-q", args.quiet, "no progress output");
   run->add_flag("--no-plots", args.no_plots, "skip the PNG plots");
+  run->add_option("--realizations", args.realizations,
+                  "only realizations A..B-1 of each ensemble (A:B), written as a shard for `shockgas merge`");
+  run->add_option("--variants", args.variants, "only variants A..B-1 of a sweep (A:B), written as a shard");
 }
 
-int do_run(const Arguments& args) {
-  const Scene scene = load_scene(args.scene_path, args.overrides);  // InputError: nothing written
+void add_merge(CLI::App& app, Arguments& args) {
+  auto* merge =
+      app.add_subcommand("merge", "Merge the shards of one run into its result, as if it had run whole");
+  merge->add_option("SHARD", args.shards, "shard directories (shockgas run --realizations A:B --out SHARD)")
+      ->required();
+  merge->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)");
+  merge->add_flag("--quiet,-q", args.quiet, "no progress output");
+  merge->add_flag("--no-plots", args.no_plots, "skip the PNG plots");
+}
+
+RunOptions run_options(const Arguments& args) {
   RunOptions options;
   options.out_dir = args.out_dir;
   options.progress = !args.quiet;
   options.plots = !args.no_plots;
-  const std::string dir = run_scene(scene, options);
+  options.realizations = args.realizations;
+  options.variants = args.variants;
+  return options;
+}
+
+int do_run(const Arguments& args) {
+  const Scene scene = load_scene(args.scene_path, args.overrides);  // InputError: nothing written
+  const std::string dir = run_scene(scene, run_options(args));
+  if (!speaks_for_job()) return kExitOk;  // rank 0 writes and speaks for an MPI job
   std::cout << "results in " << dir << "/\n";
   return kExitOk;
 }
 
 int dispatch(const CLI::App& app, const Arguments& args) {
   if (app.got_subcommand("run")) return do_run(args);
+  if (app.got_subcommand("merge")) {
+    const std::string dir = merge_shards(args.shards, run_options(args));
+    std::cout << "results in " << dir << "/\n";
+    return kExitOk;
+  }
   if (app.got_subcommand("info")) {
     std::cout << (args.layout ? describe_layout() : describe_result(args.result_path));
     return kExitOk;
@@ -80,6 +108,7 @@ int run_command(int argc, char** argv) {
   app.require_subcommand(0, 1);
   Arguments args;
   add_run(app, args);
+  add_merge(app, args);
   auto* info = app.add_subcommand("info", "What a result file holds, its scene and its provenance");
   info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5");
   info->add_flag("--layout", args.layout, "print every dataset and summary key a run may write (docs/output.md)");
@@ -104,10 +133,10 @@ int run_command(int argc, char** argv) {
   try {
     return dispatch(app, args);
   } catch (const InputError& e) {
-    std::cerr << "shockgas: error: " << e.what() << "\n";
+    report_for_job(std::string("shockgas: error: ") + e.what() + "\n");
     return kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "shockgas: run failed: " << e.what() << "\n";
+    report_for_job(std::string("shockgas: run failed: ") + e.what() + "\n");
     return kExitFailure;
   }
 }

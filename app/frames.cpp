@@ -1,6 +1,7 @@
 // The frame times of an animation and the rules of its keys (frames.hpp).
 #include "frames.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "shockgas/core/error.hpp"
@@ -35,6 +36,17 @@ std::vector<double> frame_times(const Scene& scene) {
   }
   t.back() = t_end;
   return t;
+}
+
+particles::ParticleParams particle_params(const Scene& scene) {
+  particles::ParticleParams params = scene.particles;
+  if (!scene.output.animation) return params;
+  const std::vector<double> frames = frame_times(scene);
+  auto& t = params.snapshots;
+  t.insert(t.end(), frames.begin(), frames.end());
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return params;
 }
 
 void check_animation(const Scene& scene) {

@@ -33,6 +33,12 @@ struct Frames {
 // last at the run's end (particles.t_end, else continuum.t_end).
 std::vector<double> frame_times(const Scene& scene);
 
+// The particle parameters a run of the scene simulates with: the scene's, with
+// the frame times added to the snapshot times when it asks for an animation.
+// Every realization runs with them, wherever it runs (one process, a rank, a
+// shard), so that all agree bit for bit.
+particles::ParticleParams particle_params(const Scene& scene);
+
 // The rules of [output] animation between keys; InputError naming the key.
 void check_animation(const Scene& scene);
 

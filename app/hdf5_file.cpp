@@ -107,6 +107,11 @@ Hdf5File Hdf5File::open(const std::string& path) {
   return Hdf5File(H5Handle(id, close_file));
 }
 
+Hdf5File Hdf5File::update(const std::string& path) {
+  quiet_hdf5();
+  return Hdf5File(H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file));
+}
+
 H5Handle Hdf5File::ensure_group(const std::string& path) {
   if (path == "/" || path.empty())
     return H5Handle(check(H5Gopen2(file_.get(), "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);

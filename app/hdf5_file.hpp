@@ -42,6 +42,8 @@ class Hdf5File {
   static Hdf5File create(const std::string& path);
   // Opens an existing file read-only.
   static Hdf5File open(const std::string& path);
+  // Opens an existing file to add to it (RunError if it cannot be opened).
+  static Hdf5File update(const std::string& path);
 
   // Datasets; intermediate groups are created as needed. unit and description
   // become string attributes of the dataset.

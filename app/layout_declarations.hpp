@@ -55,5 +55,7 @@ std::vector<Declaration> comparison_keys();  // continuum, comparison, sweep
 std::vector<Declaration> frame_datasets();  // output_frames.cpp: the animation's record
 std::vector<Declaration> frame_keys();      // and the wave's evolution
 std::vector<Declaration> extreme_keys();    // summary_extremes.cpp: the heaviest shock and cluster, ...
+std::vector<Declaration> shard_datasets();  // output_shard.cpp
+std::vector<Declaration> shard_keys();
 
 }  // namespace shockgas::app::layout

@@ -136,7 +136,8 @@ void table(std::ostringstream& out, const std::vector<Declaration>& decls, Part 
 }
 
 const std::vector<Part> kParts = {Part::provenance, Part::initial, Part::particles, Part::analysis,
-                                  Part::continuum,  Part::compare, Part::animation, Part::sweep};
+                                  Part::continuum,  Part::compare, Part::animation, Part::sweep,
+                                  Part::shard};
 
 }  // namespace
 
@@ -146,6 +147,7 @@ const std::vector<Declaration>& dataset_declarations() {
     layout::append(d, layout::particle_datasets());
     layout::append(d, layout::field_datasets());
     layout::append(d, layout::frame_datasets());
+    layout::append(d, layout::shard_datasets());
     return d;
   }();
   return all;
@@ -157,6 +159,7 @@ const std::vector<Declaration>& summary_declarations() {
     layout::append(d, layout::comparison_keys());
     layout::append(d, layout::extreme_keys());
     layout::append(d, layout::frame_keys());
+    layout::append(d, layout::shard_keys());
     return d;
   }();
   return all;
@@ -215,6 +218,8 @@ std::string part_title(Part part) {
       return "Frames and the wave's evolution (when output.animation = true)";
     case Part::sweep:
       return "Sweep (a [sweep] scene's own result)";
+    case Part::shard:
+      return "Shard (a slice of a run for `shockgas merge`: docs/cluster.md)";
   }
   return "";
 }

@@ -15,7 +15,7 @@
 namespace shockgas::app {
 
 // The parts of a run, in the order they are written.
-enum class Part { provenance, initial, particles, analysis, continuum, compare, animation, sweep };
+enum class Part { provenance, initial, particles, analysis, continuum, compare, animation, sweep, shard };
 
 struct LayoutEntry {
   enum class Kind { dataset, attribute, summary };

@@ -79,7 +79,7 @@ void preflight(const Scene& scene, const InitialCondition& initial) {
 }
 
 VariantResult run_single(const Scene& scene, const InitialCondition& initial, const fs::path& dir,
-                         const RunOptions& options) {
+                         const RunOptions& options, const EnsembleSource& source) {
   PartialOutputs outputs(dir);
   nlohmann::ordered_json summary;
   ProgressBar progress(options.progress);
@@ -95,7 +95,7 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
     write(Part::provenance);
     write(Part::initial);
     if (scene.has_particles) {
-      r.particles = run_particles(scene, initial, progress);
+      r.particles = run_particles(scene, initial, progress, source);
       write(Part::particles);
       write(Part::analysis);
       release_records(*r.particles);
@@ -126,6 +126,7 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
 
 std::string run_scene(const Scene& scene, const RunOptions& options) {
   const fs::path dir = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
+  if (runs_in_parallel(options)) return run_parallel(scene, dir, options);
   if (scene.has_sweep) return run_sweep(scene, dir, options);
   const InitialCondition initial = build_initial(scene);
   preflight(scene, initial);

@@ -4,12 +4,14 @@
 // what the earlier ones handed on, and the result file, summary.json and
 // report.md are written from it (output_layout.hpp, report.hpp). Nothing is read
 // back from disk.
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "frames.hpp"
+#include "realization_record.hpp"
 #include "shockgas/app/scene.hpp"
 #include "shockgas/compare/field_distance.hpp"
 #include "shockgas/compare/particle_analysis.hpp"
@@ -23,7 +25,16 @@ namespace shockgas::app {
 
 class ProgressBar;
 
+// How the realizations were computed (summary keys parallel.*): not physics,
+// and not part of what two runs of one scene must agree on.
+struct ParallelRun {
+  int ranks = 1;            // processes of the MPI job that computed them
+  std::size_t threads = 1;  // threads of each process
+  std::size_t shards = 0;   // shards merged into this result (shockgas merge); 0 otherwise
+};
+
 struct ParticleResults {
+  ParallelRun parallel;
   particles::EnsembleResult ensemble;
   std::vector<particles::Snapshot> frames;  // realization 0 at the animation's frame times (frames.hpp)
   compare::ZHistogram histogram;  // the ensemble-mean scaled histogram (empty: bins = 0)
@@ -66,6 +77,15 @@ struct VariantResult {
   std::optional<double> temperature_amplitude_exact;  // T t^(2/3) of the sticky gas, white noise only
 };
 
+// A shard's content (shard_file.hpp): the records of its slice of the run.
+struct ShardResults {
+  std::string realizations, variants;  // the slices, "A:B" or "all"
+  std::vector<std::string> overrides;  // the --set overrides, to parse the scene again
+  std::vector<RealizationRecord> records;
+  ParallelRun parallel;
+  double wall_seconds = 0;
+};
+
 struct RunResults {
   const Scene* scene = nullptr;
   const InitialCondition* initial = nullptr;  // none for a sweep
@@ -74,10 +94,22 @@ struct RunResults {
   std::optional<Comparison> comparison;
   std::optional<Frames> frames;         // when output.animation
   std::vector<VariantResult> variants;  // a sweep's
+  std::optional<ShardResults> shard;    // a shard's
 };
 
-// The stages (stage_*.cpp). Each takes what earlier stages handed on.
-ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress);
+// A particle ensemble computed elsewhere (gathered from the ranks of an MPI job,
+// merged from shards), handed to a run in place of running it here.
+struct ComputedEnsemble {
+  particles::EnsembleResult ensemble;
+  ParallelRun parallel;
+};
+// The ensemble of the scene (or sweep variant) a run asks for, in the order it asks.
+using EnsembleSource = std::function<ComputedEnsemble(const Scene&)>;
+
+// The stages (stage_*.cpp). Each takes what earlier stages handed on. The
+// particles stage runs the ensemble here unless a source gives it.
+ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+                              const EnsembleSource& source = {});
 std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial,
                                         ProgressBar& progress);
 Comparison run_comparison(const Scene& scene, const InitialCondition& initial,

@@ -7,6 +7,7 @@
 
 #include "frames.hpp"
 #include "progress_bar.hpp"
+#include "realization_pool.hpp"
 #include "run_results.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
 
@@ -31,18 +32,20 @@ void split_frames(ParticleResults& r, const Scene& scene, const std::vector<doub
 
 }  // namespace
 
-ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress) {
-  progress.stage("particles");
-  particles::ParticleParams params = scene.particles;
-  const std::vector<double> frames = scene.output.animation ? frame_times(scene) : std::vector<double>{};
-  params.snapshots.insert(params.snapshots.end(), frames.begin(), frames.end());
-  std::sort(params.snapshots.begin(), params.snapshots.end());
-  params.snapshots.erase(std::unique(params.snapshots.begin(), params.snapshots.end()),
-                         params.snapshots.end());
+ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+                              const EnsembleSource& source) {
   ParticleResults r;
-  r.ensemble = particles::run_ensemble(initial, params, progress.callback());
-  progress.finish();
-  if (!frames.empty()) split_frames(r, scene, frames);
+  if (source) {
+    ComputedEnsemble computed = source(scene);
+    r.ensemble = std::move(computed.ensemble);
+    r.parallel = computed.parallel;
+  } else {
+    progress.stage("particles");
+    r.ensemble = particles::run_ensemble(initial, particle_params(scene), progress.callback());
+    progress.finish();
+    r.parallel.threads = resolved_threads(scene.particles.threads);
+  }
+  if (scene.output.animation) split_frames(r, scene, frame_times(scene));
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
   r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r,

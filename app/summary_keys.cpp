@@ -90,6 +90,14 @@ std::vector<Declaration> particles() {
             const auto& e = pr.ensemble;
             return e.wall_seconds > 0 ? static_cast<double>(e.total_collisions) / e.wall_seconds : 0.0;
           })),
+      key(p, "parallel.ranks", "1", "processes of the MPI job that ran the realizations (1: one process)", "",
+          particle([](const PR& pr, const Scene&) { return pr.parallel.ranks; })),
+      key(p, "parallel.threads", "1", "threads of each process", "",
+          particle([](const PR& pr, const Scene&) { return pr.parallel.threads; })),
+      key(p, "parallel.shards", "1", "shards merged into this result", "after shockgas merge",
+          [](const RunResults& r, Emitter& out) {
+            if (r.particles && r.particles->parallel.shards > 0) out.json(r.particles->parallel.shards);
+          }),
       key(p, "particles.stop", "",
           "how realization 0 ended (completed, collapse, rounding_stall, event_limit, wall_limit)", "",
           particle([](const PR& pr, const Scene&) { return to_string(pr.ensemble.first.stop.reason); })),

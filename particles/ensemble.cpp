@@ -110,8 +110,12 @@ EnsembleResult run_ensemble(const InitialCondition& ic, const ParticleParams& p,
   validate(p);
   const auto start = std::chrono::steady_clock::now();
   SharedProgress shared(progress, p.realizations);
-  std::vector<RunResult> runs = run_all(ic, p, shared);
+  EnsembleResult e = reduce_ensemble(run_all(ic, p, shared));
+  e.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return e;
+}
 
+EnsembleResult reduce_ensemble(std::vector<RunResult> runs) {
   EnsembleResult e;
   std::size_t samples = 0;
   for (const RunResult& r : runs) samples = std::max(samples, r.series.size());
@@ -136,7 +140,6 @@ EnsembleResult run_ensemble(const InitialCondition& ic, const ParticleParams& p,
     e.total_collisions += r.collisions;
   }
   e.first = std::move(runs.front());
-  e.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return e;
 }
 

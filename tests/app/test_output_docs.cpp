@@ -31,13 +31,15 @@ std::string read_file(const fs::path& path) {
 
 using testing_support::run;
 
-// Runs `scene` (text) into a fresh directory and returns it.
-fs::path run_scene(const std::string& name, const std::string& scene) {
+// Runs `scene` (text) into a fresh directory and returns it; `options`: more of the command line.
+fs::path run_scene(const std::string& name, const std::string& scene, std::vector<std::string> options = {}) {
   const fs::path dir = fs::temp_directory_path() / ("shockgas-test-layout-" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "scene.toml") << scene;
-  EXPECT_EQ(run({"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(), "-q"}), 0);
+  std::vector<std::string> args = {"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(), "-q"};
+  args.insert(args.end(), options.begin(), options.end());
+  EXPECT_EQ(run(args), 0);
   return dir / "out";
 }
 
@@ -149,6 +151,11 @@ TEST(OutputDocs, AnAnimatedRunWritesTheDeclaredLayout) {
 
 TEST(OutputDocs, ASweepWritesTheDeclaredLayout) {
   expect_file_follows_layout(run_scene("sweep", kSweepScene), {Part::provenance, Part::sweep});
+}
+
+TEST(OutputDocs, AShardWritesTheDeclaredLayout) {
+  expect_file_follows_layout(run_scene("shard", kFullScene, {"--realizations", "0:1"}),
+                             {Part::provenance, Part::shard});
 }
 
 TEST(OutputDocs, EveryDeclaredSummaryKeyIsDocumentedWithItsUnit) {

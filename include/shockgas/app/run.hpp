@@ -15,6 +15,10 @@ struct RunOptions {
   std::string out_dir;    // results directory; empty = out/<scene name>
   bool progress = true;   // progress on stderr for runs longer than a second
   bool plots = true;      // make plots (also needs scene output.plots)
+  // A shard (docs/cluster.md): only these realizations of each ensemble ("A:B",
+  // half-open), and only these variants of a sweep; written for `shockgas merge`.
+  std::string realizations;
+  std::string variants;
 };
 
 // Returns the output directory. Throws InputError for input that the scene's

@@ -56,6 +56,13 @@ struct EnsembleResult {
 // from one thread at a time.
 EnsembleResult run_ensemble(const InitialCondition& initial, const ParticleParams& params,
                             const ProgressCallback& progress = {});
+// The ensemble of realizations 0..R-1 from their runs in index order (runs[k]
+// is realization k, runs[0] whole; of the others only the series, histogram
+// density, stop and collisions are read): the one reduction of an ensemble,
+// whether its realizations ran on threads, on MPI ranks or in shards, so that
+// the result depends on none of these. wall_seconds is left 0.
+EnsembleResult reduce_ensemble(std::vector<RunResult> runs);
+
 // The same from the parameters (the initial condition built here).
 EnsembleResult run_ensemble(const InitialParams& initial, const ParticleParams& params,
                             const ProgressCallback& progress = {});

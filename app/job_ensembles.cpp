@@ -1,0 +1,293 @@
+#include "job_ensembles.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <iostream>
+#include <optional>
+#include <thread>
+
+#include "progress_bar.hpp"
+#include "realization_pool.hpp"
+#include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
+
+namespace shockgas::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr auto kPoll = std::chrono::milliseconds(50);
+constexpr double kBeatSeconds = 0.2;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string pack(const std::vector<double>& numbers) {
+  return std::string(reinterpret_cast<const char*>(numbers.data()), numbers.size() * sizeof(double));
+}
+std::vector<double> unpack(const std::string& bytes) {
+  std::vector<double> numbers(bytes.size() / sizeof(double));
+  std::memcpy(numbers.data(), bytes.data(), numbers.size() * sizeof(double));
+  return numbers;
+}
+
+// [head..., e0, k0, e1, k1, ...]
+std::string pack_items(std::vector<double> head, const std::vector<WorkItem>& items) {
+  for (const WorkItem& w : items)
+    head.push_back(static_cast<double>(w.ensemble)), head.push_back(static_cast<double>(w.index));
+  return pack(head);
+}
+std::vector<WorkItem> unpack_items(const std::vector<double>& numbers, std::size_t head) {
+  std::vector<WorkItem> items;
+  for (std::size_t i = head; i + 1 < numbers.size(); i += 2)
+    items.push_back({static_cast<std::size_t>(numbers[i]), static_cast<std::uint64_t>(numbers[i + 1])});
+  return items;
+}
+
+std::string describe(const EnsemblePlan& plan, const std::vector<WorkItem>& items) {
+  if (items.empty()) return "between realizations";
+  std::string text = "while running ";
+  for (std::size_t i = 0; i < items.size(); ++i) text += (i ? ", " : "") + plan.describe(items[i]);
+  return text;
+}
+
+void sort_in_plan_order(std::vector<RealizationRecord>& records) {
+  std::sort(records.begin(), records.end(), [](const RealizationRecord& a, const RealizationRecord& b) {
+    return a.index != b.index ? a.index < b.index : a.ensemble < b.ensemble;
+  });
+}
+
+ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
+                              ProgressBar& progress) {
+  ComputedRecords out;
+  out.threads = threads;
+  RealizationPool pool(plan, plan->items(), threads, false);
+  while (!pool.finished()) {
+    progress.update(pool.fraction(), pool.sim_time());
+    std::this_thread::sleep_for(kPoll);
+  }
+  if (auto failure = pool.failure()) std::rethrow_exception(failure->error);
+  out.records = pool.take_finished();
+  sort_in_plan_order(out.records);
+  return out;
+}
+
+// Rank 0: its own share on its threads, the others' records as they come.
+class Gatherer {
+ public:
+  Gatherer(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads, ProgressBar& progress)
+      : job_(job), plan_(*plan), progress_(progress), peers_(static_cast<std::size_t>(job.size())) {
+    for (int j = 0; j < job.size(); ++j) peers_[j].items = plan->share(j, job.size()).size();
+    for (auto& p : peers_) p.heard = Clock::now();
+    pool_ = std::make_unique<RealizationPool>(plan, plan->share(0, job.size()), threads, true);
+  }
+
+  std::vector<RealizationRecord> gather() {
+    Clock::time_point beat = Clock::now();
+    while (true) {
+      while (auto m = job_.receive()) handle(*m);
+      for (auto& r : pool_->take_finished()) records_.push_back(std::move(r)), ++peers_[0].received;
+      if (auto f = pool_->failure()) fail(0, f->item, f->message);
+      if (interrupt_requested() != InterruptMode::none) stop_on_interrupt();
+      check_signalled();
+      check_silence();
+      if (records_.size() == plan_.items().size()) break;
+      progress_.update(fraction(), pool_->sim_time());
+      if (seconds_since(beat) > kBeatSeconds) {
+        job_.send(1, kProgress,
+                  pack_items({pool_->fraction(), 0.0}, pool_->running()));  // for rank 1 to name us
+        beat = Clock::now();
+      }
+      std::this_thread::sleep_for(kPoll);
+    }
+    for (int j = 1; j < job_.size(); ++j) job_.send(j, kDone, {});
+    return std::move(records_);
+  }
+
+ private:
+  struct Peer {
+    std::size_t items = 0, received = 0;
+    double fraction = 0;
+    std::vector<WorkItem> running;
+    Clock::time_point heard;
+    bool answered = false;
+    int signal = 0;  // the signal it reported
+    bool working() const { return received < items; }
+  };
+
+  void handle(const JobMessage& m) {
+    Peer& p = peers_[m.source];
+    p.heard = Clock::now();
+    if (m.tag == kRecord) {
+      records_.push_back(decode(m.bytes));
+      ++p.received;
+    } else if (m.tag == kProgress) {
+      const auto n = unpack(m.bytes);
+      p.fraction = n.at(0);
+      p.running = unpack_items(n, 2);
+    } else if (m.tag == kFailed) {
+      const std::size_t head = 2 * sizeof(double);  // the item, then the message
+      fail(m.source, unpack_items(unpack(m.bytes.substr(0, head)), 0).at(0), m.bytes.substr(head));
+    } else if (m.tag == kInterrupted) {
+      const auto n = unpack(m.bytes);
+      p.answered = true;
+      p.running = unpack_items(n, 1);
+      p.signal = static_cast<int>(n.at(0));
+      if (p.signal != 0 && !signalled_) signalled_ = Clock::now();
+    }
+  }
+
+  // A rank reported a signal: the whole job's (rank 0 gets it too, at once), or its own.
+  void check_signalled() {
+    if (!signalled_ || seconds_since(*signalled_) < kAnswerSeconds) return;
+    for (int j = 1; j < job_.size(); ++j)
+      if (peers_[j].signal != 0)
+        throw RunError("rank " + std::to_string(j) + " was stopped by signal " +
+                       std::to_string(peers_[j].signal) + " " + describe(plan_, peers_[j].running) +
+                       "; the job stops, no result is written");
+  }
+
+  [[noreturn]] void fail(int rank, const WorkItem& item, const std::string& message) {
+    throw RunError("rank " + std::to_string(rank) + " failed in " + plan_.describe(item) + ": " + message +
+                   "; the job stops, no result is written");
+  }
+
+  // A signal reached rank 0: every rank still working must answer; those that
+  // cannot were killed with their node or by hand, and the launcher is ending the rest.
+  [[noreturn]] void stop_on_interrupt() {
+    for (int j = 1; j < job_.size(); ++j) job_.send(j, kStop, {});
+    const Clock::time_point asked = Clock::now();
+    while (seconds_since(asked) < kAnswerSeconds && !all_answered()) {
+      while (auto m = job_.receive())
+        if (m->tag == kInterrupted || m->tag == kRecord) handle(*m);
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    for (int j = 1; j < job_.size(); ++j)
+      if (peers_[j].working() && !peers_[j].answered) lost(j, "stopped");
+    throw Interrupted(interrupt_signal());
+  }
+
+  bool all_answered() const {
+    for (std::size_t j = 1; j < peers_.size(); ++j)
+      if (peers_[j].working() && !peers_[j].answered) return false;
+    return true;
+  }
+
+  void check_silence() {
+    for (int j = 1; j < job_.size(); ++j)
+      if (peers_[j].working() && seconds_since(peers_[j].heard) > kSilenceSeconds)
+        lost(j, "has not answered for " + std::to_string(static_cast<int>(kSilenceSeconds)) + " s");
+  }
+
+  [[noreturn]] void lost(int rank, const std::string& what) {
+    throw RunError("rank " + std::to_string(rank) + " " + what + " " + describe(plan_, peers_[rank].running) +
+                   " (killed, or its node was lost); the job stops, no result is written");
+  }
+
+  double fraction() const {
+    double done = pool_->fraction() * static_cast<double>(peers_[0].items);
+    for (std::size_t j = 1; j < peers_.size(); ++j)
+      done += (peers_[j].working() ? peers_[j].fraction : 1.0) * static_cast<double>(peers_[j].items);
+    return plan_.items().empty() ? 1.0 : done / static_cast<double>(plan_.items().size());
+  }
+
+  Job& job_;
+  const EnsemblePlan& plan_;
+  ProgressBar& progress_;
+  std::vector<Peer> peers_;
+  std::vector<RealizationRecord> records_;
+  std::unique_ptr<RealizationPool> pool_;
+  std::optional<Clock::time_point> signalled_;  // when a rank first reported a signal
+};
+
+// Ranks 1..K-1: their share, each record sent as it finishes.
+class Worker {
+ public:
+  Worker(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads)
+      : job_(job), plan_(*plan), pool_(plan, plan->share(job.rank(), job.size()), threads, true) {}
+
+  void serve() {
+    Clock::time_point beat{};
+    bool done = false;
+    while (true) {
+      for (auto& r : pool_.take_finished()) job_.send(0, kRecord, encode(r));
+      if (auto f = pool_.failure()) {
+        job_.send(0, kFailed, pack_items({}, {f->item}) + f->message);
+        wait_to_be_ended();
+      }
+      if (interrupt_requested() != InterruptMode::none) answer(interrupt_signal());
+      while (auto m = job_.receive()) {
+        if (m->tag == kDone) done = true;
+        if (m->tag == kStop) answer(0);
+        if (m->tag == kProgress)
+          root_running_ = unpack_items(unpack(m->bytes), 2), root_heard_ = Clock::now();
+      }
+      if (done) return;
+      check_root();
+      if (seconds_since(beat) > kBeatSeconds) {
+        job_.send(0, kProgress, pack_items({pool_.fraction(), pool_.sim_time()}, pool_.running()));
+        beat = Clock::now();
+      }
+      std::this_thread::sleep_for(kPoll);
+    }
+  }
+
+ private:
+  [[noreturn]] void answer(int signal) {
+    job_.send(0, kInterrupted, pack_items({static_cast<double>(signal)}, pool_.running()));
+    wait_to_be_ended();
+  }
+
+  // Rank 0 ends the job (MPI_Abort) once it has said why; should it not, the
+  // job is ended from here after kSilenceSeconds.
+  [[noreturn]] void wait_to_be_ended() {
+    const Clock::time_point since = Clock::now();
+    while (seconds_since(since) < kSilenceSeconds) {
+      while (job_.receive()) {
+      }
+      std::this_thread::sleep_for(kPoll);
+    }
+    job_.abort(1);
+  }
+
+  // Rank 1 speaks when rank 0 falls silent (rank 0 sends it a heartbeat).
+  void check_root() {
+    if (job_.rank() != 1 || seconds_since(root_heard_) < kSilenceSeconds) return;
+    std::cerr << "shockgas: run failed: rank 0 has not answered for " << static_cast<int>(kSilenceSeconds)
+              << " s " << describe(plan_, root_running_)
+              << " (killed, or its node was lost); the job stops, no result is written\n";
+    job_.abort(1);
+  }
+
+  Job& job_;
+  const EnsemblePlan& plan_;
+  RealizationPool pool_;
+  std::vector<WorkItem> root_running_;
+  Clock::time_point root_heard_ = Clock::now();
+};
+
+}  // namespace
+
+ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
+                                ProgressBar& progress) {
+  const Clock::time_point start = Clock::now();
+  if (!job) {
+    ComputedRecords out = compute_alone(std::move(plan), threads, progress);
+    out.wall_seconds = seconds_since(start);
+    return out;
+  }
+  ComputedRecords out;
+  out.ranks = job->size();
+  out.threads = threads;
+  if (job->rank() != 0) {
+    Worker(*job, std::move(plan), threads).serve();
+    return out;
+  }
+  out.records = Gatherer(*job, std::move(plan), threads, progress).gather();
+  sort_in_plan_order(out.records);
+  out.wall_seconds = seconds_since(start);
+  return out;
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,107 @@
+// A run on the processes of an MPI job, or of one shard: the plan's
+// realizations computed by every rank (job_ensembles.hpp), then written by
+// rank 0: a whole run, or the shard's records.
+#include "parallel_run.hpp"
+
+#include <algorithm>
+#include <iostream>
+
+#include "job.hpp"
+#include "job_ensembles.hpp"
+#include "progress_bar.hpp"
+#include "realization_pool.hpp"
+#include "shard_file.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A rank with no realization to run is allowed, and said.
+void say_idle_ranks(const Job* job, const EnsemblePlan& plan) {
+  if (!job || plan.items().size() >= static_cast<std::size_t>(job->size())) return;
+  const std::size_t busy = plan.items().size(), last = static_cast<std::size_t>(job->size()) - 1;
+  std::cerr << "shockgas: note: " << job->size() << " ranks for " << busy << " realization"
+            << (busy == 1 ? "" : "s") << ": "
+            << (busy == last ? "rank " + std::to_string(last) + " has"
+                             : "ranks " + std::to_string(busy) + " to " + std::to_string(last) + " have")
+            << " none to run\n";
+}
+
+// The job's wall time shared among the ensembles in proportion to the time
+// their realizations took (a sweep's variants run side by side).
+std::vector<double> wall_shares(const EnsemblePlan& plan, const std::vector<RealizationRecord>& records,
+                                double wall_seconds) {
+  std::vector<double> own(plan.ensembles(), 0.0);
+  double all = 0;
+  for (const auto& r : records) own[r.ensemble] += r.run.wall_seconds, all += r.run.wall_seconds;
+  for (double& w : own) w = all > 0 ? wall_seconds * w / all : wall_seconds / static_cast<double>(own.size());
+  return own;
+}
+
+}  // namespace
+
+bool runs_in_parallel(const RunOptions& options) {
+  return current_job() || !options.realizations.empty() || !options.variants.empty();
+}
+
+std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptions& options) {
+  std::optional<Slice> realizations, variants;
+  if (!options.realizations.empty()) realizations = parse_slice(options.realizations, "--realizations");
+  if (!options.variants.empty()) variants = parse_slice(options.variants, "--variants");
+  const bool shard = realizations || variants;
+  const auto plan = std::make_shared<const EnsemblePlan>(scene, realizations, variants);
+  Job* job = current_job();
+  if (speaks_for_job()) say_idle_ranks(job, *plan);
+  const std::size_t threads = resolved_threads(scene.particles.threads);
+  ComputedRecords computed;
+  {
+    ProgressBar progress(options.progress && speaks_for_job());
+    progress.stage(job ? "particles, " + std::to_string(job->size()) + " ranks" : "particles");
+    computed = compute_records(job, plan, threads, progress);
+  }
+  if (!speaks_for_job()) return dir.string();
+  if (shard) {
+    std::string name =
+        scene.name + ".shard-" + options.realizations + (variants ? "-v" + options.variants : "");
+    std::replace(name.begin(), name.end(), ':', '-');
+    const fs::path where = options.out_dir.empty() ? fs::path("out") / name : dir;
+    write_shard(where, scene, *plan, std::move(computed));
+    return where.string();
+  }
+  const ParallelRun parallel{computed.ranks, computed.threads, 0};
+  return write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
+                            options, scene.has_sweep ? nullptr : &plan->initial(0));
+}
+
+std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
+                               std::vector<RealizationRecord> records, const ParallelRun& parallel,
+                               double wall_seconds, const fs::path& dir, const RunOptions& options,
+                               const InitialCondition* initial) {
+  const std::vector<double> wall = wall_shares(plan, records, wall_seconds);
+  std::vector<std::vector<RealizationRecord>> by_ensemble(plan.ensembles());
+  for (auto& r : records) by_ensemble.at(r.ensemble).push_back(std::move(r));
+  std::size_t next = 0;  // run_sweep asks in variant order, skipping variants without particles
+  EnsembleSource source = [&](const Scene& asked) {
+    std::size_t e = next;
+    while (e < plan.ensembles() && plan.scene(e).name != asked.name) ++e;
+    if (e == plan.ensembles()) throw RunError("the ensemble of " + asked.name + " was not computed");
+    next = e + 1;
+    ComputedEnsemble c{reduce_ensemble_records(std::move(by_ensemble[e]), plan.realizations(e)), parallel};
+    c.ensemble.wall_seconds = wall[e];
+    return c;
+  };
+  if (scene.has_sweep) return run_sweep(scene, dir, options, source);
+  std::optional<InitialCondition> built;
+  if (!initial) {
+    built.emplace(build_initial(scene));
+    preflight(scene, *built);
+    initial = &*built;
+  }
+  run_single(scene, *initial, dir, options, source);
+  return dir.string();
+}
+
+}  // namespace shockgas::app

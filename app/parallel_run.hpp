@@ -1,0 +1,24 @@
+#pragma once
+// Writing a run whose particle ensembles were computed elsewhere: gathered from
+// the ranks of an MPI job (parallel_run.cpp) or merged from shards (merge.cpp).
+// Each ensemble is reduced from its records in index order, then the run goes
+// on as a single process's would: the continuum, the comparison, the result
+// files, the report and the plots, through run_single and run_sweep.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ensemble_plan.hpp"
+#include "run_internal.hpp"
+
+namespace shockgas::app {
+
+// records: of every realization of every ensemble of `plan` (each ensemble
+// computed whole), in any order. wall_seconds: how long computing them took.
+// initial: realization 0 of a scene without sweep, if already built.
+std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
+                               std::vector<RealizationRecord> records, const ParallelRun& parallel,
+                               double wall_seconds, const std::filesystem::path& dir,
+                               const RunOptions& options, const InitialCondition* initial = nullptr);
+
+}  // namespace shockgas::app

@@ -1,0 +1,145 @@
+#include "realization_pool.hpp"
+
+#include <sched.h>
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+#include "frames.hpp"
+#include "shockgas/particles/simulate.hpp"
+
+namespace shockgas::app {
+
+struct RealizationPool::State {
+  std::shared_ptr<const EnsemblePlan> plan;
+  std::vector<WorkItem> items;
+  std::size_t threads_per_run = 1;
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+
+  mutable std::mutex mutex;      // guards what follows
+  std::vector<double> fraction;  // per item
+  std::vector<bool> active;      // per item
+  double sim_time = 0;
+  std::size_t ended = 0;  // items finished or failed
+  std::size_t workers = 0;
+  std::vector<RealizationRecord> finished;
+  std::optional<Failure> failure;
+
+  void run(std::size_t i) {
+    const WorkItem item = items[i];
+    const InitialCondition& ic = plan->initial(item.ensemble);
+    particles::ParticleParams p = particle_params(plan->scene(item.ensemble));
+    p.threads = threads_per_run;
+    auto progress = [this, i](double f, double t) {
+      std::lock_guard lock(mutex);
+      fraction[i] = f;
+      sim_time = std::max(sim_time, t);
+    };
+    RealizationRecord r{item.ensemble, item.index,
+                        item.index == 0
+                            ? particles::simulate(ic.bodies(), ic.length(), p, progress)
+                            : particles::simulate(ic.realization(item.index), ic.length(), p, progress)};
+    if (item.index != 0) strip_states(r.run);
+    std::lock_guard lock(mutex);
+    fraction[i] = 1;
+    active[i] = false;
+    ++ended;
+    finished.push_back(std::move(r));
+  }
+
+  void work() {
+    for (std::size_t i = next++; i < items.size() && !stop; i = next++) {
+      {
+        std::lock_guard lock(mutex);
+        active[i] = true;
+      }
+      try {
+        run(i);
+      } catch (const std::exception& e) {
+        fail(i, std::current_exception(), e.what());
+      } catch (...) {
+        fail(i, std::current_exception(), "unknown error");
+      }
+    }
+    std::lock_guard lock(mutex);
+    --workers;
+  }
+
+  void fail(std::size_t i, std::exception_ptr error, std::string message) {
+    stop = true;
+    std::lock_guard lock(mutex);
+    active[i] = false;
+    ++ended;
+    if (!failure) failure = Failure{items[i], error, std::move(message)};
+  }
+};
+
+RealizationPool::RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::vector<WorkItem> items,
+                                 std::size_t threads, bool abandon_unfinished)
+    : state_(std::make_shared<State>()), abandon_(abandon_unfinished) {
+  State& s = *state_;
+  s.plan = std::move(plan);
+  s.items = std::move(items);
+  s.fraction.assign(s.items.size(), 0.0);
+  s.active.assign(s.items.size(), false);
+  const std::size_t runs = std::max<std::size_t>(1, std::min(threads, s.items.size()));
+  s.threads_per_run = std::max<std::size_t>(1, threads / runs);  // threads left over go to each run's windows
+  const std::size_t workers = s.items.empty() ? 0 : runs;
+  s.workers = workers;  // counted down by the threads as they end
+  for (std::size_t t = 0; t < workers; ++t) threads_.emplace_back([state = state_] { state->work(); });
+}
+
+RealizationPool::~RealizationPool() {
+  state_->stop = true;
+  const bool leave = abandon_ && !finished();
+  for (auto& t : threads_) leave ? t.detach() : t.join();
+}
+
+std::vector<RealizationRecord> RealizationPool::take_finished() {
+  std::lock_guard lock(state_->mutex);
+  return std::exchange(state_->finished, {});
+}
+
+std::optional<RealizationPool::Failure> RealizationPool::failure() const {
+  std::lock_guard lock(state_->mutex);
+  return state_->failure;
+}
+
+std::vector<WorkItem> RealizationPool::running() const {
+  std::lock_guard lock(state_->mutex);
+  std::vector<WorkItem> out;
+  for (std::size_t i = 0; i < state_->items.size(); ++i)
+    if (state_->active[i]) out.push_back(state_->items[i]);
+  return out;
+}
+
+double RealizationPool::fraction() const {
+  std::lock_guard lock(state_->mutex);
+  if (state_->items.empty()) return 1.0;
+  double sum = 0;
+  for (double f : state_->fraction) sum += f;
+  return sum / static_cast<double>(state_->items.size());
+}
+
+double RealizationPool::sim_time() const {
+  std::lock_guard lock(state_->mutex);
+  return state_->sim_time;
+}
+
+bool RealizationPool::finished() const {
+  std::lock_guard lock(state_->mutex);
+  return state_->workers == 0;
+}
+
+std::size_t resolved_threads(std::size_t setting) {
+  if (setting > 0) return setting;
+  cpu_set_t cpus;  // the cores this process may run on: a launcher may bind each rank to its own
+  if (sched_getaffinity(0, sizeof cpus, &cpus) == 0) return std::max(1, CPU_COUNT(&cpus));
+  return std::max<std::size_t>(1, std::thread::hardware_concurrency());
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,62 @@
+#pragma once
+// Realizations of a plan run on worker threads in the background, while the
+// thread that made the pool keeps talking (to the other ranks of a job, to the
+// progress bar). Each realization is particles::simulate on its own initial
+// bodies, exactly as particles::run_ensemble runs it, so its record does not
+// depend on where or beside what it ran.
+#include <cstddef>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ensemble_plan.hpp"
+
+namespace shockgas::app {
+
+class RealizationPool {
+ public:
+  struct Failure {
+    WorkItem item;
+    std::exception_ptr error;
+    std::string message;  // error's what()
+  };
+
+  // Starts `items` of `plan` on `threads` threads (>= 1). abandon_unfinished:
+  // the destructor leaves realizations still running to finish on their own
+  // (the process is about to end the job) instead of waiting for them.
+  RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::vector<WorkItem> items, std::size_t threads,
+                  bool abandon_unfinished);
+  // Starts no further realization; waits for the running ones unless abandoned.
+  ~RealizationPool();
+  RealizationPool(const RealizationPool&) = delete;
+  RealizationPool& operator=(const RealizationPool&) = delete;
+
+  // The records finished since the last call (realization 0 whole, the others
+  // without states).
+  std::vector<RealizationRecord> take_finished();
+  // The first realization that failed, if one did (no further one is started).
+  std::optional<Failure> failure() const;
+  // The realizations running now.
+  std::vector<WorkItem> running() const;
+  // The fraction of the pool's realizations done (each counting equally) and
+  // the largest simulated time reported.
+  double fraction() const;
+  double sim_time() const;
+  // Every item finished, or one failed and the others stopped.
+  bool finished() const;
+
+ private:
+  struct State;
+  std::shared_ptr<State> state_;
+  std::vector<std::thread> threads_;
+  bool abandon_;
+};
+
+// The threads "particles.threads = n" means for this process: n, or for 0 the
+// cores it may run on (its CPU affinity: mpirun and srun bind ranks to cores).
+std::size_t resolved_threads(std::size_t setting);
+
+}  // namespace shockgas::app

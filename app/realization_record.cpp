@@ -1,0 +1,184 @@
+#include "realization_record.hpp"
+
+#include <cstring>
+#include <map>
+
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+namespace {
+
+using particles::RunResult;
+
+void put_bodies(RecordFields& f, const std::string& prefix, const Bodies& b) {
+  f.emplace_back(prefix + "/x", b.x);
+  f.emplace_back(prefix + "/v", b.v);
+  f.emplace_back(prefix + "/m", b.m);
+}
+
+// Field lookup by name with the malformed cases named.
+class FieldReader {
+ public:
+  explicit FieldReader(const RecordFields& fields) {
+    for (const auto& [name, data] : fields) by_name_[name] = &data;
+  }
+  bool has(const std::string& name) const { return by_name_.count(name) > 0; }
+  const std::vector<double>& array(const std::string& name) const {
+    const auto it = by_name_.find(name);
+    if (it == by_name_.end()) throw RunError("realization record: no field " + name);
+    return *it->second;
+  }
+  std::vector<double> numbers(const std::string& name, std::size_t count) const {
+    const auto& a = array(name);
+    if (a.size() != count)
+      throw RunError("realization record: field " + name + " holds " + std::to_string(a.size()) +
+                     " numbers, not " + std::to_string(count));
+    return a;
+  }
+  Bodies bodies(const std::string& prefix) const {
+    return {array(prefix + "/x"), array(prefix + "/v"), array(prefix + "/m")};
+  }
+
+ private:
+  std::map<std::string, const std::vector<double>*> by_name_;
+};
+
+// Bytes: the ensemble and index, then per field its name and numbers, each
+// length-prefixed (std::uint64_t, native byte order: messages stay on one kind of machine).
+class ByteWriter {
+ public:
+  void u64(std::uint64_t x) { raw(&x, sizeof x); }
+  void text(const std::string& s) { u64(s.size()), raw(s.data(), s.size()); }
+  void numbers(const std::vector<double>& d) { u64(d.size()), raw(d.data(), d.size() * sizeof(double)); }
+  std::string take() { return std::move(out_); }
+
+ private:
+  void raw(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
+  std::string out_;
+};
+
+class ByteReader {
+ public:
+  explicit ByteReader(const std::string& in) : in_(in) {}
+  bool done() const { return at_ == in_.size(); }
+  std::uint64_t u64() {
+    std::uint64_t x;
+    raw(&x, sizeof x);
+    return x;
+  }
+  std::string text() {
+    std::string s(checked_count(u64(), 1), '\0');
+    raw(s.data(), s.size());
+    return s;
+  }
+  std::vector<double> numbers() {
+    std::vector<double> d(checked_count(u64(), sizeof(double)));
+    raw(d.data(), d.size() * sizeof(double));
+    return d;
+  }
+
+ private:
+  std::size_t checked_count(std::uint64_t n, std::size_t size) const {
+    if (n > (in_.size() - at_) / size) throw RunError("realization record: truncated message");
+    return static_cast<std::size_t>(n);
+  }
+  void raw(void* p, std::size_t n) {
+    if (n > in_.size() - at_) throw RunError("realization record: truncated message");
+    std::memcpy(p, in_.data() + at_, n);
+    at_ += n;
+  }
+  const std::string& in_;
+  std::size_t at_ = 0;
+};
+
+}  // namespace
+
+void strip_states(RunResult& run) {
+  run.final_state = {};
+  run.snapshots = {};
+  run.spacetime = {};
+}
+
+RecordFields to_fields(const RunResult& run) {
+  RecordFields f;
+  particles::TimeSeries series = run.series;
+  series.for_each_column([&](const char* name, std::vector<double>& column) {
+    f.emplace_back(std::string("series/") + name, std::move(column));
+  });
+  const auto& h = run.histogram;
+  f.emplace_back("histogram/shape", std::vector<double>{h.zmax, static_cast<double>(h.bins)});
+  f.emplace_back("histogram/t", h.t);
+  f.emplace_back("histogram/density", h.density);
+  f.emplace_back("stop",
+                 std::vector<double>{static_cast<double>(run.stop.reason), run.stop.time, run.stop.position});
+  f.emplace_back("collisions", std::vector<double>{static_cast<double>(run.collisions >> 32),
+                                                   static_cast<double>(run.collisions & 0xFFFFFFFFu)});
+  f.emplace_back("wall_seconds", std::vector<double>{run.wall_seconds});
+  if (run.final_state.size() > 0) put_bodies(f, "final", run.final_state);
+  for (std::size_t k = 0; k < run.snapshots.size(); ++k) {
+    const std::string prefix = "snapshots/" + std::to_string(k);
+    f.emplace_back(prefix + "/t", std::vector<double>{run.snapshots[k].t});
+    put_bodies(f, prefix, run.snapshots[k].bodies);
+  }
+  if (!run.spacetime.t.empty()) {
+    f.emplace_back("spacetime/n", std::vector<double>{static_cast<double>(run.spacetime.n)});
+    f.emplace_back("spacetime/t", run.spacetime.t);
+    f.emplace_back("spacetime/x", run.spacetime.x);
+  }
+  return f;
+}
+
+RunResult from_fields(const RecordFields& fields) {
+  const FieldReader in(fields);
+  RunResult run;
+  run.series.for_each_column([&](const char* name, std::vector<double>& column) {
+    column = in.array(std::string("series/") + name);
+  });
+  const auto shape = in.numbers("histogram/shape", 2);
+  run.histogram.zmax = shape[0];
+  run.histogram.bins = static_cast<std::size_t>(shape[1]);
+  run.histogram.t = in.array("histogram/t");
+  run.histogram.density = in.array("histogram/density");
+  const auto stop = in.numbers("stop", 3);
+  run.stop = {static_cast<particles::StopReason>(stop[0]), stop[1], stop[2]};
+  const auto collisions = in.numbers("collisions", 2);
+  run.collisions =
+      (static_cast<std::uint64_t>(collisions[0]) << 32) | static_cast<std::uint64_t>(collisions[1]);
+  run.wall_seconds = in.numbers("wall_seconds", 1)[0];
+  if (in.has("final/x")) run.final_state = in.bodies("final");
+  for (std::size_t k = 0; in.has("snapshots/" + std::to_string(k) + "/t"); ++k) {
+    const std::string prefix = "snapshots/" + std::to_string(k);
+    run.snapshots.push_back({in.numbers(prefix + "/t", 1)[0], in.bodies(prefix)});
+  }
+  if (in.has("spacetime/t")) {
+    run.spacetime.n = static_cast<std::size_t>(in.numbers("spacetime/n", 1)[0]);
+    run.spacetime.t = in.array("spacetime/t");
+    run.spacetime.x = in.array("spacetime/x");
+  }
+  return run;
+}
+
+std::string encode(const RealizationRecord& record) {
+  ByteWriter out;
+  out.u64(record.ensemble);
+  out.u64(record.index);
+  for (const auto& [name, data] : to_fields(record.run)) out.text(name), out.numbers(data);
+  return out.take();
+}
+
+RealizationRecord decode(const std::string& bytes) {
+  ByteReader in(bytes);
+  RealizationRecord r;
+  r.ensemble = in.u64();
+  r.index = in.u64();
+  RecordFields fields;
+  while (!in.done()) {
+    std::string name = in.text();
+    fields.emplace_back(std::move(name), in.numbers());
+  }
+  r.run = from_fields(fields);
+  return r;
+}
+
+}  // namespace shockgas::app

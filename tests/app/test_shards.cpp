@@ -1,0 +1,178 @@
+// Shards that merge: a run's realizations computed in slices (`shockgas run
+// --realizations A:B`), merged by `shockgas merge` into the result one run of
+// all of them writes, bit for bit; and the shards a merge refuses.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "hdf5_file.hpp"
+#include "run_comparison.hpp"
+#include "run_command.hpp"
+
+namespace shockgas::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+using testing_support::run;
+
+// Ten realizations with every record a merge must carry: series, histogram,
+// a snapshot and the final state of realization 0, the continuum and the
+// comparison (run at merge time).
+const char* kScene =
+    "[initial]\nN = 300\n[particles]\nr = 0.5\nt_end = 20\nsamples = 8\nrealizations = 10\n"
+    "histogram_bins = 12\nsnapshots = [5]\n[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 300\n[compare]\n"
+    "[output]\nplots = false\n";
+
+const char* kSweep =
+    "[initial]\nN = 200\n[particles]\nt_end = 10\nsamples = 6\nrealizations = 4\n"
+    "[sweep]\nvariants = [\"particles.r=0.2\", \"particles.r=0.8\"]\n[output]\nplots = false\n";
+
+// An animation: realization 0 also stops at the frame times, every realization
+// runs with them, and the frames are drawn at merge time.
+const char* kAnimated =
+    "[initial]\nN = 200\n[particles]\nr = 0.5\nt_end = 10\nsamples = 6\nrealizations = 4\n"
+    "[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 200\n"
+    "[output]\nplots = false\nanimation = true\nanimation_frames = 5\n";
+
+class Shards : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("shockgas-test-shards-" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "scene.toml") << kScene;
+    std::ofstream(dir_ / "sweep.toml") << kSweep;
+    std::ofstream(dir_ / "animated.toml") << kAnimated;
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  int shard(const std::string& scene, const std::string& option, const std::string& slice,
+            const std::string& out, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args{"run", path(scene), option, slice, "--out", path(out), "-q"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run(args);
+  }
+  // Runs the merge; returns its exit code and keeps what it said.
+  int merge(std::vector<std::string> shards, const std::string& out) {
+    std::vector<std::string> args{"merge"};
+    for (const auto& s : shards) args.push_back(path(s));
+    args.insert(args.end(), {"--out", path(out), "-q"});
+    ::testing::internal::CaptureStderr();
+    const int code = run(args);
+    said_ = ::testing::internal::GetCapturedStderr();
+    return code;
+  }
+  fs::path dir_;
+  std::string said_;
+};
+
+TEST_F(Shards, ThreeShardsMergeToOneRunOfAll) {
+  ASSERT_EQ(run({"run", path("scene.toml"), "--out", path("whole"), "-q"}), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:3", "s0"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "3:7", "s1"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "7:10", "s2"), 0);
+  ASSERT_EQ(merge({"s2", "s0", "s1"}, "merged"), 0) << said_;
+  EXPECT_EQ(testing::result_differences(dir_ / "whole", dir_ / "merged"), std::vector<std::string>{});
+  EXPECT_TRUE(fs::exists(dir_ / "merged" / "report.md"));
+  EXPECT_EQ(testing::read_json(dir_ / "merged" / "summary.json")["parallel"]["shards"], 3);
+}
+
+TEST_F(Shards, OnlyTheShardOfRealizationZeroCarriesStates) {
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:2", "s0"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "2:4", "s1"), 0);
+  auto paths = [&](const std::string& s) {
+    std::vector<std::string> p;
+    for (const auto& d : Hdf5File::open(path(s + "/result.h5")).datasets()) p.push_back(d.path);
+    return p;
+  };
+  auto has = [](const std::vector<std::string>& p, const std::string& x) {
+    return std::find(p.begin(), p.end(), x) != p.end();
+  };
+  const auto first = paths("s0"), second = paths("s1");
+  EXPECT_TRUE(has(first, "/shard/0/0/final/x"));
+  EXPECT_TRUE(has(first, "/shard/0/0/snapshots/0/x"));
+  EXPECT_TRUE(has(first, "/shard/0/1/series/T"));
+  EXPECT_FALSE(has(first, "/shard/0/1/final/x"));
+  EXPECT_TRUE(has(second, "/shard/0/2/series/T"));
+  for (const auto& p : second) EXPECT_EQ(p.find("final"), std::string::npos) << p;
+}
+
+TEST_F(Shards, ASweepShardedByVariantAndRealizationMerges) {
+  ASSERT_EQ(run({"run", path("sweep.toml"), "--out", path("whole"), "-q"}), 0);
+  ASSERT_EQ(shard("sweep.toml", "--variants", "0:1", "v0"), 0);
+  ASSERT_EQ(shard("sweep.toml", "--variants", "1:2", "v1a", {"--realizations", "0:1"}), 0);
+  ASSERT_EQ(shard("sweep.toml", "--variants", "1:2", "v1b", {"--realizations", "1:4"}), 0);
+  ASSERT_EQ(merge({"v0", "v1a", "v1b"}, "merged"), 0) << said_;
+  EXPECT_EQ(testing::result_differences(dir_ / "whole", dir_ / "merged"), std::vector<std::string>{});
+}
+
+TEST_F(Shards, AnAnimatedRunMergesWithItsFrames) {
+  ASSERT_EQ(run({"run", path("animated.toml"), "--out", path("whole"), "-q"}), 0);
+  ASSERT_EQ(shard("animated.toml", "--realizations", "0:1", "s0"), 0);
+  ASSERT_EQ(shard("animated.toml", "--realizations", "1:4", "s1"), 0);
+  ASSERT_EQ(merge({"s0", "s1"}, "merged"), 0) << said_;
+  EXPECT_EQ(testing::result_differences(dir_ / "whole", dir_ / "merged"), std::vector<std::string>{});
+  bool has_frames = false;
+  for (const auto& d : Hdf5File::open(path("merged/result.h5")).datasets()) has_frames |= d.path == "/animation/t";
+  EXPECT_TRUE(has_frames);
+}
+
+TEST_F(Shards, OverlappingSlicesAreRefused) {
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:5", "a"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "3:10", "b"), 0);
+  EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
+  EXPECT_NE(said_.find("both hold 3:5"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(dir_ / "merged"));
+}
+
+TEST_F(Shards, MissingSlicesAreRefusedAndListed) {
+  ASSERT_EQ(shard("scene.toml", "--realizations", "1:3", "a"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "5:7", "b"), 0);
+  EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
+  EXPECT_NE(said_.find("missing realizations 0:1 3:5 7:10"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(dir_ / "merged"));
+}
+
+TEST_F(Shards, ShardsOfAnotherSceneAreRefused) {
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:5", "a"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "5:10", "b", {"--set", "particles.r=0.6"}), 0);
+  EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
+  EXPECT_NE(said_.find("shards of one scene"), std::string::npos) << said_;
+  EXPECT_NE(said_.find("r = 0.6"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(dir_ / "merged"));
+}
+
+TEST_F(Shards, ShardsOfAnotherBuildAreRefused) {
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:5", "a"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "5:10", "b"), 0);
+  Hdf5File::update(path("b/result.h5")).set_attribute("/", "git_commit", "0000000");
+  EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
+  EXPECT_NE(said_.find("shards written by one build"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(dir_ / "merged"));
+}
+
+TEST_F(Shards, DirectoriesThatAreNoShardsAreRefused) {
+  ASSERT_EQ(run({"run", path("scene.toml"), "--out", path("whole"), "-q"}), 0);
+  EXPECT_EQ(merge({"whole"}, "merged"), 2);
+  EXPECT_NE(said_.find("holds a whole run"), std::string::npos) << said_;
+  EXPECT_EQ(merge({"nowhere"}, "merged"), 2);
+  EXPECT_NE(said_.find("no result.h5"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(dir_ / "merged"));
+}
+
+TEST_F(Shards, SlicesOutsideTheRunAreRefusedBeforeAnyWork) {
+  EXPECT_EQ(shard("scene.toml", "--realizations", "5:20", "a"), 2);
+  EXPECT_EQ(shard("scene.toml", "--realizations", "7", "b"), 2);
+  EXPECT_EQ(shard("scene.toml", "--realizations", "4:4", "c"), 2);
+  EXPECT_EQ(shard("scene.toml", "--variants", "0:1", "d"), 2);  // no [sweep]
+  EXPECT_EQ(shard("sweep.toml", "--variants", "1:3", "e"), 2);
+  for (const char* out : {"a", "b", "c", "d", "e"}) EXPECT_FALSE(fs::exists(dir_ / out)) << out;
+}
+
+}  // namespace
+}  // namespace shockgas::app
