@@ -8,6 +8,7 @@
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
+#include "partial_outputs.hpp"
 #include "plots.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/studies/studies.hpp"
@@ -37,6 +38,7 @@ void add_run(CLI::App& app, Arguments& args) {
 }
 
 int do_run(const Arguments& args) {
+  remove_partial_outputs_on_signals();
   const Scene scene = load_scene(args.scene_path, args.overrides);  // InputError: nothing written
   RunOptions options;
   options.out_dir = args.out_dir;
