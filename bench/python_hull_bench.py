@@ -30,7 +30,7 @@ def cpp_round(build, repetitions):
     medians = {}
     for b in json.loads(out)["benchmarks"]:
         if b.get("aggregate_name") == "median":
-            t = int(b["run_name"].split("t:")[1])
+            t = int(b["run_name"].split("t:")[1].split("/")[0])
             medians[t] = b["cpu_time"]  # Unit: ms (the benchmark's own unit)
     return medians
 
