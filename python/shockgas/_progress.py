@@ -20,7 +20,8 @@ class _Bars:
     def __call__(self, stage, fraction, time):
         if stage != self._stage:
             self.close()
-            self._bar = self._tqdm(total=100, desc=stage, unit="%", leave=False)
+            self._bar = self._tqdm(total=100, desc=stage, leave=False,
+                                   bar_format="{desc}: {percentage:3.0f}%|{bar}| {elapsed}<{remaining}{postfix}")
             self._stage = stage
         self._bar.n = round(100 * min(max(fraction, 0.0), 1.0), 1)
         self._bar.set_postfix_str(f"t = {time:.4g}", refresh=False)
