@@ -102,4 +102,4 @@ def snapshot(x, v, m, field, *, N, **keys):
     return Record(d)
 
 
-snapshot.__doc__ += _core._keywords
+snapshot.__doc__ = snapshot.__doc__.rstrip(" ") + _core._keywords

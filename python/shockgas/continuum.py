@@ -64,4 +64,4 @@ def field(fields):
     return Field(fields)
 
 
-solve.__doc__ += _core._keywords
+solve.__doc__ = solve.__doc__.rstrip(" ") + _core._keywords

@@ -106,5 +106,5 @@ def _run(fields):
     return ParticleRun(fields)
 
 
-simulate.__doc__ += _core._keywords
-ensemble.__doc__ += _core._initial_keywords
+simulate.__doc__ = simulate.__doc__.rstrip(" ") + _core._keywords
+ensemble.__doc__ = ensemble.__doc__.rstrip(" ") + _core._initial_keywords

@@ -88,6 +88,8 @@ py::dict simulate(const py::handle& x, const py::handle& v, const py::handle& m,
   const double L = ring_length(keys, b.size());
   refuse_leftover(keys, "shockgas.particles.simulate", particles::parameters().keys_text() + ", L");
   particles::validate(p);
+  require(p.realizations == 1, "particles.realizations", p.realizations,
+          "1: simulate runs the given bodies once (an ensemble: shockgas.particles.ensemble)");
   auto work = [&](ProgressRelay& relay) {
     relay.report("particles", 0.0, 0.0);
     auto r = particles::simulate(b, L, p, [&](double f, double t) { relay.report("particles", f, t); });

@@ -26,6 +26,7 @@ def test_a_keyword_out_of_range_names_the_scene_key():
     raises_input_error(lambda: shockgas.particles.simulate(X, V, samples=0), "particles.samples")
     raises_input_error(lambda: shockgas.particles.simulate(X, V, r=0.5, solver="hull"), "particles.solver")
     raises_input_error(lambda: shockgas.particles.simulate(X, V, L=-1.0), "initial.L")
+    raises_input_error(lambda: shockgas.particles.simulate(X, V, realizations=4), "particles.realizations")
     raises_input_error(lambda: shockgas.continuum.solve("godunov", V, dx=0.01, cfl=2.0), "continuum.cfl")
     raises_input_error(lambda: shockgas.particles.ensemble(N=0), "initial.N")
 

@@ -1,5 +1,7 @@
 """The engine and the exact hull on numpy arrays."""
 
+import doctest
+
 import numpy as np
 import pytest
 
@@ -72,6 +74,19 @@ def test_records_snapshots_histogram_spacetime():
     assert run.histogram["density"].shape == (len(run.histogram["t"]), 8)
     assert run.spacetime["x"].shape == (5, 1000)
     assert run.T.flags.owndata is False and run.T.base is not None  # the engine's own vector, not a copy
+
+
+def test_help_lists_every_key_with_its_unit_and_the_hull_example_runs():
+    doc = shockgas.particles.simulate.__doc__
+    for key in shockgas.scene_keys():
+        if key["table"] == "particles":
+            assert f"\n    {key['key']} : {key['kind']}" in doc, key["key"]
+    assert "delta : number [length/time], default 0.01" in doc
+    assert "E, Rykov & Sinai 1996" in shockgas.hull.__doc__ and "[length/time]" in shockgas.hull.__doc__
+    runner = doctest.DocTestRunner()
+    for test in doctest.DocTestFinder().find(shockgas.hull, "hull", globs={}):
+        runner.run(test)
+    assert runner.tries == 3 and runner.failures == 0
 
 
 def test_unit_masses_by_default_and_the_ring_length():
