@@ -5,8 +5,9 @@
 // arrays in, the columns out).
 //
 // Bodies: a lattice ring of N, L = N, velocities uniform on [-1, 1], seed 2026
-// (the scene keys initial.N and initial.seed; realization 0). Wall time of each
-// call, output allocated by the call.
+// (the scene keys initial.N and initial.seed; realization 0). The output is
+// allocated by each call. The iteration count follows wall time; the CPU time
+// per call is what python_hull_bench.py compares (the machine may be shared).
 //
 //   hull_call_bench [benchmark flags]   e.g. --benchmark_format=json --benchmark_repetitions=9
 #include <benchmark/benchmark.h>

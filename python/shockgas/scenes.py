@@ -70,8 +70,9 @@ def run(scene, overrides=None, out=None, plots=True, progress=None):
                {"initial": {"N": 1000}, "particles": {"r": 0.5, "t_end": 1e3}}
     overrides  {"particles.r": 0.5, ...}: keys set over the scene's (the
                command's --set)
-    out        a directory: also write result.h5, summary.json, report.md (and
-               plots) there, as the command does; None: memory only. Files are
+    out        a directory: also write result.h5, summary.json, report.md,
+               report.html (and plots) there, as the command does; None: memory
+               only. Files are
                written under temporary names and renamed when complete, so an
                interrupted or failed run leaves no file that looks whole.
     plots      with out: make the PNG plots (needs matplotlib)

@@ -11,7 +11,7 @@ import shockgas
 from conftest import SOURCE_DIR, assert_same_bits
 
 # Every part of a run, small: an ensemble with snapshots, histogram and
-# space-time record, four solvers, the comparison.
+# space-time record, four solvers, the comparison, the animation's frames.
 SCENE = """
 [scene]
 name = "pytest"
@@ -34,6 +34,8 @@ cells = 512
 [compare]
 [output]
 plots = false
+animation = true
+animation_frames = 4
 """
 
 
@@ -74,6 +76,7 @@ def test_a_dict_scene_gives_every_dataset_of_the_command_bit_for_bit(command_res
     datasets, _ = read_h5(command_result / "result.h5")
     assert "/particles/snapshots/1/x" in datasets and "/particles/spacetime/x" in datasets
     assert "/continuum/pressureless/rho" in datasets and "/compare/shocks_x" in datasets
+    assert any(name.startswith("/animation/") for name in datasets)
     assert sorted(dict_result.datasets) == sorted(datasets)
     for name, values in datasets.items():
         assert_same_bits(dict_result.datasets[name], values, name)
@@ -97,7 +100,7 @@ def test_load_returns_the_object_run_returned(tmp_path):
     scene = tomllib.loads(SCENE)
     ran = shockgas.run(scene, out=tmp_path / "run", plots=False)
     assert ran.directory == str(tmp_path / "run")
-    assert sorted(os.listdir(tmp_path / "run")) == ["report.md", "result.h5", "summary.json"]
+    assert sorted(os.listdir(tmp_path / "run")) == ["report.html", "report.md", "result.h5", "summary.json"]
     loaded = shockgas.load(tmp_path / "run" / "result.h5")
     assert sorted(loaded.datasets) == sorted(ran.datasets)
     for name in ran.datasets:
