@@ -10,6 +10,7 @@
 #include "shockgas/app/scene.hpp"
 #include "job.hpp"
 #include "merge.hpp"
+#include "partial_outputs.hpp"
 #include "plots.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/studies/studies.hpp"
@@ -63,6 +64,7 @@ RunOptions run_options(const Arguments& args) {
 }
 
 int do_run(const Arguments& args) {
+  remove_partial_outputs_on_signals();
   const Scene scene = load_scene(args.scene_path, args.overrides);  // InputError: nothing written
   const std::string dir = run_scene(scene, run_options(args));
   if (!speaks_for_job()) return kExitOk;  // rank 0 writes and speaks for an MPI job
@@ -73,6 +75,7 @@ int do_run(const Arguments& args) {
 int dispatch(const CLI::App& app, const Arguments& args) {
   if (app.got_subcommand("run")) return do_run(args);
   if (app.got_subcommand("merge")) {
+    remove_partial_outputs_on_signals();
     const std::string dir = merge_shards(args.shards, run_options(args));
     std::cout << "results in " << dir << "/\n";
     return kExitOk;

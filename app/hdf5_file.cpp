@@ -203,6 +203,22 @@ std::vector<DatasetInfo> Hdf5File::datasets() const {
   return list;
 }
 
+namespace {
+herr_t collect_group(hid_t, const char* name, const H5O_info_t* info, void* out) {
+  if (info->type != H5O_TYPE_GROUP) return 0;
+  const std::string path(name);
+  static_cast<std::vector<std::string>*>(out)->push_back(path == "." ? "/" : "/" + path);
+  return 0;
+}
+}  // namespace
+
+std::vector<std::string> Hdf5File::groups() const {
+  std::vector<std::string> list;
+  check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect_group, &list, H5O_INFO_BASIC), "H5Ovisit",
+        "file");
+  return list;
+}
+
 std::vector<std::pair<std::string, std::string>> Hdf5File::attributes(const std::string& object) const {
   std::vector<std::pair<std::string, std::string>> out;
   H5Handle obj(check(H5Oopen(file_.get(), object.c_str(), H5P_DEFAULT), "H5Oopen", object), close_object);

@@ -61,6 +61,8 @@ class Hdf5File {
 
   // Reading (for `shockgas info` and tests).
   std::vector<DatasetInfo> datasets() const;
+  // Every group, "/" first ("/particles", "/continuum/godunov", ...).
+  std::vector<std::string> groups() const;
   std::vector<std::pair<std::string, std::string>> attributes(const std::string& object) const;
   std::vector<double> read(const std::string& path) const;
 

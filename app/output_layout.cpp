@@ -8,10 +8,8 @@
 
 namespace shockgas::app {
 
-namespace {
-
 // path with each {placeholder} replaced by the next of `at`.
-std::string fill(const std::string& path, const std::vector<std::string>& at) {
+std::string fill_path(const std::string& path, const std::vector<std::string>& at) {
   std::string out;
   std::size_t next = 0;
   for (std::size_t i = 0; i < path.size(); ++i) {
@@ -27,22 +25,24 @@ std::string fill(const std::string& path, const std::vector<std::string>& at) {
   return out;
 }
 
+namespace {
+
 class FileEmitter : public Emitter {
  public:
   FileEmitter(Hdf5File& h5, const LayoutEntry& e) : h5_(h5), e_(e) {}
   void values(const std::vector<double>& data, const std::vector<std::string>& at) override {
-    h5_.write(fill(e_.path, at), data, e_.unit, e_.description);
+    h5_.write(fill_path(e_.path, at), data, e_.unit, e_.description);
   }
   void matrix(const std::vector<double>& data, std::size_t rows, std::size_t cols,
               const std::vector<std::string>& at) override {
-    h5_.write_matrix(fill(e_.path, at), data, rows, cols, e_.unit, e_.description);
+    h5_.write_matrix(fill_path(e_.path, at), data, rows, cols, e_.unit, e_.description);
   }
   void text(const std::string& value, const std::vector<std::string>& at) override {
-    const auto [object, name] = split(fill(e_.path, at));
+    const auto [object, name] = split(fill_path(e_.path, at));
     h5_.set_attribute(object, name, value);
   }
   void number(double value, const std::vector<std::string>& at) override {
-    const auto [object, name] = split(fill(e_.path, at));
+    const auto [object, name] = split(fill_path(e_.path, at));
     h5_.set_attribute(object, name, value);
   }
   void json(const nlohmann::ordered_json&, const std::vector<std::string>&) override {
@@ -63,7 +63,7 @@ class SummaryEmitter : public Emitter {
   SummaryEmitter(nlohmann::ordered_json& summary, const LayoutEntry& e) : summary_(summary), e_(e) {}
   void json(const nlohmann::ordered_json& value, const std::vector<std::string>& at) override {
     nlohmann::ordered_json* node = &summary_;
-    std::stringstream key(fill(e_.path, at));
+    std::stringstream key(fill_path(e_.path, at));
     for (std::string part; std::getline(key, part, '.');) node = &(*node)[part];
     *node = value;
   }

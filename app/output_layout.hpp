@@ -52,6 +52,10 @@ struct Declaration {
   std::function<void(const RunResults&, Emitter&)> emit;  // emits nothing where the entry does not apply
 };
 
+// A declared path with each {placeholder} filled, in order, by `at`
+// ("/continuum/{solver}/v", {"godunov"} -> "/continuum/godunov/v").
+std::string fill_path(const std::string& path, const std::vector<std::string>& at);
+
 // The declarations (output_datasets.cpp: datasets and attributes; summary_keys.cpp).
 const std::vector<Declaration>& dataset_declarations();
 const std::vector<Declaration>& summary_declarations();

@@ -100,7 +100,7 @@ std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
     preflight(scene, *built);
     initial = &*built;
   }
-  run_single(scene, *initial, dir, options, source);
+  run_single(scene, *initial, dir, options, {}, source);
   return dir.string();
 }
 

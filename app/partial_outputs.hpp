@@ -9,8 +9,10 @@
 namespace shockgas::app {
 
 // Creates dir (InputError naming --out if it cannot). The temporary files are
-// removed if the run fails (destructor) or is interrupted (SIGINT, SIGTERM).
-// Nests (a sweep holds one per variant inside its own).
+// removed if the run fails or is interrupted by a thrown exception (destructor),
+// or by SIGINT, SIGTERM where the host asked for it
+// (remove_partial_outputs_on_signals). Nests (a sweep holds one per variant
+// inside its own); runs on several threads may each hold their own.
 class PartialOutputs {
  public:
   explicit PartialOutputs(const std::filesystem::path& dir);
@@ -25,5 +27,11 @@ class PartialOutputs {
   std::filesystem::path dir_;
   std::string h5_tmp_, json_tmp_;
 };
+
+// For a host that leaves SIGINT and SIGTERM to shockgas (the command line):
+// handlers that remove the temporary files of every open PartialOutputs, then
+// end the process by the same signal. A host with its own handlers (a Python
+// session) stops runs by an interrupt request instead (core/interrupt.hpp).
+void remove_partial_outputs_on_signals();
 
 }  // namespace shockgas::app

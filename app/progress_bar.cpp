@@ -8,8 +8,12 @@
 
 namespace shockgas::app {
 
-ProgressBar::ProgressBar(bool enabled)
-    : enabled_(enabled), tty_(isatty(STDERR_FILENO) != 0), start_(Clock::now()), last_draw_(start_) {}
+ProgressBar::ProgressBar(bool enabled, Listener listener)
+    : enabled_(enabled),
+      tty_(isatty(STDERR_FILENO) != 0),
+      listener_(std::move(listener)),
+      start_(Clock::now()),
+      last_draw_(start_) {}
 
 ProgressBar::~ProgressBar() { finish(); }
 
@@ -19,11 +23,14 @@ void ProgressBar::stage(const std::string& name) {
   start_ = last_draw_ = Clock::now();
   last_decile_ = -1;
   last_time_ = 0;
+  if (listener_) listener_(stage_, 0.0, 0.0);
 }
 
 void ProgressBar::update(double fraction, double sim_time) {
-  if (!enabled_) return;
+  if (!enabled_ && !listener_) return;
   std::lock_guard<std::mutex> lock(mutex_);
+  if (listener_) listener_(stage_, fraction, sim_time);
+  if (!enabled_) return;
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   if (elapsed < 1.0) return;  // short runs print nothing

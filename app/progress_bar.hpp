@@ -3,6 +3,7 @@
 // line per 10 % otherwise; silent during the first second, so that short runs
 // print nothing.
 #include <chrono>
+#include <functional>
 #include <mutex>
 #include <string>
 
@@ -12,8 +13,12 @@ namespace shockgas::app {
 
 class ProgressBar {
  public:
-  // enabled = false prints nothing (tests, --quiet).
-  explicit ProgressBar(bool enabled = true);
+  // Told of every update (stage, fraction, simulated time), under the bar's lock.
+  using Listener = std::function<void(const std::string& stage, double fraction, double sim_time)>;
+
+  // enabled = false prints nothing (tests, --quiet); listener, if any, hears
+  // every update whether or not anything is printed.
+  explicit ProgressBar(bool enabled = true, Listener listener = {});
   ~ProgressBar();
 
   // Starts a stage ("particles", "continuum/godunov"); resets the fraction.
@@ -31,6 +36,7 @@ class ProgressBar {
   using Clock = std::chrono::steady_clock;
   void draw(double fraction, double sim_time);
   bool enabled_, tty_;
+  Listener listener_;
   std::string stage_;
   Clock::time_point start_, last_draw_;
   int last_decile_ = -1;

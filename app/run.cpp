@@ -78,42 +78,49 @@ void preflight(const Scene& scene, const InitialCondition& initial) {
   }
 }
 
-VariantResult run_single(const Scene& scene, const InitialCondition& initial, const fs::path& dir,
-                         const RunOptions& options, const EnsembleSource& source) {
-  PartialOutputs outputs(dir);
-  nlohmann::ordered_json summary;
-  ProgressBar progress(options.progress);
+RunResults compute_parts(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+                         const PartSink& sink, const EnsembleSource& source) {
   RunResults r;
   r.scene = &scene;
   r.initial = &initial;
+  sink(r, Part::provenance);
+  sink(r, Part::initial);
+  if (scene.has_particles) {
+    r.particles = run_particles(scene, initial, progress, source);
+    sink(r, Part::particles);
+    sink(r, Part::analysis);
+    release_records(*r.particles);
+  }
+  if (scene.has_continuum) {
+    r.continuum = run_continuum(scene, initial, progress);
+    sink(r, Part::continuum);
+  }
+  if (scene.has_compare && scene.has_continuum) {
+    r.comparison = run_comparison(scene, initial, *r.particles, r.continuum);
+    sink(r, Part::compare);
+  }
+  if (scene.output.animation) {
+    r.frames = run_frames(scene, initial, r.particles ? r.particles->frames : std::vector<particles::Snapshot>{},
+                          progress);
+    sink(r, Part::animation);
+  }
+  progress.finish();
+  return r;
+}
+
+VariantResult run_single(const Scene& scene, const InitialCondition& initial, const fs::path& dir,
+                         const RunOptions& options, const PartSink& also, const EnsembleSource& source) {
+  PartialOutputs outputs(dir);
+  nlohmann::ordered_json summary;
+  ProgressBar progress(options.progress, options.on_progress);
+  RunResults r;
   {
     Hdf5File h5 = Hdf5File::create(outputs.h5_path());
-    auto write = [&](Part part) {
-      write_part(h5, r, part);
-      summarize_part(summary, r, part);
-    };
-    write(Part::provenance);
-    write(Part::initial);
-    if (scene.has_particles) {
-      r.particles = run_particles(scene, initial, progress, source);
-      write(Part::particles);
-      write(Part::analysis);
-      release_records(*r.particles);
-    }
-    if (scene.has_continuum) {
-      r.continuum = run_continuum(scene, initial, progress);
-      write(Part::continuum);
-    }
-    if (scene.has_compare && scene.has_continuum) {
-      r.comparison = run_comparison(scene, initial, *r.particles, r.continuum);
-      write(Part::compare);
-    }
-    if (scene.output.animation) {
-      r.frames = run_frames(scene, initial, r.particles ? r.particles->frames : std::vector<particles::Snapshot>{},
-                            progress);
-      write(Part::animation);
-    }
-    progress.finish();
+    r = compute_parts(scene, initial, progress, [&](const RunResults& partial, Part part) {
+      write_part(h5, partial, part);
+      summarize_part(summary, partial, part);
+      if (also) also(partial, part);
+    }, source);
     h5.close();
     std::ofstream(dir / "report.md") << report_text(r);
   }

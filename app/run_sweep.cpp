@@ -84,7 +84,7 @@ std::string run_sweep(const Scene& scene, const fs::path& dir, const RunOptions&
   for (std::size_t k = 0; k < variants.size(); ++k) {
     const std::string label = variants[k].name.substr(scene.name.size() + 1);
     const std::string sub = std::to_string(k) + "-" + slug(label);
-    VariantResult v = run_single(variants[k], *initial[k], dir / sub, options, source);
+    VariantResult v = run_single(variants[k], *initial[k], dir / sub, options, {}, source);
     initial[k].reset();  // its run is done
     v.label = label;
     v.set = scene.sweep.variants[k];

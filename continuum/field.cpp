@@ -23,8 +23,15 @@ constexpr std::array<double, 6> kWeights = {0.171324492379170, 0.360761573048139
 CellAverages from_functions(const InitialField& f, std::size_t cells) {
   CellAverages a{std::vector<double>(cells), std::vector<double>(cells)};
   const double dx = f.length / static_cast<double>(cells);
+  // Data constant on pieces that hold whole cells: the cell's value itself.
+  const bool piecewise = f.pieces > 0 && cells % f.pieces == 0;
   for (std::size_t i = 0; i < cells; ++i) {
     const double mid = (static_cast<double>(i) + 0.5) * dx;
+    if (piecewise) {
+      a.v[i] = f.v0(mid);
+      a.rho[i] = f.rho0 ? f.rho0(mid) : 1.0;
+      continue;
+    }
     double sv = 0, sr = 0;
     for (std::size_t k = 0; k < kNodes.size(); ++k) {
       const double x = mid + 0.5 * dx * kNodes[k];

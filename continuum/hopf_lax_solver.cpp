@@ -71,7 +71,9 @@ SolverInfo hopf_lax_solver() {
     check_grid(f, p.cells, t_end);
   };
   s.run = [](const InitialField& f, const ContinuumParams& p, double t_end, const ProgressCallback&) {
-    return solve_hopf_lax(f, p.cells, t_end);
+    HopfLaxOptions o;
+    o.multiple_of = f.pieces;  // piecewise-constant data: every jump a sample node, so exact
+    return solve_hopf_lax(f, p.cells, t_end, o);
   };
   return s;
 }

@@ -5,6 +5,7 @@
 
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::continuum {
 
@@ -25,7 +26,13 @@ ContinuumResult solve(const std::string& name, const InitialField& f, const Cont
                       const ProgressCallback& progress) {
   const SolverInfo& info = solver_info(name);
   const auto start = std::chrono::steady_clock::now();
-  ContinuumResult r = info.run(f, p, t_end, progress);
+  // The solvers' progress points are their safe points: an abort request stops them there.
+  const ProgressCallback checked = [&progress](double fraction, double t) {
+    throw_if_aborted();
+    if (progress) progress(fraction, t);
+  };
+  ContinuumResult r = info.run(f, p, t_end, checked);
+  throw_if_aborted();
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.solver = info.name;
   require_finite(r);

@@ -52,7 +52,7 @@ namespace shockgas {
 namespace {
 
 // Throws InputError naming the first bad body; called only when build() found one.
-void check_bodies(const Bodies& b, double L) {
+void check_bodies(BodiesView b, double L) {
   for (std::size_t i = 0; i < b.size(); ++i) {
     if (!(std::isfinite(b.x[i]) && std::isfinite(b.v[i])))
       throw InputError("bodies.x/v", to_text(b.x[i]) + ", " + to_text(b.v[i]), "finite values");
@@ -65,17 +65,11 @@ void check_bodies(const Bodies& b, double L) {
           "positions in [0, L)");
 }
 
-void check_arguments(const Bodies& b, double t) {
+void check_arguments(BodiesView b, double t) {
   require_in_range("t", t, 0.0, std::numeric_limits<double>::max());
   require(b.v.size() == b.size() && b.m.size() == b.size(), "bodies", b.size(), "x, v and m of equal length");
   require(b.size() <= std::numeric_limits<std::uint32_t>::max(), "bodies", b.size(),
           "at most 2^32 - 1 bodies");
-}
-
-double wrap(double x, double L) {
-  double w = std::fmod(x, L);
-  if (w < 0) w += L;
-  return w >= L ? 0.0 : w;
 }
 
 enum class Built { ok, unequal_masses, bad_input };
@@ -166,7 +160,7 @@ struct Stack {
 // it (branch-free) and judged at the end: x_i >= x_{i-1} for all i and finite
 // ends make every x finite. Unequal masses: false, and the caller starts again.
 template <bool Masses>
-bool StickyHull::build(const Bodies& initial) {
+bool StickyHull::build(BodiesView initial) {
   const double* x = initial.x.data();
   const double* v = initial.v.data();
   const double* m = initial.m.data();
@@ -234,14 +228,14 @@ void StickyHull::close_ring() {
   origin_ %= std::max<std::size_t>(n_, 1);
 }
 
-StickyHull StickyHull::line(const Bodies& initial, double t) { return make(initial, 0.0, t); }
+StickyHull StickyHull::line(BodiesView initial, double t) { return make(initial, 0.0, t); }
 
-StickyHull StickyHull::ring(const Bodies& initial, double L, double t) {
+StickyHull StickyHull::ring(BodiesView initial, double L, double t) {
   require_above("L", L, 0.0);
   return make(initial, L, t);
 }
 
-StickyHull StickyHull::make(const Bodies& initial, double L, double t) {
+StickyHull StickyHull::make(BodiesView initial, double L, double t) {
   check_arguments(initial, t);
   StickyHull h(initial.size(), L, t, false);
   if (!h.build<false>(initial)) {
@@ -258,24 +252,32 @@ void StickyHull::advance(double t) {
   if (L_ > 0) close_ring();
 }
 
+// The ring's period is in cyclic order of x: x ascends from the lowest wrapped x.
+StickyHull::Start StickyHull::lowest() const {
+  Start best{begin_, origin_};
+  double lowest_x = std::numeric_limits<double>::infinity();
+  std::size_t first = origin_;
+  for (std::size_t k = begin_; k < end_; ++k) {
+    const double x = wrapped(c0_[k] + t_ * v_[k]);
+    if (x < lowest_x) lowest_x = x, best = {k, first};
+    first += count_[k];
+    if (first >= n_) first -= n_;
+  }
+  return best;
+}
+
 std::vector<StickyCluster> StickyHull::clusters() const {
   std::vector<StickyCluster> out;
   out.reserve(size());
-  for_each([&](StickyCluster c) {
-    if (L_ > 0) c.x = wrap(c.x, L_);
-    out.push_back(c);
-  });
-  // The ring's period is in cyclic order of x; rotate it so that x ascends.
-  auto by_x = [](const StickyCluster& a, const StickyCluster& b) { return a.x < b.x; };
-  std::rotate(out.begin(), std::min_element(out.begin(), out.end(), by_x), out.end());
+  for_each_by_x([&](const StickyCluster& c) { out.push_back(c); });
   return out;
 }
 
-std::vector<StickyCluster> sticky_clusters_line(const Bodies& initial, double t) {
+std::vector<StickyCluster> sticky_clusters_line(BodiesView initial, double t) {
   return StickyHull::line(initial, t).clusters();
 }
 
-std::vector<StickyCluster> sticky_clusters_ring(const Bodies& initial, double L, double t) {
+std::vector<StickyCluster> sticky_clusters_ring(BodiesView initial, double L, double t) {
   return StickyHull::ring(initial, L, t).clusters();
 }
 

@@ -9,6 +9,7 @@
 #include "hull_model.hpp"
 #include "recorder.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
 #include "window_scheduler.hpp"
 
 namespace shockgas::particles {
@@ -70,6 +71,7 @@ struct Watch {
 
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
   bool operator()(double t, std::uint64_t collisions) {
+    if (interrupt_requested() == InterruptMode::abort) return false;  // run_events throws Interrupted
     if (p.max_collisions > 0 && collisions >= p.max_collisions)
       return reason = StopReason::event_limit, false;
     const double s = elapsed();
@@ -129,6 +131,7 @@ RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleP
     if (s != detail::EngineStop::reached) break;
     recorder.observe(t, chain_view(engine, t), counters(engine));
   }
+  throw_if_aborted();
   if (stop.reason == StopReason::completed) stop.time = engine.now();
   RunResult out = recorder.finish(chain_view(engine, engine.now()), stop, counters(engine));
   out.wall_seconds = watch.elapsed();

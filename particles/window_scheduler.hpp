@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "event_engine.hpp"
+#include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -301,7 +302,8 @@ class WindowScheduler {
 
   // Runs every domain of w to its end; true on a rounding stall (then the engine
   // holds that domain's time and place). Sets halt when watch asks to stop; the
-  // window is finished first, so that the state stays consistent.
+  // window is finished first, so that the state stays consistent. An abort
+  // request (core/interrupt.hpp) throws Interrupted at once: the run is discarded.
   template <class Watch>
   bool run_window(const Window& w, Watch& watch, bool& halt) {
     std::size_t next = 0;
@@ -342,6 +344,7 @@ class WindowScheduler {
       advance(ahead);
       if (done >= next_check) {
         next_check += Engine::check_every;
+        throw_if_aborted();  // an abort discards the run: its window need not be finished
         if (!halt && !watch(e_.now_, before + done)) halt = true;
       }
     }

@@ -66,8 +66,8 @@ std::vector<std::string> string_literals(const std::string& code) {
 }
 
 // The C++ sources of shockgas that are not tests.
-const std::vector<std::string> kSourceFolders = {"app",  "bench",   "compare",   "continuum",
-                                                 "core", "include", "particles", "studies"};
+const std::vector<std::string> kSourceFolders = {"app",     "bench",     "compare", "continuum", "core",
+                                                 "include", "particles", "python",  "studies"};
 
 TEST(SourceRules, EachSolverNameIsWrittenInOneSourceOnly) {
   std::map<std::string, std::set<std::string>> where;
@@ -87,7 +87,7 @@ TEST(SourceRules, EachSolverNameIsWrittenInOneSourceOnly) {
 
 TEST(SourceRules, SourcesCiteOnlyDocumentsOfTheRepository) {
   std::vector<std::string> folders = kSourceFolders;
-  for (const char* f : {"tests", "scripts", "data", "docs"}) folders.push_back(f);
+  for (const char* f : {"tests", "scripts", "data", "docs", "examples"}) folders.push_back(f);
   for (const auto& path :
        files(folders, {".cpp", ".hpp", ".h", ".py", ".toml", ".json", ".cmake", ".md", ""})) {
     if (path.filename() == "test_source_rules.cpp") continue;  // names the document it looks for
@@ -107,7 +107,7 @@ TEST(SourceRules, SourcesCiteOnlyDocumentsOfTheRepository) {
 // House style: one concept per file, about 400 lines at most.
 TEST(SourceRules, NoSourceFileIsLongerThanAboutFourHundredLines) {
   std::vector<std::string> folders = kSourceFolders;
-  for (const char* f : {"tests", "scripts"}) folders.push_back(f);
+  for (const char* f : {"tests", "scripts", "examples"}) folders.push_back(f);
   for (const auto& path : files(folders, {".cpp", ".hpp", ".h", ".py"})) {
     const std::string text = read_file(path);
     const auto lines = std::count(text.begin(), text.end(), '\n');

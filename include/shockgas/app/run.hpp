@@ -5,6 +5,7 @@
 // says), report.md, *.png. result.h5 and summary.json are written under
 // temporary names and renamed when complete, so an interrupted run never leaves
 // a file that looks whole.
+#include <functional>
 #include <string>
 
 #include "shockgas/app/scene.hpp"
@@ -19,6 +20,10 @@ struct RunOptions {
   // half-open), and only these variants of a sweep; written for `shockgas merge`.
   std::string realizations;
   std::string variants;
+  // Also told of the progress of each stage ("particles", "continuum/<solver>"):
+  // the fraction of the stage done in [0, 1] and the simulated time reached.
+  // Called from the run's threads, one call at a time; a host's own display.
+  std::function<void(const std::string& stage, double fraction, double sim_time)> on_progress;
 };
 
 // Returns the output directory. Throws InputError for input that the scene's

@@ -41,6 +41,8 @@ std::vector<double> cell_centres(double length, std::size_t cells);
 // Cell averages of the initial data on `cells` cells of [0, f.length):
 //  * pointwise data (f.v0, f.rho0): 6-point Gauss-Legendre in each cell, rho the
 //    average density and v the average velocity (Burgers' conserved variable);
+//    data constant on f.pieces equal pieces, with cells a multiple of f.pieces:
+//    the value at each cell's centre (its exact average);
 //  * point masses: nearest-cell deposit, rho = mass / dx, v = momentum / mass;
 //    an empty cell takes the velocity interpolated linearly (periodically)
 //    between its occupied neighbours.

@@ -13,6 +13,8 @@ namespace shockgas::continuum {
 // it (wall_seconds); result.solver = name. Throws InputError for an unknown name
 // or parameters outside the solver's range, RunError if the solver fails or
 // produces a non-finite value.
+// An abort request (core/interrupt.hpp) stops it at its next progress point,
+// throwing Interrupted.
 ContinuumResult solve(const std::string& name, const InitialField& f, const ContinuumParams& p, double t_end,
                       const ProgressCallback& progress = {});
 

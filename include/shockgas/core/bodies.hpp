@@ -2,6 +2,7 @@
 // A one-dimensional state of point masses: what every model starts from and
 // what the particle engine and the exact sticky solver return.
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace shockgas {
@@ -22,6 +23,17 @@ struct Bodies {
     v.push_back(vi);
     m.push_back(mi);
   }
+};
+
+// Bodies held elsewhere, read in place: what a function that only reads the
+// bodies takes (a Bodies converts to it; so do a caller's own arrays).
+struct BodiesView {
+  std::span<const double> x, v, m;  // as in Bodies
+
+  BodiesView(const Bodies& b) : x(b.x), v(b.v), m(b.m) {}  // NOLINT: implicit by design
+  BodiesView(std::span<const double> x_, std::span<const double> v_, std::span<const double> m_)
+      : x(x_), v(v_), m(m_) {}
+  std::size_t size() const { return x.size(); }
 };
 
 // Total mass, momentum and kinetic energy (sum m v^2 / 2).

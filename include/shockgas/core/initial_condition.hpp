@@ -50,6 +50,8 @@ struct InitialField {
   std::function<double(double)> v0;    // velocity v0(x), if given pointwise
   std::function<double(double)> rho0;  // density rho0(x), if given pointwise
   Bodies bodies;                       // point masses, if the data are particles
+  std::size_t pieces = 0;              // if > 0: v0 and rho0 are constant on each of `pieces`
+                                       // equal cells of [0, length) (data given as cell values)
   bool from_bodies() const { return !v0; }
 };
 

@@ -11,6 +11,7 @@
 // Brenier & Grenier 1998). Clusters only merge: the partition at a later time
 // coarsens the one at an earlier time, so the later state is the hull of the
 // earlier clusters taken as bodies (StickyHull::advance).
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -42,9 +43,9 @@ class StickyHull {
   // The clusters at time t >= 0 of `initial` (sorted by x) on an open line.
   // Throws InputError for t < 0, unsorted or non-finite positions, masses <= 0,
   // or more than 2^32 - 1 bodies.
-  static StickyHull line(const Bodies& initial, double t);
+  static StickyHull line(BodiesView initial, double t);
   // The same on a ring of length L > 0 (positions in [0, L)).
-  static StickyHull ring(const Bodies& initial, double L, double t);
+  static StickyHull ring(BodiesView initial, double L, double t);
 
   // The clusters at time t >= time(). Throws InputError for t < time().
   void advance(double t);
@@ -68,18 +69,43 @@ class StickyHull {
     }
   }
 
+  // Visits the clusters in order of x: f(const StickyCluster&), x at time()
+  // (ring: wrapped into [0, L)). clusters() without the vector.
+  template <class F>
+  void for_each_by_x(F&& f) const {
+    const Start s = lowest();
+    std::size_t first = s.first;
+    for (std::size_t j = 0, k = s.run; j < size(); ++j, k = k + 1 == end_ ? begin_ : k + 1) {
+      f(StickyCluster{wrapped(c0_[k] + t_ * v_[k]), v_[k], mass(k), first, count_[k]});
+      first += count_[k];
+      if (first >= n_) first -= n_;
+    }
+  }
+
   // The clusters sorted by x (ring: wrapped into [0, L)).
   std::vector<StickyCluster> clusters() const;
 
  private:
   StickyHull(std::size_t n, double L, double t, bool masses);
-  static StickyHull make(const Bodies& initial, double L, double t);  // L = 0: line
+  static StickyHull make(BodiesView initial, double L, double t);  // L = 0: line
   template <bool Masses>
-  bool build(const Bodies& initial);
+  bool build(BodiesView initial);
   template <bool Masses>
   void pool_runs();
   void close_ring();
   double mass(std::size_t k) const { return masses_ ? m_[k] : m0_ * count_[k]; }
+  // x wrapped into [0, L) on a ring; unchanged on a line.
+  double wrapped(double x) const {
+    if (L_ <= 0) return x;
+    double w = std::fmod(x, L_);
+    if (w < 0) w += L_;
+    return w >= L_ ? 0.0 : w;
+  }
+  // The run of lowest wrapped x (the first such in chain order), and its first body.
+  struct Start {
+    std::size_t run = 0, first = 0;
+  };
+  Start lowest() const;
 
   std::size_t n_;
   double L_;  // ring length; 0 = open line
@@ -94,7 +120,7 @@ class StickyHull {
 
 // Exact state at time t >= 0 of merging point masses on an open line.
 // initial must be sorted by x. O(N). Clusters sorted by x.
-std::vector<StickyCluster> sticky_clusters_line(const Bodies& initial, double t);
+std::vector<StickyCluster> sticky_clusters_line(BodiesView initial, double t);
 
 // The same on a ring of length L (initial positions in [0, L), sorted). O(N).
 // Clusters are returned sorted by x; `first` + `count` may pass N - 1 (wrap).
@@ -103,7 +129,7 @@ std::vector<StickyCluster> sticky_clusters_line(const Bodies& initial, double t)
 // time on), so at t = 0 every body is its own cluster. Throws InputError for
 // t < 0, unsorted or non-finite positions, masses <= 0, and (ring) L <= 0 or
 // positions outside [0, L).
-std::vector<StickyCluster> sticky_clusters_ring(const Bodies& initial, double L, double t);
+std::vector<StickyCluster> sticky_clusters_ring(BodiesView initial, double L, double t);
 
 // The clusters as bodies (x, v, m), sorted by x.
 Bodies to_bodies(const std::vector<StickyCluster>& clusters);

@@ -22,7 +22,8 @@ namespace shockgas::particles {
 // params.t_end, or until it stops early (see RunStop). L: ring length, or on the
 // line the extent used for the mean spacing L / N of the cluster criteria.
 // progress(fraction, t) is called at most about every 0.1 s of work.
-// Throws InputError for bad params or bodies.
+// Throws InputError for bad params or bodies, and Interrupted when an abort is
+// requested (core/interrupt.hpp: polled every few thousand collisions).
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& params,
                    const ProgressCallback& progress = {});
 

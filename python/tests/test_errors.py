@@ -1,0 +1,82 @@
+"""Bad input is a ValueError naming the key, with the command line's message;
+a failed run is a RuntimeError."""
+
+import numpy as np
+import pytest
+
+import shockgas
+
+X = np.arange(100) + 0.5
+V = np.linspace(-1, 1, 100)
+
+
+def raises_input_error(call, key):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert isinstance(e.value, shockgas.InputError)
+    assert e.value.key == key
+    assert key in str(e.value) and "is not allowed; allowed:" in str(e.value)
+    return e.value
+
+
+def test_a_keyword_out_of_range_names_the_scene_key():
+    e = raises_input_error(lambda: shockgas.particles.simulate(X, V, r=2.0), "particles.r")
+    assert str(e) == "particles.r = 2 is not allowed; allowed: a finite number in [0, 1]"
+    raises_input_error(lambda: shockgas.particles.simulate(X, V, geometry="torus"), "particles.geometry")
+    raises_input_error(lambda: shockgas.particles.simulate(X, V, samples=0), "particles.samples")
+    raises_input_error(lambda: shockgas.particles.simulate(X, V, r=0.5, solver="hull"), "particles.solver")
+    raises_input_error(lambda: shockgas.particles.simulate(X, V, L=-1.0), "initial.L")
+    raises_input_error(lambda: shockgas.particles.simulate(X, V, realizations=4), "particles.realizations")
+    raises_input_error(lambda: shockgas.continuum.solve("godunov", V, dx=0.01, cfl=2.0), "continuum.cfl")
+    raises_input_error(lambda: shockgas.particles.ensemble(N=0), "initial.N")
+
+
+def test_an_unknown_keyword_is_named_with_the_accepted_ones():
+    e = raises_input_error(lambda: shockgas.particles.simulate(X, V, rr=0.5), "rr")
+    assert "r, delta, subthreshold" in e.allowed
+    e = raises_input_error(lambda: shockgas.particles.ensemble(NN=10), "NN")
+    assert e.allowed.startswith("a keyword of shockgas.particles.ensemble: N, positions")
+
+
+def test_an_unknown_solver_lists_the_registered_ones():
+    e = raises_input_error(lambda: shockgas.continuum.solve("rusanov", V, dx=0.01), "continuum.solvers")
+    for s in shockgas.continuum.solvers():
+        assert s["name"] in e.allowed
+
+
+def test_bad_arrays_name_their_argument():
+    raises_input_error(lambda: shockgas.particles.simulate(X, V[:-1]), "v")
+    raises_input_error(lambda: shockgas.particles.simulate(X[::-1].copy(), V), "initial.bodies.x")
+    raises_input_error(lambda: shockgas.hull(X, V, -np.ones(100), 1.0), "bodies.m")
+    raises_input_error(lambda: shockgas.hull(X, V, None, -1.0), "t")
+    raises_input_error(lambda: shockgas.hull(np.ones((2, 50)), V, None, 1.0), "x")
+    raises_input_error(lambda: shockgas.continuum.solve("godunov", V, t_end=0.1), "dx")
+
+
+def test_a_dict_scene_error_says_where_in_the_dict():
+    e = raises_input_error(lambda: shockgas.run({"particles": {"r": 2}}), "particles.r")
+    assert e.where == "scene['particles']['r']"
+    assert str(e) == "scene['particles']['r']: particles.r = 2 is not allowed; allowed: a finite number in [0, 1]"
+    e = raises_input_error(lambda: shockgas.run({"particles": {}}, overrides={"particles.delta": -1}),
+                           "particles.delta")
+    assert e.where == "overrides['particles.delta']"
+    raises_input_error(lambda: shockgas.run({"particles": {"r": None}}), "particles.r")
+    raises_input_error(lambda: shockgas.run({"particles": 3}), "particles")
+    e = raises_input_error(lambda: shockgas.run_toml("[particles]\nt_end = 10\nr = 7\n"), "particles.r")
+    assert e.where == "<toml>:3"
+
+
+def test_a_scene_file_error_says_file_and_line(tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text("[initial]\nN = 100\n[particles]\ndelta = -1\n")
+    e = raises_input_error(lambda: shockgas.run(path), "particles.delta")
+    assert e.where == f"{path}:4"
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_run_that_fails_is_a_runtime_error():
+    # Beyond the scheme's stable range on purpose: the speeds blow up and the
+    # time step stops advancing; a failure, never a result.
+    with pytest.raises(RuntimeError, match="blown up"):
+        shockgas.continuum.solve("godunov", "sin(2*pi*x)", cells=64, t_end=5.0, cfl=50.0,
+                                 allow_unstable=True)
