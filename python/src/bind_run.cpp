@@ -100,7 +100,8 @@ app::CapturedOutputs capture_single(const app::Scene& scene, const std::string& 
     app::ProgressBar bar(false, listener);
     app::compute_parts(scene, initial, bar, app::capture_into(captured));
   } else {
-    app::RunOptions options{out_dir, false, plots, listener};
+    const app::RunOptions options{
+        .out_dir = out_dir, .progress = false, .plots = plots, .on_progress = listener};
     app::run_single(scene, initial, out_dir, options, app::capture_into(captured));
   }
   return captured;
@@ -111,9 +112,11 @@ app::CapturedOutputs capture_sweep(const app::Scene& scene, const std::string& o
                                    ProgressRelay& relay) {
   require(!out_dir.empty(), "sweep", std::string("(table)"),
           "a [sweep] scene with out=DIR: each variant is written into a directory of its own");
-  app::RunOptions options{out_dir, false, plots, [&relay](const std::string& stage, double f, double t) {
-                            relay.report(stage, f, t);
-                          }};
+  const app::RunOptions options{
+      .out_dir = out_dir,
+      .progress = false,
+      .plots = plots,
+      .on_progress = [&relay](const std::string& stage, double f, double t) { relay.report(stage, f, t); }};
   app::run_sweep(scene, out_dir, options);
   return app::read_outputs(out_dir);
 }
