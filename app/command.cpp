@@ -63,8 +63,14 @@ RunOptions run_options(const Arguments& args) {
   return options;
 }
 
+// SIGINT/SIGTERM remove the partial result files, except in a job of several
+// processes, whose session stops the run cooperatively instead (job.hpp).
+void guard_partial_outputs() {
+  if (current_job() == nullptr) remove_partial_outputs_on_signals();
+}
+
 int do_run(const Arguments& args) {
-  remove_partial_outputs_on_signals();
+  guard_partial_outputs();
   const Scene scene = load_scene(args.scene_path, args.overrides);  // InputError: nothing written
   const std::string dir = run_scene(scene, run_options(args));
   if (!speaks_for_job()) return kExitOk;  // rank 0 writes and speaks for an MPI job
@@ -75,7 +81,7 @@ int do_run(const Arguments& args) {
 int dispatch(const CLI::App& app, const Arguments& args) {
   if (app.got_subcommand("run")) return do_run(args);
   if (app.got_subcommand("merge")) {
-    remove_partial_outputs_on_signals();
+    guard_partial_outputs();
     const std::string dir = merge_shards(args.shards, run_options(args));
     std::cout << "results in " << dir << "/\n";
     return kExitOk;

@@ -88,8 +88,10 @@ class Gatherer {
     while (true) {
       while (auto m = job_.receive()) handle(*m);
       for (auto& r : pool_->take_finished()) records_.push_back(std::move(r)), ++peers_[0].received;
-      if (auto f = pool_->failure()) fail(0, f->item, f->message);
+      // An interruption first: the engine stops inside a window on it, and the
+      // realization it stopped is not a failure of its own.
       if (interrupt_requested() != InterruptMode::none) stop_on_interrupt();
+      if (auto f = pool_->failure()) fail(0, f->item, f->message);
       check_signalled();
       check_silence();
       if (records_.size() == plan_.items().size()) break;
@@ -212,11 +214,11 @@ class Worker {
     bool done = false;
     while (true) {
       for (auto& r : pool_.take_finished()) job_.send(0, kRecord, encode(r));
+      if (interrupt_requested() != InterruptMode::none) answer(interrupt_signal());  // before failure(): as on rank 0
       if (auto f = pool_.failure()) {
         job_.send(0, kFailed, pack_items({}, {f->item}) + f->message);
         wait_to_be_ended();
       }
-      if (interrupt_requested() != InterruptMode::none) answer(interrupt_signal());
       while (auto m = job_.receive()) {
         if (m->tag == kDone) done = true;
         if (m->tag == kStop) answer(0);
