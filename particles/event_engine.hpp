@@ -25,10 +25,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "event_tree.hpp"
+#include "huge_page_allocator.hpp"
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/collision.hpp"
-#include "shockgas/particles/event_tree.hpp"
-#include "shockgas/particles/huge_page_allocator.hpp"
 
 namespace shockgas::particles::detail {
 

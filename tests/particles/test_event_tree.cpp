@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
+#include "event_tree.hpp"
 #include "shockgas/core/random.hpp"
-#include "shockgas/particles/event_tree.hpp"
 
 namespace shockgas::particles {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
-// Event queue of the particle engine: a tournament (winner) tree over the pair
-// slots.
+// Event queue of the particle engine (private to particles/): a tournament
+// (winner) tree over the pair slots.
 //
 // Contract:
 //  * There are n slots (pair i = body i and its right neighbour); each holds one
@@ -27,7 +27,7 @@
 #include <limits>
 #include <vector>
 
-#include "shockgas/particles/huge_page_allocator.hpp"
+#include "huge_page_allocator.hpp"
 
 namespace shockgas::particles {
 
