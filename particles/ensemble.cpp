@@ -8,6 +8,7 @@
 #include <mutex>
 #include <thread>
 
+#include "shockgas/core/cores.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::particles {
@@ -67,9 +68,19 @@ class SharedProgress {
   std::vector<double> fraction_;
 };
 
+// Realization k without the records only realization 0 keeps (the whole-state ones).
+RunResult run_one(const InitialParams& ip, std::size_t k, const ParticleParams& p,
+                  const ProgressCallback& progress) {
+  RunResult r = simulate(ip, k, p, progress);
+  if (k > 0) r.final_state = {}, r.snapshots = {}, r.spacetime = {};
+  return r;
+}
+
 std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p, SharedProgress& progress) {
   const std::size_t R = p.realizations;
-  const double L = domain_length(ip);
+  const ThreadSplit split = split_threads(p.threads > 0 ? p.threads : usable_cores(), R);
+  ParticleParams each = p;
+  each.threads = split.per_run;
   std::vector<RunResult> runs(R);
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
@@ -77,7 +88,7 @@ std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p,
   auto worker = [&] {
     for (std::size_t k = next++; k < R; k = next++) {
       try {
-        runs[k] = simulate(make_initial_bodies(ip, k), L, p, progress.for_run(k));
+        runs[k] = run_one(ip, k, each, progress.for_run(k));
         if (ProgressCallback cb = progress.for_run(k)) cb(1.0, p.t_end);
       } catch (...) {
         std::lock_guard lock(error_mutex);
@@ -86,10 +97,8 @@ std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p,
       }
     }
   };
-  const std::size_t hw = std::max<std::size_t>(1, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min(R, p.threads == 0 ? hw : p.threads);
   std::vector<std::thread> pool;
-  for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
+  for (std::size_t i = 1; i < split.runs; ++i) pool.emplace_back(worker);
   worker();
   for (std::thread& th : pool) th.join();
   if (error) std::rethrow_exception(error);
@@ -97,6 +106,13 @@ std::vector<RunResult> run_all(const InitialParams& ip, const ParticleParams& p,
 }
 
 }  // namespace
+
+ThreadSplit split_threads(std::size_t threads, std::size_t realizations) {
+  ThreadSplit s;
+  s.runs = std::max<std::size_t>(1, std::min(threads, realizations));
+  s.per_run = std::max<std::size_t>(1, threads / s.runs);
+  return s;
+}
 
 EnsembleResult run_ensemble(const InitialParams& ip, const ParticleParams& p,
                             const ProgressCallback& progress) {

@@ -1,24 +1,31 @@
 #pragma once
 // Event queue of the particle engine (private to particles/): a tournament
-// (winner) tree over the pair slots.
+// (winner) tree over a run of pair slots.
 //
 // Contract:
-//  * There are n slots (pair i = body i and its right neighbour); each holds one
-//    predicted event time, +inf for "no event".
+//  * SlotTimes holds one predicted event time per pair slot (pair i = body i and
+//    its right neighbour), +inf for "no event". It is the one copy of the times:
+//    the global queue and the window domains all read and write it.
+//  * An EventTree ranks the slots first..last of a SlotTimes (on a ring the run
+//    may wrap past the last slot to slot 0: last < first). Several trees may
+//    rank disjoint runs of the same SlotTimes at once, from different threads.
 //  * set(i, t) replaces slot i's time; the tree is consistent only after the
-//    matching refresh (refresh_path(i), or refresh_range(lo, hi) covering every slot
-//    set since the last refresh).
-//  * top() is a slot with the smallest time, O(1).
+//    matching refresh (refresh_path(i), or refresh(a, b) for a slot a and the
+//    slot b after it, covering every slot set since the last refresh).
+//  * top() is a slot with the smallest time, O(1). Of tied slots it is the
+//    earlier one within a block and, above, the one the refreshes left in place:
+//    the same for the same sequence of operations.
 //
-// Layout. The slot times are stored in blocks of 8 (one cache line); the tree is
-// over the blocks: the implicit heap of the bottom-up segment tree, leaves at
-// nb..2nb-1 (nb blocks), node k < nb the winner of nodes 2k and 2k+1, so node 1 is
-// the global winner for any nb (no padding to a power of two, which would put
-// every leaf at the deepest level). A node stores the winner's time and slot (12
-// bytes), so a comparison never leaves the path being refreshed. A collision
-// changes at most three adjacent slots, nearly always in one block: one line of
-// times, then one path to the root. The tree is 3 bytes per slot (8 for the
-// times), so at N = 10^6 its upper levels stay in cache.
+// Layout. The times are stored in blocks of 8 (one cache line); the tree is over
+// the blocks of the run: the implicit heap of the bottom-up segment tree, leaves
+// at nb..2nb-1 (nb blocks), node k < nb the winner of nodes 2k and 2k+1, so node
+// 1 is the winner for any nb (no padding to a power of two, which would put every
+// leaf at the deepest level). A node stores the winner's time and slot (12 bytes),
+// so a comparison never leaves the path being refreshed. A collision changes at
+// most three adjacent slots, nearly always in one block: one line of times, then
+// one path to the root. The tree is 3 bytes per slot (8 for the times), so at
+// N = 10^6 its upper levels stay in cache. A run's first and last blocks may be
+// shared with the neighbouring runs: their winners read only the run's own slots.
 #include <algorithm>
 #include <bit>
 #include <cassert>
@@ -51,43 +58,114 @@ inline void prefetch_line_l2(const void* p) {
 #endif
 }
 
-class EventTree {
+// The event times of n pair slots, in cache lines of 8; the padding after slot
+// n - 1 stays at +inf.
+class SlotTimes {
  public:
   static constexpr double never = std::numeric_limits<double>::infinity();
-  static constexpr std::size_t block = 8;  // slot times per cache line (block_winner is written for 8)
-
-  EventTree() = default;
-  explicit EventTree(std::size_t n) { reset(n); }
-  EventTree(const EventTree&) = delete;  // time_ points into owned lines
-  EventTree& operator=(const EventTree&) = delete;
+  static constexpr std::size_t block = 8;  // slot times per cache line
 
   // n slots, all at +inf.
   void reset(std::size_t n) {
-    assign(n, [](std::size_t) { return never; });
-  }
-  // n slots, slot i at time_of(i); O(n). Reuses the memory of a larger tree.
-  template <class F>
-  void assign(std::size_t n, F&& time_of) {
-    assert(n >= 1 && n < (std::size_t{1} << 31));
     n_ = n;
-    nb_ = (n + block - 1) / block;
-    hinting_ = n >= hint_slots;
-    hint_ = 0;
-    time_lines_.resize(nb_);
-    time_ = &time_lines_[0].t[0];
-    for (std::size_t i = 0; i < n; ++i) time_[i] = time_of(i);
-    for (std::size_t i = n; i < nb_ * block; ++i) time_[i] = never;
-    key_.resize(2 * nb_);
-    win_.resize(2 * nb_);
+    lines_.assign((n + block - 1) / block, Line{});
+    for (Line& line : lines_) std::fill(line.t, line.t + block, never);
+  }
+  std::size_t size() const { return n_; }
+  std::size_t blocks() const { return lines_.size(); }
+  double& operator[](std::size_t i) { return lines_[i / block].t[i % block]; }
+  double operator[](std::size_t i) const { return lines_[i / block].t[i % block]; }
+  const double* line(std::size_t b) const { return lines_[b].t; }
+  double* data() { return lines_.empty() ? nullptr : lines_[0].t; }
+  // Memory held [bytes].
+  std::size_t bytes() const { return lines_.capacity() * sizeof(Line); }
+
+ private:
+  struct alignas(64) Line {
+    double t[block];
+  };
+  std::vector<Line, HugePageAllocator<Line>> lines_;
+  std::size_t n_ = 0;
+};
+
+class EventTree {
+ public:
+  static constexpr double never = SlotTimes::never;
+  static constexpr std::size_t block = SlotTimes::block;
+  // Node storage of a tree of nb blocks: 2 nb keys and 2 nb slots.
+  static constexpr std::size_t nodes(std::size_t nb) { return 2 * nb; }
+  using Key = std::int64_t;
+
+  EventTree() = default;
+  // A standalone tree over n slots of its own, all at +inf.
+  explicit EventTree(std::size_t n) { reset(n); }
+  EventTree(const EventTree&) = delete;
+  EventTree& operator=(const EventTree&) = delete;
+  EventTree(EventTree&& other) noexcept { *this = std::move(other); }
+  EventTree& operator=(EventTree&& other) noexcept {
+    const bool own_times = other.times_ == &other.own_times_;
+    const bool own_nodes = other.key_ == other.own_key_.data();
+    times_ = other.times_, time_ = other.time_, first_ = other.first_, last_ = other.last_;
+    b0_ = other.b0_, all_blocks_ = other.all_blocks_, nb_ = other.nb_;
+    head_partial_ = other.head_partial_, tail_partial_ = other.tail_partial_;
+    hint_ = other.hint_, hinting_ = other.hinting_, key_ = other.key_, win_ = other.win_;
+    own_key_ = std::move(other.own_key_), own_win_ = std::move(other.own_win_);
+    own_times_ = std::move(other.own_times_);
+    if (own_times) times_ = &own_times_, time_ = own_times_.data();  // the storage moved, its owner did not
+    if (own_nodes) key_ = own_key_.data(), win_ = own_win_.data();
+    return *this;
+  }
+
+  // Standalone: n slots of its own at +inf.
+  void reset(std::size_t n) {
+    own_times_.reset(n);
+    attach(own_times_, 0, n - 1);
+  }
+  // Ranks slots first..last of times (wrapping past the end if last < first),
+  // as they are now; O(length). Nodes in storage of its own, reused.
+  void attach(SlotTimes& times, std::size_t first, std::size_t last) {
+    const std::size_t nb = blocks_of(times, first, last);
+    own_key_.resize(nodes(nb));
+    own_win_.resize(nodes(nb));
+    attach(times, first, last, own_key_.data(), own_win_.data());
+  }
+  // The same with node storage from the caller: nodes(number of blocks) each.
+  void attach(SlotTimes& times, std::size_t first, std::size_t last, Key* keys, std::uint32_t* wins) {
+    assert(first < times.size() && last < times.size() && times.size() < (std::size_t{1} << 32));
+    times_ = &times;
+    time_ = times.data();
+    first_ = first;
+    last_ = last;
+    b0_ = first / block;
+    all_blocks_ = times.blocks();
+    nb_ = blocks_of(times, first, last);
+    head_partial_ = first % block != 0;
+    tail_partial_ = (last + 1) % block != 0 && last + 1 != times.size();
+    hinting_ = nb_ * block >= hint_slots;
+    hint_ = static_cast<std::uint32_t>(first);
+    key_ = keys;
+    win_ = wins;
     rebuild();
   }
-  // Recomputes every block and internal node, O(n): after many set() calls.
+  // Number of blocks of the run first..last of times.
+  static std::size_t blocks_of(const SlotTimes& times, std::size_t first, std::size_t last) {
+    const std::size_t a = first / block, b = last / block;
+    return first <= last ? b - a + 1 : times.blocks() - a + b + 1;
+  }
+
+  // Recomputes every block and internal node, O(length): after many set() calls.
   void rebuild() {
-    for (std::size_t b = 0; b < nb_; ++b) put(nb_ + b, block_winner(b));
+    for (std::size_t p = 0; p < nb_; ++p) put(nb_ + p, block_winner(p));
     for (std::size_t k = nb_ - 1; k >= 1; --k) pull(k);
   }
 
-  std::size_t size() const { return n_; }
+  // Memory of the nodes it owns [bytes].
+  std::size_t bytes() const {
+    return own_key_.capacity() * sizeof(Key) + own_win_.capacity() * sizeof(std::uint32_t) +
+           own_times_.bytes();
+  }
+  std::size_t first() const { return first_; }
+  std::size_t last() const { return last_; }
   double time(std::size_t slot) const { return time_[slot]; }
   std::size_t top() const { return win_[1]; }
   double top_time() const { return std::bit_cast<double>(key_[1]); }
@@ -95,22 +173,23 @@ class EventTree {
   void set(std::size_t slot, double t) { time_[slot] = t; }
   // With hinting() (trees of hint_slots slots or more, too large for the caches):
   // a slot likely to hold the second-earliest time after the last refresh (see
-  // climb), for prefetching only, never relied on. Otherwise 0.
+  // climb), for prefetching only, never relied on. Otherwise the first slot.
   static constexpr std::size_t hint_slots = std::size_t{1} << 18;
   bool hinting() const { return hinting_; }
   std::size_t hint() const { return hint_; }
 
   // Refreshes the path of one slot.
-  void refresh_path(std::size_t slot) { refresh_blocks(slot / block, slot / block); }
-  // Refreshes slots lo..hi (hi - lo small).
-  void refresh_range(std::size_t lo, std::size_t hi) {
-    assert(lo <= hi && hi < n_);
-    refresh_blocks(lo / block, hi / block);
+  void refresh_path(std::size_t slot) {
+    const std::size_t p = position(slot);
+    refresh_leaves(p, p);
   }
+  // Refreshes slots a and b, where b is a or a slot after it in the run and the
+  // slots set since the last refresh lie between them (b - a small).
+  void refresh(std::size_t a, std::size_t b) { refresh_leaves(position(a), position(b)); }
   // Hints the cache about a slot's block and the deep part of its path.
   void prefetch_path(std::size_t slot) const {
     prefetch_line(time_ + slot);
-    for (std::size_t k = nb_ + slot / block; k >= 4096; k >>= 1)
+    for (std::size_t k = nb_ + position(slot); k >= 4096; k >>= 1)
       prefetch_line(&key_[k]), prefetch_line(&win_[k]);
   }
 
@@ -120,7 +199,6 @@ class EventTree {
   // compare and a conditional move take 2 cycles against 4 for a floating-point
   // minimum, which matters on the climb's serial chain. (A NaN would sort after
   // +inf: never.)
-  using Key = std::int64_t;
   static Key key_of(double t) { return std::bit_cast<Key>(t); }
   // (t, slot) := (u, at) if u < t: compare and two conditional moves. Written as
   // assembly on x86-64 because GCC 12 turns the equivalent ternaries into
@@ -141,12 +219,22 @@ class EventTree {
     Key t;               // winner's event time, as key_of
     std::uint32_t slot;  // winner's slot
   };
-  struct alignas(64) TimeLine {
-    double t[block];
-  };
 
-  // The earliest slot of block b: a tournament of depth 3 over one cache line.
-  Node block_winner(std::size_t b) const {
+  // Leaf position of a slot's block in the run.
+  std::size_t position(std::size_t slot) const {
+    const std::size_t b = slot / block;
+    return b >= b0_ ? b - b0_ : b + all_blocks_ - b0_;
+  }
+  std::size_t block_at(std::size_t p) const {
+    const std::size_t b = b0_ + p;
+    return b < all_blocks_ ? b : b - all_blocks_;
+  }
+
+  // The earliest slot of the block at position p: a tournament of depth 3 over
+  // one cache line.
+  [[gnu::always_inline]] Node block_winner(std::size_t p) const {
+    if ((p == 0 && head_partial_) || (p == nb_ - 1 && tail_partial_)) return partial_winner(p);
+    const std::size_t b = block_at(p);
     const double* t = time_ + b * block;
     Key k0 = key_of(t[0]), k1 = key_of(t[1]), k2 = key_of(t[2]), k3 = key_of(t[3]);
     Key k4 = key_of(t[4]), k5 = key_of(t[5]), k6 = key_of(t[6]), k7 = key_of(t[7]);
@@ -160,14 +248,25 @@ class EventTree {
     take_earlier(k0, a0, k4, a4);
     return Node{k0, static_cast<std::uint32_t>(b * block) + a0};
   }
+  // A first or last block shared with a neighbouring run: only the run's slots
+  // are read (another thread may be writing the others).
+  [[gnu::noinline, gnu::cold]] Node partial_winner(std::size_t p) const {
+    const std::size_t b = block_at(p);
+    std::size_t lo = b * block, hi = lo + block;  // slots lo..hi-1 of the run
+    if (p == 0 && head_partial_) lo = first_;
+    if (p == nb_ - 1 && tail_partial_) hi = last_ + 1;
+    Node best{key_of(never), static_cast<std::uint32_t>(lo)};
+    for (std::size_t s = lo; s < hi; ++s) take_earlier(best.t, best.slot, key_of(time_[s]), s);
+    return best;
+  }
 
   void put(std::size_t k, const Node& node) {
     key_[k] = node.t;
     win_[k] = node.slot;
   }
 
-  // Blocks a..b (b - a <= 1 in use) and their common path to the root.
-  void refresh_blocks(std::size_t a, std::size_t b) {
+  // Leaves at positions a..b (b - a <= 1 in use) and their common path to the root.
+  [[gnu::always_inline]] void refresh_leaves(std::size_t a, std::size_t b) {
     if (a == b) {  // nearly always
       put(nb_ + a, block_winner(a));
       return climb(nb_ + a);
@@ -192,7 +291,7 @@ class EventTree {
   // after the next one whenever that lies outside the next one's subtree (for
   // random positions, with probability 1 - sum_j 4^-j = 2/3). hint() serves it
   // for prefetching.
-  void climb(std::size_t k) { hinting_ ? climb<true>(k) : climb<false>(k); }
+  [[gnu::always_inline]] void climb(std::size_t k) { hinting_ ? climb<true>(k) : climb<false>(k); }
   template <bool Hint>
   void climb(std::size_t k) {
     Key t = key_[k];
@@ -214,7 +313,7 @@ class EventTree {
     }
     if constexpr (Hint) hint_ = slot2;
   }
-  // Node k := the earlier of its children (branch-free: select by index).
+  // Node k := the earlier of its children (branch-free: select by index; ties go left).
   void pull(std::size_t k) {
     const std::size_t c = 2 * k;
     const std::size_t w = c + (key_[c + 1] < key_[c]);
@@ -222,15 +321,20 @@ class EventTree {
     win_[k] = win_[w];
   }
 
-  std::size_t n_ = 0, nb_ = 0;
+  SlotTimes* times_ = nullptr;
+  double* time_ = nullptr;  // times_->data()
+  std::size_t first_ = 0, last_ = 0;
+  std::size_t b0_ = 0, all_blocks_ = 0, nb_ = 0;
+  bool head_partial_ = false, tail_partial_ = false;
   std::uint32_t hint_ = 0;
   bool hinting_ = false;
-  std::vector<TimeLine, HugePageAllocator<TimeLine>> time_lines_;  // slot times; padding slots stay at +inf
   // Node k: its winner's key and slot, in two arrays (index arithmetic the
   // addressing modes do for free); siblings share cache lines.
-  std::vector<Key, HugePageAllocator<Key>> key_;
-  std::vector<std::uint32_t, HugePageAllocator<std::uint32_t>> win_;
-  double* time_ = nullptr;
+  Key* key_ = nullptr;
+  std::uint32_t* win_ = nullptr;
+  std::vector<Key, HugePageAllocator<Key>> own_key_;
+  std::vector<std::uint32_t, HugePageAllocator<std::uint32_t>> own_win_;
+  SlotTimes own_times_;
 };
 
 }  // namespace shockgas::particles

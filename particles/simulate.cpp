@@ -8,7 +8,9 @@
 #include "event_engine.hpp"
 #include "hull_model.hpp"
 #include "recorder.hpp"
+#include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "window_scheduler.hpp"
 
 namespace shockgas::particles {
@@ -60,7 +62,9 @@ double work_fraction(double t, double t_end) {
   return std::min(1.0, std::cbrt(t / t_end) * std::cbrt(t / t_end));
 }
 
-// Decides, every few thousand collisions, whether to go on: limits and progress.
+// Decides whether to go on: limits and progress. operator() at points where the
+// collision count is exact (the same for any number of threads); tick() between
+// them, from one thread, for the wall clock and progress only.
 struct Watch {
   const ParticleParams& p;
   const ProgressCallback& progress;
@@ -72,6 +76,9 @@ struct Watch {
   bool operator()(double t, std::uint64_t collisions) {
     if (p.max_collisions > 0 && collisions >= p.max_collisions)
       return reason = StopReason::event_limit, false;
+    return tick(t);
+  }
+  bool tick(double t) {
     const double s = elapsed();
     if (p.max_wall_seconds > 0 && s >= p.max_wall_seconds) return reason = StopReason::wall_limit, false;
     if (progress && s - last_report >= 0.1) {
@@ -98,26 +105,40 @@ detail::Counters counters(const detail::EventEngine<Linked>& e) {
 
 CollisionRule rule_of(const ParticleParams& p) { return {p.r, p.delta, p.subthreshold == "sticky"}; }
 
+// The engine's layout: links and masses for merges or unequal masses.
+bool linked(const CollisionRule& rule, bool equal_masses) { return rule.can_merge() || !equal_masses; }
+
 // Time windows over domains where they are exact (particles.schedule).
-bool windows_possible(const Bodies& initial, const ParticleParams& p) {
-  return equal_masses(initial) && detail::WindowScheduler::applicable(initial.size(), rule_of(p));
+bool windows_possible(std::size_t n, bool equal_masses, const ParticleParams& p) {
+  return detail::window_obstacle(n, equal_masses, rule_of(p)).empty();
 }
 
-template <bool Linked>
-RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleParams& p,
-                     const ProgressCallback& progress) {
+void check_schedule(std::size_t n, bool equal_masses, const ParticleParams& p) {
+  require(p.schedule != "windows" || windows_possible(n, equal_masses, p), "particles.schedule", p.schedule,
+          "\"windows\" only where every collision keeps the velocities in their range (equal masses "
+          "without merges, or merges only: r = 0 with delta = 0 or sticky sub-threshold), without "
+          "inelastic collapse (delta > 0 or r = 0, 1), N >= 1024; else \"auto\" or \"global\"");
+}
+
+std::size_t threads_of(const ParticleParams& p) { return p.threads > 0 ? p.threads : usable_cores(); }
+
+// One run of the engine from n bodies written by fill (see EventEngine).
+template <bool Linked, class Fill>
+RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
+                     const ParticleParams& p, const ProgressCallback& progress) {
   const CollisionRule rule = rule_of(p);
-  const bool windows = !Linked && p.schedule != "global" && windows_possible(initial, p);
-  detail::Recorder recorder(p, initial.size(), L, ring);
-  detail::EventEngine<Linked> engine(initial, L, ring, rule, !windows);
-  std::optional<detail::WindowScheduler> scheduler;
-  if constexpr (!Linked)
-    if (windows) scheduler.emplace(engine);
+  const bool windows = p.schedule != "global" && windows_possible(n, equal_masses, p);
+  detail::Recorder recorder(p, n, L, ring);
+  detail::EventEngine<Linked> engine(n, L, ring, rule, fill);
+  std::optional<detail::WindowScheduler<Linked>> scheduler;
+  if (windows) {
+    scheduler.emplace(engine, threads_of(p));
+  } else {
+    engine.use_global_queue();
+  }
   Watch watch{p, progress};
   auto advance = [&](double t) {
-    if constexpr (!Linked)
-      if (scheduler) return scheduler->run_until(t, watch);
-    return engine.run_until(t, watch);
+    return scheduler ? scheduler->run_until(t, watch) : engine.run_until(t, watch);
   };
   RunStop stop;
   for (double t = recorder.next_stop(); t != detail::Recorder::done; t = recorder.next_stop()) {
@@ -132,29 +153,69 @@ RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleP
   if (stop.reason == StopReason::completed) stop.time = engine.now();
   RunResult out = recorder.finish(chain_state(engine, engine.now()), stop, counters(engine));
   out.wall_seconds = watch.elapsed();
+  if (scheduler) {
+    out.schedule.threads = scheduler->threads();
+    out.schedule.order = scheduler->on_global_queue() ? "windows, then global" : "windows";
+    out.schedule.why_global = scheduler->why_global();
+  } else {
+    out.schedule.why_global = p.schedule == "global" ? "particles.schedule = \"global\""
+                                                     : detail::window_obstacle(n, equal_masses, rule);
+  }
   return out;
+}
+
+template <class Fill>
+RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
+                     const ParticleParams& p, const ProgressCallback& progress) {
+  if (linked(rule_of(p), equal_masses)) return run_events<true>(n, fill, L, ring, equal_masses, p, progress);
+  return run_events<false>(n, fill, L, ring, equal_masses, p, progress);
+}
+
+void check_params(std::size_t n, const ParticleParams& p) {
+  validate(p);
+  require(!p.spacetime || n <= 100000, "particles.spacetime", std::string("true"),
+          "a space-time record only for N <= 10^5");
 }
 
 }  // namespace
 
 void check_schedule(const Bodies& initial, const ParticleParams& p) {
-  require(p.schedule != "windows" || windows_possible(initial, p), "particles.schedule", p.schedule,
-          "\"windows\" only for equal masses without merges or inelastic collapse (delta > 0 or r = 1), "
-          "N >= 1024; else \"auto\" or \"global\"");
+  check_schedule(initial.size(), equal_masses(initial), p);
+}
+
+void check_schedule(const InitialParams& initial, const ParticleParams& p) {
+  if (InitialStream::streamable(initial)) return check_schedule(initial.N, true, p);
+  check_schedule(make_initial_bodies(initial, 0), p);
 }
 
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
                    const ProgressCallback& progress) {
-  validate(p);
+  check_params(initial.size(), p);
   const bool ring = p.geometry == "ring";
   check_bodies(initial, L, ring);
-  require(!p.spacetime || initial.size() <= 100000, "particles.spacetime", std::string("true"),
-          "a space-time record only for N <= 10^5");
   if (p.solver == "hull") return detail::simulate_hull(initial, L, ring, p);
-  check_schedule(initial, p);
-  const CollisionRule rule = rule_of(p);
-  if (rule.can_merge() || !equal_masses(initial)) return run_events<true>(initial, L, ring, p, progress);
-  return run_events<false>(initial, L, ring, p, progress);
+  const bool equal = equal_masses(initial);
+  check_schedule(initial.size(), equal, p);
+  auto fill = [&](std::size_t first, std::size_t count, double* x, double* v, double* m) {
+    std::copy_n(initial.x.begin() + first, count, x);
+    std::copy_n(initial.v.begin() + first, count, v);
+    std::copy_n(initial.m.begin() + first, count, m);
+  };
+  return run_events(initial.size(), fill, L, ring, equal, p, progress);
+}
+
+RunResult simulate(const InitialParams& initial, std::uint64_t realization, const ParticleParams& p,
+                   const ProgressCallback& progress) {
+  validate(initial);
+  if (!InitialStream::streamable(initial) || p.solver == "hull")
+    return simulate(make_initial_bodies(initial, realization), domain_length(initial), p, progress);
+  check_params(initial.N, p);
+  check_schedule(initial.N, true, p);
+  InitialStream stream(initial, realization);
+  auto fill = [&](std::size_t, std::size_t count, double* x, double* v, double* m) {
+    stream.next(count, x, v, m);
+  };
+  return run_events(initial.N, fill, domain_length(initial), p.geometry == "ring", true, p, progress);
 }
 
 }  // namespace shockgas::particles

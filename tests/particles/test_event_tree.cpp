@@ -27,7 +27,7 @@ TEST(EventTree, TopIsTheMinimumAfterRandomUpdates) {
         tree.set(i, t[i]);
       }
       if (step % 2) {
-        tree.refresh_range(lo, hi);
+        tree.refresh(lo, hi);
       } else {
         for (std::size_t i = lo; i <= hi; ++i) tree.refresh_path(i);
       }

@@ -77,6 +77,13 @@ struct RunStop {
   double position = 0;  // collapse or stall: where (ring: in [0, L)); else 0 [length]
 };
 
+// How the event engine ordered the collisions (particles/window_scheduler.hpp).
+struct RunSchedule {
+  std::string order = "global";  // "windows", "global", or "windows, then global"
+  std::string why_global;        // when not (only) windows: why, and what windows would need
+  std::size_t threads = 1;       // threads that ran the windows
+};
+
 struct RunResult {
   TimeSeries series;
   Bodies final_state;               // at stop.time: sorted; ring: x in [0, L)
@@ -86,6 +93,7 @@ struct RunResult {
   RunStop stop;
   std::uint64_t collisions = 0;  // total collisions (hull solver: merges)
   double wall_seconds = 0;       // wall-clock time of the run [s]
+  RunSchedule schedule;          // event solver only
 };
 
 }  // namespace shockgas::particles

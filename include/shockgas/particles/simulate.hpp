@@ -2,7 +2,8 @@
 // Running the particle gas: one realization from given bodies, or an ensemble of
 // realizations of a scene's initial condition.
 //
-//   RunResult r = simulate(bodies, L, params);           // one run
+//   RunResult r = simulate(bodies, L, params);           // one run from given bodies
+//   RunResult r = simulate(initial, k, params);          // realization k of a scene's initial condition
 //   EnsembleResult e = run_ensemble(initial, params);    // R realizations, averaged
 //
 // params.solver = "events": the event-driven engine (exact to rounding: each
@@ -21,14 +22,26 @@ namespace shockgas::particles {
 // One run from `initial` (sorted by x, masses > 0; ring: x in [0, L)) to
 // params.t_end, or until it stops early (see RunStop). L: ring length, or on the
 // line the extent used for the mean spacing L / N of the cluster criteria.
-// progress(fraction, t) is called at most about every 0.1 s of work.
+// progress(fraction, t) is called at most about every 0.1 s of work. Where time
+// windows apply, their domains run on params.threads threads (0 = every usable
+// core, usable_cores()); the result is the same to the bit for any number.
 // Throws InputError for bad params or bodies.
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& params,
                    const ProgressCallback& progress = {});
 
+// Realization `realization` of a scene's initial condition, as
+// simulate(make_initial_bodies(initial, realization), domain_length(initial), ...),
+// bit for bit; the engine reads the bodies in chunks where the initial condition
+// allows it (InitialStream::streamable), so no whole copy of them is held.
+RunResult simulate(const InitialParams& initial, std::uint64_t realization, const ParticleParams& params,
+                   const ProgressCallback& progress = {});
+
 // Throws InputError when params.schedule = "windows" cannot be honoured for
-// these bodies (windows need equal masses, no merges and no inelastic collapse).
+// these bodies (windows need every collision to keep the velocities in their
+// range and no inelastic collapse); the second form without building the bodies
+// where they can be streamed.
 void check_schedule(const Bodies& initial, const ParticleParams& params);
+void check_schedule(const InitialParams& initial, const ParticleParams& params);
 
 // Mean and standard error (sample standard deviation / sqrt(count)) over the
 // realizations that reached each sample.
@@ -50,11 +63,21 @@ struct EnsembleResult {
 };
 
 // params.realizations runs of make_initial_bodies(initial, k), k = 0..R-1 (seed
-// realization_seed(initial.seed, k)), on params.threads threads (0 = all cores),
-// combined in index order: bit-identical whatever the number of threads.
+// realization_seed(initial.seed, k)), on params.threads threads (0 = every usable
+// core): min(R, threads) realizations at once, the threads left over shared out
+// among their windows (split_threads). Combined in index order: bit-identical
+// whatever the number of threads. Only realization 0 keeps its final state,
+// snapshots and space-time record.
 // L = domain_length(initial). progress: the mean fraction over realizations, from
 // one thread at a time.
 EnsembleResult run_ensemble(const InitialParams& initial, const ParticleParams& params,
                             const ProgressCallback& progress = {});
+
+// How `threads` threads serve R realizations: `runs` realizations at once, each
+// with `per_run` threads for its windows.
+struct ThreadSplit {
+  std::size_t runs = 1, per_run = 1;
+};
+ThreadSplit split_threads(std::size_t threads, std::size_t realizations);
 
 }  // namespace shockgas::particles
