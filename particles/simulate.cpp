@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "engine_state.hpp"
 #include "event_engine.hpp"
 #include "hull_model.hpp"
 #include "recorder.hpp"
@@ -122,13 +123,18 @@ void check_schedule(std::size_t n, bool equal_masses, const ParticleParams& p) {
 
 std::size_t threads_of(const ParticleParams& p) { return p.threads > 0 ? p.threads : usable_cores(); }
 
-// One run of the engine from n bodies written by fill (see EventEngine).
+// One run of the engine from n bodies written by fill (see EventEngine). With a
+// sink, the snapshots and the final state go to it instead of the recorder.
 template <bool Linked, class Fill>
 RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
-                     const ParticleParams& p, const ProgressCallback& progress) {
+                     const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink) {
   const CollisionRule rule = rule_of(p);
   const bool windows = p.schedule != "global" && windows_possible(n, equal_masses, p);
-  detail::Recorder recorder(p, n, L, ring);
+  ParticleParams recorded = p;
+  std::vector<double> snapshots;
+  if (sink)
+    snapshots = p.snapshots, recorded.snapshots.clear(), std::sort(snapshots.begin(), snapshots.end());
+  detail::Recorder recorder(recorded, n, L, ring);
   detail::EventEngine<Linked> engine(n, L, ring, rule, fill);
   std::optional<detail::WindowScheduler<Linked>> scheduler;
   if (windows) {
@@ -140,18 +146,28 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
   auto advance = [&](double t) {
     return scheduler ? scheduler->run_until(t, watch) : engine.run_until(t, watch);
   };
+  std::size_t next_snapshot = 0;
+  auto next_stop = [&] {
+    const double t = recorder.next_stop();
+    return next_snapshot < snapshots.size() ? std::min(t, snapshots[next_snapshot]) : t;
+  };
   RunStop stop;
-  for (double t = recorder.next_stop(); t != detail::Recorder::done; t = recorder.next_stop()) {
+  for (double t = next_stop(); t != detail::Recorder::done; t = next_stop()) {
     const detail::EngineStop s = advance(t);
     if (s == detail::EngineStop::collapse)
       stop = {StopReason::collapse, engine.now(), engine.last_position()};
     if (s == detail::EngineStop::stall) stop = {StopReason::stall, engine.now(), engine.last_position()};
     if (s == detail::EngineStop::halted) stop = {watch.reason, engine.now(), 0.0};
     if (s != detail::EngineStop::reached) break;
-    recorder.observe(t, chain_state(engine, t), counters(engine));
+    if (recorder.next_stop() <= t) recorder.observe(t, chain_state(engine, t), counters(engine));
+    for (; next_snapshot < snapshots.size() && snapshots[next_snapshot] <= t; ++next_snapshot)
+      if (sink->snapshot) sink->snapshot(next_snapshot, t, detail::EngineState<Linked>(engine, t));
   }
   if (stop.reason == StopReason::completed) stop.time = engine.now();
-  RunResult out = recorder.finish(chain_state(engine, engine.now()), stop, counters(engine));
+  if (sink && sink->final_state)
+    sink->final_state(engine.now(), detail::EngineState<Linked>(engine, engine.now()));
+  RunResult out = recorder.finish(sink ? detail::ChainState{} : chain_state(engine, engine.now()), stop,
+                                  counters(engine));
   out.wall_seconds = watch.elapsed();
   if (scheduler) {
     out.schedule.threads = scheduler->threads();
@@ -166,9 +182,10 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
 
 template <class Fill>
 RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
-                     const ParticleParams& p, const ProgressCallback& progress) {
-  if (linked(rule_of(p), equal_masses)) return run_events<true>(n, fill, L, ring, equal_masses, p, progress);
-  return run_events<false>(n, fill, L, ring, equal_masses, p, progress);
+                     const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink) {
+  if (linked(rule_of(p), equal_masses))
+    return run_events<true>(n, fill, L, ring, equal_masses, p, progress, sink);
+  return run_events<false>(n, fill, L, ring, equal_masses, p, progress, sink);
 }
 
 void check_params(std::size_t n, const ParticleParams& p) {
@@ -188,8 +205,10 @@ void check_schedule(const InitialParams& initial, const ParticleParams& p) {
   check_schedule(make_initial_bodies(initial, 0), p);
 }
 
-RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
-                   const ProgressCallback& progress) {
+namespace {
+
+RunResult simulate_bodies(const Bodies& initial, double L, const ParticleParams& p,
+                          const ProgressCallback& progress, const StateSink* sink) {
   check_params(initial.size(), p);
   const bool ring = p.geometry == "ring";
   check_bodies(initial, L, ring);
@@ -201,21 +220,29 @@ RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
     std::copy_n(initial.v.begin() + first, count, v);
     std::copy_n(initial.m.begin() + first, count, m);
   };
-  return run_events(initial.size(), fill, L, ring, equal, p, progress);
+  return run_events(initial.size(), fill, L, ring, equal, p, progress, sink);
+}
+
+}  // namespace
+
+RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
+                   const ProgressCallback& progress) {
+  return simulate_bodies(initial, L, p, progress, nullptr);
 }
 
 RunResult simulate(const InitialParams& initial, std::uint64_t realization, const ParticleParams& p,
-                   const ProgressCallback& progress) {
+                   const ProgressCallback& progress, const StateSink* sink) {
   validate(initial);
   if (!InitialStream::streamable(initial) || p.solver == "hull")
-    return simulate(make_initial_bodies(initial, realization), domain_length(initial), p, progress);
+    return simulate_bodies(make_initial_bodies(initial, realization), domain_length(initial), p, progress,
+                           sink);
   check_params(initial.N, p);
   check_schedule(initial.N, true, p);
   InitialStream stream(initial, realization);
   auto fill = [&](std::size_t, std::size_t count, double* x, double* v, double* m) {
     stream.next(count, x, v, m);
   };
-  return run_events(initial.N, fill, domain_length(initial), p.geometry == "ring", true, p, progress);
+  return run_events(initial.N, fill, domain_length(initial), p.geometry == "ring", true, p, progress, sink);
 }
 
 }  // namespace shockgas::particles

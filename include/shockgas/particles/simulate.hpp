@@ -11,6 +11,8 @@
 // bodies are re-predicted). params.solver = "hull" (r = 0 only): the exact sticky
 // solution by the lower convex hull (core/sticky_hull.hpp) evaluated at each stop
 // time, no events simulated; its collisions are its merges.
+#include <functional>
+
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/progress.hpp"
@@ -18,6 +20,28 @@
 #include "shockgas/particles/run_result.hpp"
 
 namespace shockgas::particles {
+
+// A state to be written, handed out in chunks instead of as a whole copy:
+// sorted by x (ring: x in [0, L)), each body once, as RunResult::final_state
+// would hold it. read() may be called more than once.
+class StateReader {
+ public:
+  using Chunk = std::function<void(const double* x, const double* v, const double* m, std::size_t count)>;
+  virtual std::size_t size() const = 0;  // bodies
+  virtual void read(const Chunk& chunk) const = 0;
+
+ protected:
+  ~StateReader() = default;
+};
+
+// Where the states that are written go as they are reached, instead of into
+// RunResult (whose final_state and snapshots then stay empty): a file writer
+// streams them in chunks. Snapshot k is at the k-th of params.snapshots in
+// ascending order.
+struct StateSink {
+  std::function<void(std::size_t k, double t, const StateReader& state)> snapshot;
+  std::function<void(double t, const StateReader& state)> final_state;
+};
 
 // One run from `initial` (sorted by x, masses > 0; ring: x in [0, L)) to
 // params.t_end, or until it stops early (see RunStop). L: ring length, or on the
@@ -32,9 +56,11 @@ RunResult simulate(const Bodies& initial, double L, const ParticleParams& params
 // Realization `realization` of a scene's initial condition, as
 // simulate(make_initial_bodies(initial, realization), domain_length(initial), ...),
 // bit for bit; the engine reads the bodies in chunks where the initial condition
-// allows it (InitialStream::streamable), so no whole copy of them is held.
+// allows it (InitialStream::streamable), so no whole copy of them is held. With
+// a sink, the snapshots and the final state go to it (event solver; the hull
+// solver keeps them in RunResult).
 RunResult simulate(const InitialParams& initial, std::uint64_t realization, const ParticleParams& params,
-                   const ProgressCallback& progress = {});
+                   const ProgressCallback& progress = {}, const StateSink* sink = nullptr);
 
 // Throws InputError when params.schedule = "windows" cannot be honoured for
 // these bodies (windows need every collision to keep the velocities in their
