@@ -164,6 +164,10 @@ class EventTree {
     return own_key_.capacity() * sizeof(Key) + own_win_.capacity() * sizeof(std::uint32_t) +
            own_times_.bytes();
   }
+  // The node arrays (for prefetching): nodes() keys and slots.
+  const Key* node_keys() const { return key_; }
+  const std::uint32_t* node_slots() const { return win_; }
+  std::size_t node_count() const { return nodes(nb_); }
   std::size_t first() const { return first_; }
   std::size_t last() const { return last_; }
   double time(std::size_t slot) const { return time_[slot]; }

@@ -103,8 +103,11 @@ class WindowScheduler {
       const bool to_stop = t_stop <= horizon_;  // then collisions at exactly t_stop are included
       const double end = to_stop ? t_stop : horizon_;
       bool halt = false;
+      const std::uint64_t before = e_.count_[3];
+      const double from = e_.now_;
       run_domains(end, to_stop, watch, halt);
       settle();
+      if (end > from) last_rate_ = static_cast<double>(e_.count_[3] - before) / (end - from);
       if (const Domain* d = first_stalled()) {
         e_.now_ = d->now;
         e_.last_x_ = d->last_x;
@@ -252,6 +255,7 @@ class WindowScheduler {
   template <class Watch>
   void run_domains(double end, bool inclusive, Watch& watch, bool& halt) {
     const double limit = inclusive ? end : std::nextafter(end, -std::numeric_limits<double>::infinity());
+    const std::size_t lines = prefetch_lines(end);
     std::atomic<std::size_t> next{0};
     team_.run([&](std::size_t member) {
       auto claim = [&]() -> Domain* {
@@ -283,7 +287,7 @@ class WindowScheduler {
           }
           s = take();
         }
-        advance(prefetch);
+        advance(prefetch, lines);
         if (member == 0 && done >= next_check) {
           next_check += Engine::check_every;
           if (!halt && !watch.tick(end)) halt = true;
@@ -292,24 +296,49 @@ class WindowScheduler {
     });
   }
 
+  // How many lines of the next domain to load per round of the streams: enough
+  // to have it all in cache when it starts. Sub-windows that hold few collisions
+  // per body (early times, dense samples) would otherwise wait on one miss after
+  // another. Estimated from the rate of the last sub-window; speed only.
+  std::size_t prefetch_lines(double end) const {
+    const double bodies =
+        static_cast<double>(n()) / static_cast<double>(std::max<std::size_t>(domains_.size(), 1));
+    const double steps =
+        last_rate_ * (end - e_.now_) / static_cast<double>(std::max<std::size_t>(domains_.size(), 1));
+    const double lines = bodies * (sizeof(typename Engine::Body) + sizeof(double)) / 64.0;
+    if (!(steps > 0)) return 2;
+    return static_cast<std::size_t>(std::clamp(1.5 * lines / steps, 2.0, 32.0));
+  }
+
   // Cache lines still to load: of the bodies and of the slot times, as index
   // ranges (unwrapped: on a ring they may run past n).
   struct Prefetcher {
     std::size_t body = 0, body_end = 0, slot = 0, slot_end = 0;
+    const char *keys = nullptr, *keys_end = nullptr, *wins = nullptr,
+               *wins_end = nullptr;  // its tree's nodes
   };
   void aim(Prefetcher& p, const Domain* d) const {
     p = {};
     if (!d) return;
     const std::size_t end = d->tail < d->head ? d->tail + n() : d->tail;
-    p = {d->head, end + 1, d->head, end};
+    const auto* keys = reinterpret_cast<const char*>(d->tree.node_keys());
+    const auto* wins = reinterpret_cast<const char*>(d->tree.node_slots());
+    const std::size_t nodes = d->tree.node_count();
+    p = {d->head, end + 1, d->head, end, keys, keys + nodes * sizeof(EventTree::Key), wins, wins + nodes * 4};
   }
-  void advance(Prefetcher& p) const {
-    constexpr std::size_t bodies_per_line =
-        64 / sizeof(typename Engine::Body) + 1;  // overlapping: every line hit
+  // Loads about `lines` lines of bodies, and of the slot times and tree nodes in
+  // proportion (a third, a twelfth).
+  void advance(Prefetcher& p, std::size_t lines) const {
+    // Bodies straddle lines: a step of one body less than a line's worth hits every line.
+    constexpr std::size_t bodies_per_step = 64 / sizeof(typename Engine::Body);
     constexpr std::size_t slots_per_line = 64 / sizeof(double);
-    for (int k = 0; k < 2 && p.body < p.body_end; ++k, p.body += bodies_per_line - 1)
+    for (std::size_t k = 0; k < lines && p.body < p.body_end; ++k, p.body += bodies_per_step)
       prefetch_line_l2(&e_.body_[wrap(p.body)]);
-    if (p.slot < p.slot_end) prefetch_line_l2(&e_.slot_[wrap(p.slot)]), p.slot += slots_per_line;
+    for (std::size_t k = 0; k < (lines + 2) / 3 && p.slot < p.slot_end; ++k, p.slot += slots_per_line)
+      prefetch_line_l2(&e_.slot_[wrap(p.slot)]);
+    for (std::size_t k = 0; k < (lines + 11) / 12 && p.keys < p.keys_end; ++k, p.keys += 64)
+      prefetch_line_l2(p.keys);
+    if (p.wins < p.wins_end) prefetch_line_l2(p.wins), p.wins += 64;
   }
   std::size_t wrap(std::size_t i) const { return i >= n() ? i - n() : i; }
 
@@ -326,6 +355,7 @@ class WindowScheduler {
   std::uint64_t plan_collisions_ = 0;  // the engine's count when the plan started
   std::uint64_t plans_ = 0;
   double rate_ = 0;               // collisions per unit time in the last plan
+  double last_rate_ = 0;          // the same in the last sub-window (for prefetching only)
   double v_min_ = 0, v_max_ = 0;  // contains the velocities at now()
   bool v_known_ = false;
   int thin_ = 0;         // consecutive thin plans
