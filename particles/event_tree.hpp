@@ -34,59 +34,13 @@
 #include <limits>
 #include <vector>
 
-#include "huge_page_allocator.hpp"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "slot_times.hpp"
 
 namespace shockgas::particles {
-
-// Starts loading the cache line at p (any address; it is never dereferenced).
-// Inline assembly, because GCC 12 at -O2 finds a function whose only effect is
-// __builtin_prefetch "pure" and deletes the calls to it.
-inline void prefetch_line(const void* p) {
-#if defined(__x86_64__) || defined(__i386__)
-  asm volatile("prefetcht0 (%0)" : : "r"(p));
-#else
-  __builtin_prefetch(p, 1);
-#endif
-}
-// The same into the second-level cache only: for data needed in a while, which
-// should not push the data in use out of the first level.
-inline void prefetch_line_l2(const void* p) {
-#if defined(__x86_64__) || defined(__i386__)
-  asm volatile("prefetcht1 (%0)" : : "r"(p));
-#else
-  __builtin_prefetch(p, 1, 2);
-#endif
-}
-
-// The event times of n pair slots, in cache lines of 8; the padding after slot
-// n - 1 stays at +inf.
-class SlotTimes {
- public:
-  static constexpr double never = std::numeric_limits<double>::infinity();
-  static constexpr std::size_t block = 8;  // slot times per cache line
-
-  // n slots, all at +inf.
-  void reset(std::size_t n) {
-    n_ = n;
-    lines_.assign((n + block - 1) / block, Line{});
-    for (Line& line : lines_) std::fill(line.t, line.t + block, never);
-  }
-  std::size_t size() const { return n_; }
-  std::size_t blocks() const { return lines_.size(); }
-  double& operator[](std::size_t i) { return lines_[i / block].t[i % block]; }
-  double operator[](std::size_t i) const { return lines_[i / block].t[i % block]; }
-  const double* line(std::size_t b) const { return lines_[b].t; }
-  double* data() { return lines_.empty() ? nullptr : lines_[0].t; }
-  // Memory held [bytes].
-  std::size_t bytes() const { return lines_.capacity() * sizeof(Line); }
-
- private:
-  struct alignas(64) Line {
-    double t[block];
-  };
-  std::vector<Line, HugePageAllocator<Line>> lines_;
-  std::size_t n_ = 0;
-};
 
 class EventTree {
  public:
@@ -155,7 +109,7 @@ class EventTree {
 
   // Recomputes every block and internal node, O(length): after many set() calls.
   void rebuild() {
-    for (std::size_t p = 0; p < nb_; ++p) put(nb_ + p, block_winner(p));
+    for (std::size_t p = 0; p < nb_; ++p) put(nb_ + p, block_winner(p, block_at(p)));
     for (std::size_t k = nb_ - 1; k >= 1; --k) pull(k);
   }
 
@@ -183,17 +137,19 @@ class EventTree {
   std::size_t hint() const { return hint_; }
 
   // Refreshes the path of one slot.
-  void refresh_path(std::size_t slot) {
-    const std::size_t p = position(slot);
-    refresh_leaves(p, p);
-  }
+  void refresh_path(std::size_t slot) { refresh_block(slot / block); }
   // Refreshes slots a and b, where b is a or a slot after it in the run and the
   // slots set since the last refresh lie between them (b - a small).
-  void refresh(std::size_t a, std::size_t b) { refresh_leaves(position(a), position(b)); }
+  [[gnu::always_inline]] void refresh(std::size_t a, std::size_t b) {
+    const std::size_t ba = a / block, bb = b / block;
+    if (ba == bb) [[likely]]
+      return refresh_block(ba);
+    refresh_two(position(ba), position(bb));
+  }
   // Hints the cache about a slot's block and the deep part of its path.
   void prefetch_path(std::size_t slot) const {
     prefetch_line(time_ + slot);
-    for (std::size_t k = nb_ + position(slot); k >= 4096; k >>= 1)
+    for (std::size_t k = nb_ + position(slot / block); k >= 4096; k >>= 1)
       prefetch_line(&key_[k]), prefetch_line(&win_[k]);
   }
 
@@ -224,22 +180,33 @@ class EventTree {
     std::uint32_t slot;  // winner's slot
   };
 
-  // Leaf position of a slot's block in the run.
-  std::size_t position(std::size_t slot) const {
-    const std::size_t b = slot / block;
-    return b >= b0_ ? b - b0_ : b + all_blocks_ - b0_;
-  }
+  // Leaf position of block b in the run.
+  std::size_t position(std::size_t b) const { return b >= b0_ ? b - b0_ : b + all_blocks_ - b0_; }
   std::size_t block_at(std::size_t p) const {
     const std::size_t b = b0_ + p;
     return b < all_blocks_ ? b : b - all_blocks_;
   }
 
-  // The earliest slot of the block at position p: a tournament of depth 3 over
+  // The earliest slot of block b, at position p: a tournament of depth 3 over
   // one cache line.
-  [[gnu::always_inline]] Node block_winner(std::size_t p) const {
-    if ((p == 0 && head_partial_) || (p == nb_ - 1 && tail_partial_)) return partial_winner(p);
-    const std::size_t b = block_at(p);
+  [[gnu::always_inline]] Node block_winner(std::size_t p, std::size_t b) const {
+    if (p - 1 >= nb_ - 2) [[unlikely]]  // the first or the last (or nb <= 2)
+      if ((p == 0 && head_partial_) || (p == nb_ - 1 && tail_partial_)) return partial_winner(p);
     const double* t = time_ + b * block;
+#if defined(__SSE2__)
+    // The smallest of the 8 in three packed minima, then its first slot by an
+    // equality mask: the same winner as the pairwise tournament (the earliest
+    // slot of the tied ones), in fewer instructions. Times are never NaN.
+    const __m128d a = _mm_load_pd(t), c = _mm_load_pd(t + 2), e = _mm_load_pd(t + 4), g = _mm_load_pd(t + 6);
+    const __m128d m2 = _mm_min_pd(_mm_min_pd(a, c), _mm_min_pd(e, g));
+    const __m128d m1 = _mm_min_sd(m2, _mm_unpackhi_pd(m2, m2));
+    const __m128d m = _mm_unpacklo_pd(m1, m1);
+    const unsigned mask = static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(a, m))) |
+                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(c, m))) << 2 |
+                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(e, m))) << 4 |
+                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(g, m))) << 6;
+    return Node{key_of(_mm_cvtsd_f64(m1)), static_cast<std::uint32_t>(b * block) + std::countr_zero(mask)};
+#else
     Key k0 = key_of(t[0]), k1 = key_of(t[1]), k2 = key_of(t[2]), k3 = key_of(t[3]);
     Key k4 = key_of(t[4]), k5 = key_of(t[5]), k6 = key_of(t[6]), k7 = key_of(t[7]);
     std::uint32_t a0 = 0, a2 = 2, a4 = 4, a6 = 6;
@@ -251,6 +218,7 @@ class EventTree {
     take_earlier(k4, a4, k6, a6);
     take_earlier(k0, a0, k4, a4);
     return Node{k0, static_cast<std::uint32_t>(b * block) + a0};
+#endif
   }
   // A first or last block shared with a neighbouring run: only the run's slots
   // are read (another thread may be writing the others).
@@ -269,20 +237,21 @@ class EventTree {
     win_[k] = node.slot;
   }
 
-  // Leaves at positions a..b (b - a <= 1 in use) and their common path to the root.
-  [[gnu::always_inline]] void refresh_leaves(std::size_t a, std::size_t b) {
-    if (a == b) {  // nearly always
-      put(nb_ + a, block_winner(a));
-      return climb(nb_ + a);
-    }
-    std::size_t ka = nb_ + a, kb = nb_ + b;
-    for (std::size_t k = ka; k <= kb; ++k) put(k, block_winner(k - nb_));
-    while (ka != kb) {  // leaves may sit at two depths: ka can reach the root first
-      ka = ka > 1 ? ka >> 1 : 1;
-      kb >>= 1;
-      for (std::size_t k = kb; k >= ka; --k) pull(k);
-    }
-    climb(ka);
+  // Block b and its path to the root.
+  [[gnu::always_inline]] void refresh_block(std::size_t b) {
+    const std::size_t p = position(b);
+    put(nb_ + p, block_winner(p, b));
+    climb(nb_ + p);
+  }
+  // Adjacent leaves at positions a and b = a + 1 and their paths to the root:
+  // the second climb redoes the common part of the two paths with both leaves
+  // new (one climb when they are siblings).
+  [[gnu::noinline]] void refresh_two(std::size_t a, std::size_t b) {
+    const std::size_t ka = nb_ + a, kb = nb_ + b;
+    put(ka, block_winner(a, block_at(a)));
+    put(kb, block_winner(b, block_at(b)));
+    if ((ka ^ 1) != kb) climb(ka);
+    climb(kb);
   }
 
   // Refreshes the ancestors of node k (k itself up to date). The winner so far
@@ -295,7 +264,37 @@ class EventTree {
   // after the next one whenever that lies outside the next one's subtree (for
   // random positions, with probability 1 - sum_j 4^-j = 2/3). hint() serves it
   // for prefetching.
-  [[gnu::always_inline]] void climb(std::size_t k) { hinting_ ? climb<true>(k) : climb<false>(k); }
+  [[gnu::always_inline]] void climb(std::size_t k) { hinting_ ? climb<true>(k) : climb_unrolled(k); }
+  // The climb without the hint (the trees of a window's domains), unrolled: one
+  // case per level, entered at node k's depth, no loop counter.
+  [[gnu::always_inline]] void climb_unrolled(std::size_t k) {
+    Key t = key_[k];
+    std::uint32_t slot = win_[k];
+    auto level = [&]() __attribute__((always_inline)) {
+      const Key sib_t = key_[k ^ 1];
+      const std::uint32_t sib_slot = win_[k ^ 1];
+      take_earlier(t, slot, sib_t, sib_slot);
+      k >>= 1;
+      key_[k] = t;
+      win_[k] = slot;
+    };
+    static_assert(sizeof(std::size_t) == 8);
+    switch (std::bit_width(k) - 1) {  // levels above node k; the tree has fewer than 2^31 nodes
+      // clang-format off
+      case 30: level(); [[fallthrough]]; case 29: level(); [[fallthrough]]; case 28: level(); [[fallthrough]];
+      case 27: level(); [[fallthrough]]; case 26: level(); [[fallthrough]]; case 25: level(); [[fallthrough]];
+      case 24: level(); [[fallthrough]]; case 23: level(); [[fallthrough]]; case 22: level(); [[fallthrough]];
+      case 21: level(); [[fallthrough]]; case 20: level(); [[fallthrough]]; case 19: level(); [[fallthrough]];
+      case 18: level(); [[fallthrough]]; case 17: level(); [[fallthrough]]; case 16: level(); [[fallthrough]];
+      case 15: level(); [[fallthrough]]; case 14: level(); [[fallthrough]]; case 13: level(); [[fallthrough]];
+      case 12: level(); [[fallthrough]]; case 11: level(); [[fallthrough]]; case 10: level(); [[fallthrough]];
+      case 9: level(); [[fallthrough]]; case 8: level(); [[fallthrough]]; case 7: level(); [[fallthrough]];
+      case 6: level(); [[fallthrough]]; case 5: level(); [[fallthrough]]; case 4: level(); [[fallthrough]];
+      case 3: level(); [[fallthrough]]; case 2: level(); [[fallthrough]]; case 1: level(); [[fallthrough]];
+      default: break;
+        // clang-format on
+    }
+  }
   template <bool Hint>
   void climb(std::size_t k) {
     Key t = key_[k];

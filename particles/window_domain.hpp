@@ -33,6 +33,15 @@ struct Domain {
   double dissipated = 0;                 // since the last settle
 };
 
+// A domain whose collisions stopped advancing time (EventEngine::frozen_limit in
+// a row at exactly the same time) stops: a rounding stall.
+inline bool stalls(Domain& d) {
+  if (d.frozen < EventEngine<false>::frozen_limit) [[likely]]
+    return false;
+  d.stalled = true;
+  return true;
+}
+
 // max(a, 0) / g for two pairs at once, then t + that where g > 0, else +inf:
 // the contact times of contact_time with tm = now = t (the bodies of both pairs
 // include one that collided at t).
@@ -69,8 +78,9 @@ class DomainStepper<false> {
     loss_ = {0.25 * (1.0 - rule.r * rule.r) * e.m0_, 0.25 * (1.0 - 1.0 * 1.0) * e.m0_};
   }
 
-  // The domain's next collision if its time is <= limit; false when there is none.
-  bool step(Domain& d, double limit) {
+  // The domain's next collision if its time is <= limit; false when there is
+  // none, or when the domain stalls (then stalled is set).
+  [[gnu::always_inline]] bool step(Domain& d, double limit) {
     const double t = d.tree.top_time();
     if (t > limit) return false;
     const std::size_t n = e_.n_;
@@ -93,7 +103,7 @@ class DomainStepper<false> {
     d.now = t;
     d.last_x = x;
     if (i == d.head || j == d.tail) [[unlikely]]
-      return edge(d, i, j, t);
+      return edge(d, i, j, t) && !stalls(d);
     // Pairs (p, i) and (j, k), both inside: contact_time with tm = now = t.
     const std::size_t p = i == 0 ? n - 1 : i - 1;
     const std::size_t k = j + 1 == n ? 0 : j + 1;
@@ -106,7 +116,7 @@ class DomainStepper<false> {
     d.tree.set(i, EventTree::never);  // i and j separate
     d.tree.set(j, tj);
     d.tree.refresh(p, j);
-    return true;
+    return !stalls(d);
   }
 
  private:
@@ -153,7 +163,7 @@ class DomainStepper<true> {
     }
     if (p != none) d.tree.set(p, e_.contact_time(p, i, t)), d.tree.refresh_path(p);
     d.tree.refresh_path(i);
-    return true;
+    return !stalls(d);
   }
 
  private:

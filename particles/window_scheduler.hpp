@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "domain_prefetcher.hpp"
 #include "event_engine.hpp"
 #include "thread_team.hpp"
 #include "window_domain.hpp"
@@ -250,8 +251,8 @@ class WindowScheduler {
   }
 
   // Every domain to `end` (inclusive: collisions at exactly end too), on the
-  // team. Member 0 tells the watch about the time every check_every collisions
-  // it runs; halt is set when the watch asks to stop (the sub-window finishes first).
+  // team. Member 0 tells the watch about the time every so many steps; halt is
+  // set when the watch asks to stop (the sub-window finishes first).
   template <class Watch>
   void run_domains(double end, bool inclusive, Watch& watch, bool& halt) {
     const double limit = inclusive ? end : std::nextafter(end, -std::numeric_limits<double>::infinity());
@@ -265,33 +266,32 @@ class WindowScheduler {
         return nullptr;
       };
       // The domain after the running ones is claimed early, and its memory loaded
-      // into the second-level cache a few lines at a time while they run.
+      // while they run.
       Domain* ahead = claim();
-      Prefetcher prefetch;
+      DomainPrefetcher prefetch;
       auto take = [&]() {
         Domain* d = ahead;
         ahead = claim();
         aim(prefetch, ahead);
         return d;
       };
-      std::array<Domain*, 2> stream{};
-      for (Domain*& s : stream) s = take();
-      std::uint64_t done = 0, next_check = Engine::check_every;
-      while (stream[0] || stream[1]) {
-        for (Domain*& s : stream) {
-          if (!s) continue;
-          if (stepper_.step(*s, limit)) {
-            ++done;
-            if (s->frozen >= Engine::frozen_limit) s->stalled = true, s = take();
-            continue;
-          }
-          s = take();
+      // Two domains at once, a step of each per round (step() is false when a
+      // domain is done or stalled).
+      std::array<Domain*, 2> s{};
+      s[0] = take(), s[1] = take();
+      for (std::uint64_t round = 1; s[0] || s[1]; ++round) {
+        if (s[0] && s[1]) [[likely]] {
+          const bool a = stepper_.step(*s[0], limit), b = stepper_.step(*s[1], limit);
+          if (!a) [[unlikely]]
+            s[0] = take();
+          if (!b) [[unlikely]]
+            s[1] = take();
+        } else {
+          Domain*& one = s[0] ? s[0] : s[1];
+          if (!stepper_.step(*one, limit)) one = take();
         }
-        advance(prefetch, lines);
-        if (member == 0 && done >= next_check) {
-          next_check += Engine::check_every;
-          if (!halt && !watch.tick(end)) halt = true;
-        }
+        prefetch.advance(lines);
+        if (member == 0 && round % (Engine::check_every / 2) == 0 && !halt && !watch.tick(end)) halt = true;
       }
     });
   }
@@ -301,46 +301,33 @@ class WindowScheduler {
   // per body (early times, dense samples) would otherwise wait on one miss after
   // another. Estimated from the rate of the last sub-window; speed only.
   std::size_t prefetch_lines(double end) const {
-    const double bodies =
-        static_cast<double>(n()) / static_cast<double>(std::max<std::size_t>(domains_.size(), 1));
-    const double steps =
-        last_rate_ * (end - e_.now_) / static_cast<double>(std::max<std::size_t>(domains_.size(), 1));
-    const double lines = bodies * (sizeof(typename Engine::Body) + sizeof(double)) / 64.0;
+    const double domains = static_cast<double>(std::max<std::size_t>(domains_.size(), 1));
+    const double steps = last_rate_ * (end - e_.now_) / domains;
+    const double lines =
+        static_cast<double>(n()) / domains * (sizeof(typename Engine::Body) + sizeof(double)) / 64.0;
     if (!(steps > 0)) return 2;
     return static_cast<std::size_t>(std::clamp(1.5 * lines / steps, 2.0, 32.0));
   }
-
-  // Cache lines still to load: of the bodies and of the slot times, as index
-  // ranges (unwrapped: on a ring they may run past n).
-  struct Prefetcher {
-    std::size_t body = 0, body_end = 0, slot = 0, slot_end = 0;
-    const char *keys = nullptr, *keys_end = nullptr, *wins = nullptr,
-               *wins_end = nullptr;  // its tree's nodes
-  };
-  void aim(Prefetcher& p, const Domain* d) const {
-    p = {};
+  // The memory of domain d: its bodies and slot times (on a ring they may wrap
+  // past the end) and its tree's nodes.
+  void aim(DomainPrefetcher& p, const Domain* d) const {
+    p.clear();
     if (!d) return;
-    const std::size_t end = d->tail < d->head ? d->tail + n() : d->tail;
-    const auto* keys = reinterpret_cast<const char*>(d->tree.node_keys());
-    const auto* wins = reinterpret_cast<const char*>(d->tree.node_slots());
-    const std::size_t nodes = d->tree.node_count();
-    p = {d->head, end + 1, d->head, end, keys, keys + nodes * sizeof(EventTree::Key), wins, wins + nodes * 4};
+    const auto* body = e_.body_.data();
+    const double* slot = &e_.slot_[0];
+    auto add = [&](std::size_t lo, std::size_t hi) {  // bodies and slots lo .. hi - 1
+      p.add(body + lo, body + hi);
+      p.add(slot + lo, slot + hi);
+    };
+    if (d->head <= d->tail) {
+      add(d->head, d->tail + 1);
+    } else {
+      add(d->head, n());
+      add(0, d->tail + 1);
+    }
+    p.add(d->tree.node_keys(), d->tree.node_keys() + d->tree.node_count());
+    p.add(d->tree.node_slots(), d->tree.node_slots() + d->tree.node_count());
   }
-  // Loads about `lines` lines of bodies, and of the slot times and tree nodes in
-  // proportion (a third, a twelfth).
-  void advance(Prefetcher& p, std::size_t lines) const {
-    // Bodies straddle lines: a step of one body less than a line's worth hits every line.
-    constexpr std::size_t bodies_per_step = 64 / sizeof(typename Engine::Body);
-    constexpr std::size_t slots_per_line = 64 / sizeof(double);
-    for (std::size_t k = 0; k < lines && p.body < p.body_end; ++k, p.body += bodies_per_step)
-      prefetch_line_l2(&e_.body_[wrap(p.body)]);
-    for (std::size_t k = 0; k < (lines + 2) / 3 && p.slot < p.slot_end; ++k, p.slot += slots_per_line)
-      prefetch_line_l2(&e_.slot_[wrap(p.slot)]);
-    for (std::size_t k = 0; k < (lines + 11) / 12 && p.keys < p.keys_end; ++k, p.keys += 64)
-      prefetch_line_l2(p.keys);
-    if (p.wins < p.wins_end) prefetch_line_l2(p.wins), p.wins += 64;
-  }
-  std::size_t wrap(std::size_t i) const { return i >= n() ? i - n() : i; }
 
   Engine& e_;
   DomainStepper<Linked> stepper_;
