@@ -62,10 +62,11 @@ void write_records(Hdf5File& h5, const EnsembleResult& e, const particles::Parti
   }
   const auto& hist = first.histogram;
   if (hist.bins > 0 && !hist.t.empty()) {
-    h5.write("/particles/histogram/z", bin_centres(hist), "length/time^(2/3)", "bin centres of z = (v - <v>) t^(1/3)");
+    h5.write("/particles/histogram/z", bin_centres(hist), "length/time^(2/3)",
+             "bin centres of z = (v - <v>) t^(1/3)");
     h5.write("/particles/histogram/t", hist.t, "time", "sample times");
-    h5.write_matrix("/particles/histogram/density", e.histogram, hist.t.size(), hist.bins, "time^(2/3)/length",
-                    "mass-weighted density of z, ensemble mean (rows: times)");
+    h5.write_matrix("/particles/histogram/density", e.histogram, hist.t.size(), hist.bins,
+                    "time^(2/3)/length", "mass-weighted density of z, ensemble mean (rows: times)");
   }
   const auto& st = first.spacetime;
   if (p.spacetime && !st.t.empty()) {
@@ -89,6 +90,10 @@ void summarize(RunState& state, const EnsembleResult& e) {
   s["stop_time"] = e.first.stop.time;
   if (e.first.stop.reason == particles::StopReason::collapse) s["collapse_position"] = e.first.stop.position;
   if (e.first.stop.reason == particles::StopReason::stall) s["stall_position"] = e.first.stop.position;
+  if (p.solver == "events") {
+    s["schedule"] = e.first.schedule.order;  // time windows, or the global queue
+    if (!e.first.schedule.why_global.empty()) s["schedule_note"] = e.first.schedule.why_global;
+  }
   if (!e.T.mean.empty()) {
     s["T_final"] = e.T.mean.back();
     s["n_bodies_final"] = e.n_bodies.mean.back();
@@ -97,9 +102,15 @@ void summarize(RunState& state, const EnsembleResult& e) {
   state.report.push_back("- " + std::to_string(state.scene.initial.N) + " particles, r = " + brief(p.r) +
                          ", delta = " + brief(p.delta) + " (" + p.subthreshold + " below it), " +
                          std::to_string(p.realizations) + " realization(s), solver `" + p.solver + "`.");
-  state.report.push_back("- " + std::to_string(e.total_collisions) + " collisions in " + brief(e.wall_seconds) +
-                         " s (" + brief(std::round(s["collisions_per_second"].get<double>())) + " per second).");
-  state.report.push_back("- Run ended: " + to_string(e.first.stop.reason) + " at t = " + brief(e.first.stop.time) +
+  state.report.push_back("- " + std::to_string(e.total_collisions) + " collisions in " +
+                         brief(e.wall_seconds) + " s (" +
+                         brief(std::round(s["collisions_per_second"].get<double>())) + " per second).");
+  if (p.solver == "events")
+    state.report.push_back(
+        "- Event order: " + e.first.schedule.order +
+        (e.first.schedule.why_global.empty() ? "" : " (" + e.first.schedule.why_global + ")") + ".");
+  state.report.push_back("- Run ended: " + to_string(e.first.stop.reason) +
+                         " at t = " + brief(e.first.stop.time) +
                          (e.first.stop.reason == particles::StopReason::collapse
                               ? " (inelastic collapse at x = " + brief(e.first.stop.position) + ")"
                           : e.first.stop.reason == particles::StopReason::stall
@@ -121,8 +132,10 @@ void run_particles_stage(RunState& state) {
   const auto& stop = e.first.stop;
   state.h5.set_attribute("/particles", "stop_reason", to_string(stop.reason));
   state.h5.set_attribute("/particles", "stop_time", stop.time);
-  if (stop.reason == particles::StopReason::collapse) state.h5.set_attribute("/particles", "collapse_x", stop.position);
-  if (stop.reason == particles::StopReason::stall) state.h5.set_attribute("/particles", "stall_x", stop.position);
+  if (stop.reason == particles::StopReason::collapse)
+    state.h5.set_attribute("/particles", "collapse_x", stop.position);
+  if (stop.reason == particles::StopReason::stall)
+    state.h5.set_attribute("/particles", "stall_x", stop.position);
   summarize(state, e);
   state.final_bodies = e.first.final_state;
   state.final_time = e.first.stop.time;

@@ -231,6 +231,7 @@ class WindowScheduler {
   void switch_to_global() {
     if (planned_) end_plan();
     global_ = true;
+    domains_ = decltype(domains_)(), key_ = decltype(key_)(), win_ = decltype(win_)();  // memory for the global tree
     e_.use_global_queue();
   }
 
