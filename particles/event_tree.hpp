@@ -243,15 +243,27 @@ class EventTree {
     put(nb_ + p, block_winner(p, b));
     climb(nb_ + p);
   }
-  // Adjacent leaves at positions a and b = a + 1 and their paths to the root:
-  // the second climb redoes the common part of the two paths with both leaves
-  // new (one climb when they are siblings).
+  // Adjacent leaves at positions a and b = a + 1 and their paths to the root. A
+  // leaf whose winner did not change leaves its path as it was below the joint
+  // (usually the block of the slot that did not collide: one climb from the
+  // other). Else both paths in step up to where they join (on average two levels
+  // up), then one climb; leaves at two depths (rare) take a climb each, the
+  // second redoing the common part with both leaves new.
   [[gnu::noinline]] void refresh_two(std::size_t a, std::size_t b) {
-    const std::size_t ka = nb_ + a, kb = nb_ + b;
-    put(ka, block_winner(a, block_at(a)));
-    put(kb, block_winner(b, block_at(b)));
-    if ((ka ^ 1) != kb) climb(ka);
-    climb(kb);
+    std::size_t ka = nb_ + a, kb = nb_ + b;
+    const Node wa = block_winner(a, block_at(a)), wb = block_winner(b, block_at(b));
+    const bool same_a = wa.t == key_[ka] && wa.slot == win_[ka],
+               same_b = wb.t == key_[kb] && wb.slot == win_[kb];
+    put(ka, wa);
+    put(kb, wb);
+    if (same_a) return climb(kb);
+    if (same_b) return climb(ka);
+    if (std::bit_width(ka) != std::bit_width(kb)) {
+      climb(ka);
+      return climb(kb);
+    }
+    for (; (ka ^ 1) != kb; ka >>= 1, kb >>= 1) pull(ka >> 1), pull(kb >> 1);
+    climb(ka);
   }
 
   // Refreshes the ancestors of node k (k itself up to date). The winner so far
