@@ -21,7 +21,9 @@
 
 namespace shockgas::particles::detail {
 
-struct Domain {
+// Aligned to a pair of cache lines: each member of the team writes its domains'
+// counters at every step, and neighbours in the vector run on other members.
+struct alignas(128) Domain {
   std::size_t head = 0, tail = 0;  // its first and last body (tail: left body of the next cut)
   bool empty = false;              // one body: no pair inside
   EventTree tree;                  // over slots head .. tail - 1
