@@ -192,6 +192,12 @@ class WindowScheduler {
       const std::size_t blocks = dom.empty ? 0 : EventTree::blocks_of(e_.slot_, dom.head, before(dom.tail));
       offset[d + 1] = offset[d] + EventTree::nodes(blocks);
     }
+    // The old nodes are not needed: a larger arena replaces the old one instead
+    // of being copied from it (which would hold both at once), with room to grow.
+    if (offset.back() > key_.capacity()) {
+      key_ = decltype(key_)(), win_ = decltype(win_)();
+      key_.reserve(offset.back() + offset.back() / 16), win_.reserve(offset.back() + offset.back() / 16);
+    }
     key_.resize(offset.back());
     win_.resize(offset.back());
     std::atomic<std::size_t> next{0};
