@@ -127,6 +127,27 @@ TEST(WindowThreads, StickyMergesOnTheWindowsEqualTheGlobalQueueOnALine) {
   expect_windows_equal_global_for_merges("line", 1e-2, "sticky");
 }
 
+TEST(WindowThreads, UnequalMassMergesOnTheWindowsEqualTheGlobalQueue) {
+  // Masses rho0(x) dx: merges are mass-weighted means, convex for any masses.
+  InitialParams ip;
+  ip.N = 20000;
+  ip.velocities = "expression";
+  ip.domain = 20000.0;  // unit mean spacing
+  ip.v0 = "sin(2*pi*x/20000) + 0.5*sin(2*pi*x/7) + 0.3*sin(2*pi*x/3.3)";
+  ip.rho0 = "1 + 0.5*cos(2*pi*x/13)";
+  const Bodies b = make_initial_bodies(ip);
+  ParticleParams windows = params({"ring", 0.0, 0.0, "elastic", 300.0}, 2), global = windows;
+  windows.schedule = "windows";
+  global.schedule = "global";
+  const RunResult w = simulate(b, ip.domain, windows);
+  const RunResult g = simulate(b, ip.domain, global);
+  ASSERT_EQ(w.schedule.order, "windows") << w.schedule.why_global;
+  ASSERT_GT(g.collisions, 5000u);
+  EXPECT_EQ(w.collisions, g.collisions);
+  for (auto column : {&Bodies::x, &Bodies::v, &Bodies::m})
+    EXPECT_EQ(w.final_state.*column, g.final_state.*column);
+}
+
 TEST(WindowThreads, SummarySaysWhyWindowsDoNotApply) {
   ParticleParams p = params({"ring", 0.0, 1e-2, "elastic", 10.0}, 2);  // r = 0, elastic bounces below delta
   const RunResult out = simulate(gas(4096), 0, p);
