@@ -134,11 +134,6 @@ class EventEngine {
   double dissipated() const { return dissipated_; }
   // Position (unrolled) of the body of the last collision.
   double last_position() const { return last_x_; }
-  // Memory held by the engine's arrays [bytes].
-  std::size_t bytes() const {
-    return body_.capacity() * sizeof(Body) + slot_.bytes() + tree_.bytes() +
-           mass_.capacity() * sizeof(double) + (next_.capacity() + prev_.capacity()) * sizeof(std::uint32_t);
-  }
 
   // Visits the live bodies in chain order from body 0: f(index, x at time t
   // (unrolled), v, m).

@@ -113,11 +113,6 @@ class EventTree {
     for (std::size_t k = nb_ - 1; k >= 1; --k) pull(k);
   }
 
-  // Memory of the nodes it owns [bytes].
-  std::size_t bytes() const {
-    return own_key_.capacity() * sizeof(Key) + own_win_.capacity() * sizeof(std::uint32_t) +
-           own_times_.bytes();
-  }
   // The node arrays (for prefetching): nodes() keys and slots.
   const Key* node_keys() const { return key_; }
   const std::uint32_t* node_slots() const { return win_; }

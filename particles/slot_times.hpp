@@ -49,8 +49,6 @@ class SlotTimes {
   double operator[](std::size_t i) const { return lines_[i / block].t[i % block]; }
   const double* line(std::size_t b) const { return lines_[b].t; }
   double* data() { return lines_.empty() ? nullptr : lines_[0].t; }
-  // Memory held [bytes].
-  std::size_t bytes() const { return lines_.capacity() * sizeof(Line); }
 
  private:
   struct alignas(64) Line {

@@ -61,9 +61,8 @@ inline bool merges_only(const CollisionRule& rule) {
 // inelastic collapse must be detected.
 inline std::string window_obstacle(std::size_t n, bool equal_masses, const CollisionRule& rule) {
   if (rule.collapse_possible())
-    return "inelastic collapse is possible (delta = 0, 0 < r < 1), and detecting it needs the global time "
-           "order; "
-           "windows would need a collapse test per domain";
+    return "inelastic collapse is possible (delta = 0, 0 < r < 1): detecting it needs the global time "
+           "order; windows would need a collapse test per domain";
   if (n < WindowPlanner<false>::min_domains * WindowPlanner<false>::min_domain_bodies)
     return "fewer than 1024 bodies: too few to split";
   if (merges_only(rule) || (equal_masses && !rule.can_merge())) return "";
@@ -126,11 +125,6 @@ class WindowScheduler {
   // Why the run left the windows for the global queue ("" while it has not).
   const std::string& why_global() const { return why_global_; }
   std::size_t threads() const { return team_.size(); }
-  // Memory held beyond the engine's arrays [bytes].
-  std::size_t bytes() const {
-    return key_.capacity() * sizeof(EventTree::Key) + win_.capacity() * sizeof(std::uint32_t) +
-           domains_.capacity() * sizeof(Domain);
-  }
 
  private:
   std::size_t n() const { return e_.n_; }
@@ -237,7 +231,10 @@ class WindowScheduler {
   void switch_to_global() {
     if (planned_) end_plan();
     global_ = true;
-    domains_ = decltype(domains_)(), key_ = decltype(key_)(), win_ = decltype(win_)();  // memory for the global tree
+    // Their memory goes to the global tree.
+    domains_ = decltype(domains_)();
+    key_ = decltype(key_)();
+    win_ = decltype(win_)();
     e_.use_global_queue();
   }
 
