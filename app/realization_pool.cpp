@@ -1,7 +1,5 @@
 #include "realization_pool.hpp"
 
-#include <sched.h>
-
 #include <algorithm>
 #include <atomic>
 #include <mutex>
@@ -9,6 +7,7 @@
 #include <utility>
 
 #include "frames.hpp"
+#include "shockgas/core/cores.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::app {
@@ -39,11 +38,7 @@ struct RealizationPool::State {
       fraction[i] = f;
       sim_time = std::max(sim_time, t);
     };
-    RealizationRecord r{item.ensemble, item.index,
-                        item.index == 0
-                            ? particles::simulate(ic.bodies(), ic.length(), p, progress)
-                            : particles::simulate(ic.realization(item.index), ic.length(), p, progress)};
-    if (item.index != 0) strip_states(r.run);
+    RealizationRecord r{item.ensemble, item.index, particles::run_realization(ic, item.index, p, progress)};
     std::lock_guard lock(mutex);
     fraction[i] = 1;
     active[i] = false;
@@ -86,9 +81,9 @@ RealizationPool::RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::
   s.items = std::move(items);
   s.fraction.assign(s.items.size(), 0.0);
   s.active.assign(s.items.size(), false);
-  const std::size_t runs = std::max<std::size_t>(1, std::min(threads, s.items.size()));
-  s.threads_per_run = std::max<std::size_t>(1, threads / runs);  // threads left over go to each run's windows
-  const std::size_t workers = s.items.empty() ? 0 : runs;
+  const particles::ThreadSplit split = particles::split_threads(threads, s.items.size());
+  s.threads_per_run = split.per_run;  // threads left over go to each run's windows
+  const std::size_t workers = s.items.empty() ? 0 : split.runs;
   s.workers = workers;  // counted down by the threads as they end
   for (std::size_t t = 0; t < workers; ++t) threads_.emplace_back([state = state_] { state->work(); });
 }
@@ -135,11 +130,6 @@ bool RealizationPool::finished() const {
   return state_->workers == 0;
 }
 
-std::size_t resolved_threads(std::size_t setting) {
-  if (setting > 0) return setting;
-  cpu_set_t cpus;  // the cores this process may run on: a launcher may bind each rank to its own
-  if (sched_getaffinity(0, sizeof cpus, &cpus) == 0) return std::max(1, CPU_COUNT(&cpus));
-  return std::max<std::size_t>(1, std::thread::hardware_concurrency());
-}
+std::size_t resolved_threads(std::size_t setting) { return setting > 0 ? setting : usable_cores(); }
 
 }  // namespace shockgas::app

@@ -56,7 +56,8 @@ class RealizationPool {
 };
 
 // The threads "particles.threads = n" means for this process: n, or for 0 the
-// cores it may run on (its CPU affinity: mpirun and srun bind ranks to cores).
+// cores it may use (usable_cores: its CPU affinity, as mpirun and srun bind
+// ranks to cores, and a container's quota).
 std::size_t resolved_threads(std::size_t setting);
 
 }  // namespace shockgas::app

@@ -18,6 +18,16 @@ void put_bodies(RecordFields& f, const std::string& prefix, const Bodies& b) {
 }
 
 // Field lookup by name with the malformed cases named.
+// A text as numbers, one character code each (exact as doubles), and back.
+std::vector<double> text_codes(const std::string& text) {
+  return {text.begin(), text.end()};
+}
+std::string from_codes(const std::vector<double>& codes) {
+  std::string text;
+  for (double c : codes) text.push_back(static_cast<char>(c));
+  return text;
+}
+
 class FieldReader {
  public:
   explicit FieldReader(const RecordFields& fields) {
@@ -115,6 +125,9 @@ RecordFields to_fields(const RunResult& run) {
   f.emplace_back("collisions", std::vector<double>{static_cast<double>(run.collisions >> 32),
                                                    static_cast<double>(run.collisions & 0xFFFFFFFFu)});
   f.emplace_back("wall_seconds", std::vector<double>{run.wall_seconds});
+  f.emplace_back("schedule/threads", std::vector<double>{static_cast<double>(run.schedule.threads)});
+  f.emplace_back("schedule/order", text_codes(run.schedule.order));
+  f.emplace_back("schedule/why_global", text_codes(run.schedule.why_global));
   if (run.final_state.size() > 0) put_bodies(f, "final", run.final_state);
   for (std::size_t k = 0; k < run.snapshots.size(); ++k) {
     const std::string prefix = "snapshots/" + std::to_string(k);
@@ -146,6 +159,9 @@ RunResult from_fields(const RecordFields& fields) {
   run.collisions =
       (static_cast<std::uint64_t>(collisions[0]) << 32) | static_cast<std::uint64_t>(collisions[1]);
   run.wall_seconds = in.numbers("wall_seconds", 1)[0];
+  run.schedule.threads = static_cast<std::size_t>(in.numbers("schedule/threads", 1)[0]);
+  run.schedule.order = from_codes(in.array("schedule/order"));
+  run.schedule.why_global = from_codes(in.array("schedule/why_global"));
   if (in.has("final/x")) run.final_state = in.bodies("final");
   for (std::size_t k = 0; in.has("snapshots/" + std::to_string(k) + "/t"); ++k) {
     const std::string prefix = "snapshots/" + std::to_string(k);

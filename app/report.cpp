@@ -31,6 +31,10 @@ void particles_part(std::ostream& out, const Scene& scene, const particles::Ense
       << name_of(p.solver) << "`.\n";
   out << "- " << e.total_collisions << " collisions in " << brief(e.wall_seconds) << " s ("
       << brief(std::round(rate)) << " per second).\n";
+  if (p.solver == particles::ParticleSolver::events) {
+    const particles::RunSchedule& s = e.first.schedule;
+    out << "- Event order: " << s.order << (s.why_global.empty() ? "" : " (" + s.why_global + ")") << ".\n";
+  }
   out << "- Run ended: " << to_string(stop.reason) << " at t = " << brief(stop.time);
   if (stop.reason == particles::StopReason::collapse)
     out << " (inelastic collapse at x = " << brief(stop.position) << ")";

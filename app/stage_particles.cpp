@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "frames.hpp"
+#include "shockgas/core/interrupt.hpp"
 #include "progress_bar.hpp"
 #include "realization_pool.hpp"
 #include "run_results.hpp"
@@ -45,6 +46,10 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
     progress.finish();
     r.parallel.threads = resolved_threads(scene.particles.threads);
   }
+  // Stopped at a safe point on a checkpoint request: nothing is written (no
+  // checkpoint is kept yet), the run ends as interrupted.
+  for (const particles::RunStop& stop : r.ensemble.stops)
+    if (stop.reason == particles::StopReason::interrupted) throw Interrupted(interrupt_signal());
   if (scene.output.animation) split_frames(r, scene, frame_times(scene));
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};

@@ -72,6 +72,13 @@ std::vector<Declaration> particles() {
   const Part p = Part::particles;
   using PR = ParticleResults;
   using StopReason = particles::StopReason;
+  // f(realization 0's schedule) -> Json, when the event solver ran (null: nothing).
+  auto events = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      if (!r.particles || r.scene->particles.solver != particles::ParticleSolver::events) return;
+      if (Json j = f(r.particles->ensemble.first.schedule); !j.is_null()) out.json(j);
+    };
+  };
   return {
       key(p, "particles.solver", "", as_used("particles", "solver"), "",
           particle([](const PR&, const Scene& s) { return name_of(s.particles.solver); })),
@@ -99,7 +106,7 @@ std::vector<Declaration> particles() {
             if (r.particles && r.particles->parallel.shards > 0) out.json(r.particles->parallel.shards);
           }),
       key(p, "particles.stop", "",
-          "how realization 0 ended (completed, collapse, rounding_stall, event_limit, wall_limit)", "",
+          "how realization 0 ended (completed, collapse, rounding_stall, event_limit, wall_limit, interrupted)", "",
           particle([](const PR& pr, const Scene&) { return to_string(pr.ensemble.first.stop.reason); })),
       key(p, "particles.stop_time", "time", "when it ended", "",
           particle([](const PR& pr, const Scene&) { return pr.ensemble.first.stop.time; })),
@@ -115,6 +122,13 @@ std::vector<Declaration> particles() {
             if (r.particles && r.particles->ensemble.first.stop.reason == StopReason::stall)
               out.json(r.particles->ensemble.first.stop.position);
           }),
+      key(p, "particles.schedule", "",
+          "how the event engine ordered the collisions: windows, global, or windows, then global",
+          "with the event solver", events([](const particles::RunSchedule& s) { return s.order; })),
+      key(p, "particles.schedule_note", "",
+          "why the events (also) ran on the global queue, and what time windows would need there",
+          "with the event solver, when not only windows",
+          events([](const particles::RunSchedule& s) { return s.why_global.empty() ? Json() : Json(s.why_global); })),
       key(p, "particles.T_final", "length^2/time^2", "T at the last sample (ensemble mean)", "",
           [](const RunResults& r, Emitter& out) {
             if (r.particles && !r.particles->ensemble.T.mean.empty())

@@ -3,7 +3,9 @@
 // particles_bench: equal-mass particles on a ring, a std::priority_queue of pair
 // events, stale events skipped by per-particle collision counters (lazy
 // invalidation). Same physics as shockgas::particles (restitution r, elastic
-// below delta), no observables.
+// below delta), and the same temperature at the same sample times as its
+// recorder; nothing else observed.
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <queue>
@@ -20,27 +22,30 @@ class BaselineEngine {
     for (std::size_t i = 0; i < size(); ++i) predict(i);
   }
 
-  // Runs until `collisions` collisions are done (or no event is left); returns the count.
-  std::uint64_t run(std::uint64_t collisions) {
-    std::uint64_t done = 0;
-    while (done < collisions && !queue_.empty()) {
+  // Runs every collision at time <= t_stop; returns the collisions so far.
+  std::uint64_t run_until(double t_stop) {
+    while (!queue_.empty() && queue_.top().time <= t_stop) {
       const Event e = queue_.top();
       queue_.pop();
       const std::size_t j = right(e.slot);
       if (e.stamp_left != stamp_[e.slot] || e.stamp_right != stamp_[j]) continue;  // stale
       collide(e.slot, j, e.time);
-      ++done;
+      ++done_;
       predict(left(e.slot));
       predict(e.slot);
       predict(j);
     }
-    return done;
+    return done_;
   }
 
-  double momentum() const {
-    double p = 0;
-    for (double v : v_) p += v;
-    return p;
+  // Temperature <v^2> - <v>^2 (two passes, as the recorder).
+  double temperature() const {
+    double momentum = 0;
+    for (double v : v_) momentum += v;
+    const double mean = momentum / static_cast<double>(size());
+    double T = 0;
+    for (double v : v_) T += (v - mean) * (v - mean);
+    return T / static_cast<double>(size());
   }
 
  private:
@@ -82,6 +87,7 @@ class BaselineEngine {
   std::vector<double> x_, v_, t_;
   std::vector<std::uint32_t> stamp_;
   std::priority_queue<Event> queue_;
+  std::uint64_t done_ = 0;
 };
 
 }  // namespace shockgas::bench

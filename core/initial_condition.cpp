@@ -9,7 +9,7 @@
 
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/expression.hpp"
-#include "shockgas/core/random.hpp"
+#include "shockgas/core/initial_stream.hpp"
 
 namespace shockgas {
 
@@ -39,22 +39,6 @@ Bodies read_bodies_file(const std::string& path) {
   }
   if (b.size() < 2) throw InputError("initial.file", to_text(path), "a file with at least 2 bodies");
   return b;
-}
-
-void place(Bodies& b, const InitialParams& p, double length, Rng& rng) {
-  b.x.resize(p.N);
-  if (p.positions == Positions::lattice) {
-    for (std::size_t i = 0; i < p.N; ++i) b.x[i] = (i + 0.5) * length / p.N;
-  } else {
-    for (auto& x : b.x) x = rng.uniform(0.0, length);
-    std::sort(b.x.begin(), b.x.end());
-  }
-}
-
-void draw_velocities(Bodies& b, const InitialParams& p, Rng& rng) {
-  b.v.resize(b.x.size());
-  for (auto& v : b.v)
-    v = p.velocities == Velocities::gaussian ? p.amplitude * rng.normal() : rng.uniform(-p.amplitude, p.amplitude);
 }
 
 void subtract_mean(Bodies& b) {
@@ -114,20 +98,18 @@ void validate(const InitialParams& p) {
 
 Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization) {
   if (p.velocities == Velocities::file) return read_bodies_file(p.file);
-  const double length = domain_length(p);
-  Rng rng(realization_seed(p.seed, realization));
   Bodies b;
-  if (p.velocities == Velocities::expression) {
-    const Expression v0(p.v0, "initial.v0"), rho0(p.rho0, "initial.rho0");
-    const double dx = length / p.N;
-    for (std::size_t i = 0; i < p.N; ++i) {
-      const double x = (i + 0.5) * dx;
-      b.push_back(x, v0(x), rho0(x) * dx);
-    }
-  } else {
-    place(b, p, length, rng);
-    draw_velocities(b, p, rng);
-    b.m.assign(p.N, 1.0);
+  if (InitialStream::streamable(p)) {
+    InitialStream stream(p, realization);
+    b.x.resize(p.N), b.v.resize(p.N), b.m.resize(p.N);
+    stream.next(p.N, b.x.data(), b.v.data(), b.m.data());
+    return b;
+  }
+  const Expression v0(p.v0, "initial.v0"), rho0(p.rho0, "initial.rho0");
+  const double dx = domain_length(p) / p.N;
+  for (std::size_t i = 0; i < p.N; ++i) {
+    const double x = (i + 0.5) * dx;
+    b.push_back(x, v0(x), rho0(x) * dx);
   }
   if (p.remove_mean) subtract_mean(b);
   return b;
@@ -139,9 +121,10 @@ InitialCondition::InitialCondition(const InitialParams& p) : params_(p) {
   if (!field_.from_bodies()) expression_bodies_ = make_initial_bodies(p, 0);
 }
 
+bool InitialCondition::depends_on_realization() const { return InitialStream::streamable(params_); }
+
 Bodies InitialCondition::realization(std::uint64_t k) const {
-  const bool depends_on_k = params_.velocities == Velocities::uniform || params_.velocities == Velocities::gaussian;
-  return k == 0 || !depends_on_k ? bodies() : make_initial_bodies(params_, k);
+  return k == 0 || !depends_on_realization() ? bodies() : make_initial_bodies(params_, k);
 }
 
 InitialField make_initial_field(const InitialParams& p, std::uint64_t realization) {

@@ -8,6 +8,8 @@
 #include <mutex>
 #include <thread>
 
+#include "shockgas/core/cores.hpp"
+#include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::particles {
@@ -67,10 +69,18 @@ class SharedProgress {
   std::vector<double> fraction_;
 };
 
-std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams& p,
-                               SharedProgress& progress) {
+// What a realization that never ran because of a checkpoint request reports.
+RunResult not_started() {
+  RunResult r;
+  r.stop = {StopReason::interrupted, 0.0, 0.0};
+  return r;
+}
+
+std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams& p, SharedProgress& progress) {
   const std::size_t R = p.realizations;
-  const double L = ic.length();
+  const ThreadSplit split = split_threads(p.threads > 0 ? p.threads : usable_cores(), R);
+  ParticleParams each = p;
+  each.threads = split.per_run;
   std::vector<RunResult> runs(R);
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
@@ -78,8 +88,12 @@ std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams&
   auto worker = [&] {
     for (std::size_t k = next++; k < R; k = next++) {
       try {
-        runs[k] = k == 0 ? simulate(ic.bodies(), L, p, progress.for_run(k))
-                         : simulate(ic.realization(k), L, p, progress.for_run(k));
+        if (interrupt_requested() != InterruptMode::none) {
+          throw_if_aborted();
+          runs[k] = not_started();
+          continue;
+        }
+        runs[k] = run_realization(ic, k, each, progress.for_run(k));
         if (ProgressCallback cb = progress.for_run(k)) cb(1.0, p.t_end);
       } catch (...) {
         std::lock_guard lock(error_mutex);
@@ -88,10 +102,8 @@ std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams&
       }
     }
   };
-  const std::size_t hw = std::max<std::size_t>(1, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min(R, p.threads == 0 ? hw : p.threads);
   std::vector<std::thread> pool;
-  for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
+  for (std::size_t i = 1; i < split.runs; ++i) pool.emplace_back(worker);
   worker();
   for (std::thread& th : pool) th.join();
   if (error) std::rethrow_exception(error);
@@ -99,6 +111,22 @@ std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams&
 }
 
 }  // namespace
+
+RunResult run_realization(const InitialCondition& ic, std::uint64_t k, const ParticleParams& p,
+                          const ProgressCallback& progress) {
+  if (k == 0) return simulate(ic, k, p, progress);
+  const StateSink discard;
+  RunResult r = simulate(ic, k, p, progress, &discard);
+  r.spacetime = {};
+  return r;
+}
+
+ThreadSplit split_threads(std::size_t threads, std::size_t realizations) {
+  ThreadSplit s;
+  s.runs = std::max<std::size_t>(1, std::min(threads, realizations));
+  s.per_run = std::max<std::size_t>(1, threads / s.runs);
+  return s;
+}
 
 EnsembleResult run_ensemble(const InitialParams& ip, const ParticleParams& p,
                             const ProgressCallback& progress) {

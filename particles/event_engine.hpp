@@ -4,35 +4,42 @@
 //
 // Body i keeps its position x at its own local time t and its velocity v
 // (x(s) = x + v (s - t), lazy positions). Pair slot i is body i with its right
-// neighbour; its predicted contact time sits in a tournament tree. A collision
-// changes the velocities of two bodies, hence only the times of the slots
-// left(i), i and right(i).
+// neighbour; its predicted contact time sits in SlotTimes. A collision changes
+// the velocities of two bodies, hence only the times of the slots left(i), i and
+// right(i). Who orders the events: the engine's own global queue (run_until), or
+// a WindowScheduler, which runs stretches of the chain with trees of their own
+// over the same slot times.
 //
 // Two layouts, chosen once per run:
 //  * Linked = false: equal masses, no merges; neighbours are i +- 1 (mod N on the
-//    ring). 24 bytes per body + 8 per slot time + 4 per slot for the tree over
-//    blocks of 8 slots = 35 bytes per particle (32 when a WindowScheduler drives
-//    it: no global tree, a slot time each).
+//    ring). 24 bytes per body + 8 per slot time + 3 per slot for a tree = 35
+//    bytes per particle.
 //  * Linked = true: masses and merges; the live bodies form a doubly linked list
 //    (a ring on the ring). A merge keeps the left body, unlinks the right one and
 //    sets its slot to +inf. 35 + 8 (mass) + 8 (links) = 51 bytes per particle.
 //
 // Ring geometry: positions are unrolled (never wrapped while running); the pair
 // whose right body has the lower index wraps, the right body counted at x + L.
+// So in chain order from any body the unrolled positions never decrease.
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-#include "shockgas/core/bodies.hpp"
+#include "event_tree.hpp"
+#include "huge_page_allocator.hpp"
 #include "shockgas/particles/collision.hpp"
-#include "shockgas/particles/event_tree.hpp"
-#include "shockgas/particles/huge_page_allocator.hpp"
 
 namespace shockgas::particles::detail {
 
+template <bool Linked>
 class WindowScheduler;
+template <bool Linked>
+class WindowPlanner;
+template <bool Linked>
+class DomainStepper;
 
 // Why run_until returned. stall: delta > 0 (or r = 0, 1), where no collapse is
 // possible, but time stopped advancing anyway (see run_until).
@@ -52,35 +59,29 @@ class EventEngine {
   // 2^24 collisions take about a second.
   static constexpr int frozen_limit = 1 << 24;
 
-  // initial: sorted by x (ring: inside [0, L)); all masses equal unless Linked.
-  // global_queue = false leaves the global event queue empty, for a run that a
-  // WindowScheduler drives (Linked = false only); run_until needs it.
-  EventEngine(const Bodies& initial, double L, bool ring, const CollisionRule& rule, bool global_queue = true)
-      : L_(L), ring_(ring), rule_(rule), n_(initial.size()), alive_(initial.size()) {
-    body_.resize(n_);
-    for (std::size_t i = 0; i < n_; ++i) body_[i] = {initial.x[i], initial.v[i], 0.0};
-    m0_ = initial.m[0];
-    if constexpr (Linked) {
-      mass_ = initial.m;
-      next_.resize(n_);
-      prev_.resize(n_);
-      for (std::size_t i = 0; i < n_; ++i) {
-        next_[i] = static_cast<std::uint32_t>(i + 1);
-        prev_[i] = static_cast<std::uint32_t>(i) - 1;  // none for i = 0
-      }
-      next_[n_ - 1] = ring_ ? 0 : none;
-      prev_[0] = ring_ ? static_cast<std::uint32_t>(n_ - 1) : none;
-    }
-    if (global_queue) build_queue();
+  // n bodies; fill(first, count, x, v, m) is called for consecutive chunks and
+  // writes bodies first .. first + count - 1 (sorted by x, ring: inside [0, L);
+  // all masses equal unless Linked). The global queue is built only when asked
+  // for (use_global_queue).
+  template <class Fill>
+  EventEngine(std::size_t n, double L, bool ring, const CollisionRule& rule, Fill&& fill)
+      : L_(L), ring_(ring), rule_(rule), n_(n), alive_(n) {
+    load_bodies(fill);
+    if constexpr (Linked) link_all();
+    slot_.reset(n_);
+    for (std::size_t i = 0; i < n_; ++i) slot_[i] = pair_time(i, 0.0);
     const bool collapse_possible = rule_.collapse_possible();
     step_scale_ = collapse_possible ? 1e-12 : 0.0;
     window_scale_ = collapse_possible ? 1e-10 : -1.0;
     step_limit_ = collapse_possible ? stall_limit : frozen_limit;
   }
 
-  // Processes every collision at time <= t_stop; then now() = t_stop unless
-  // stopped early. watch(now, collisions) is called every check_every collisions
-  // and returns false to halt.
+  // Builds the global event queue over the slot times as they are (needed by run_until).
+  void use_global_queue() { tree_.attach(slot_, 0, n_ - 1); }
+
+  // Processes every collision at time <= t_stop on the global queue; then now() =
+  // t_stop unless stopped early. watch(now, collisions) is called every
+  // check_every collisions and returns false to halt.
   //
   // Inelastic collapse (delta = 0, 0 < r < 1): a few bodies collide ever faster,
   // the gaps fall below rounding and the contact times stop advancing; left alone,
@@ -100,7 +101,6 @@ class EventEngine {
   // accident can hang it.
   template <class Watch>
   EngineStop run_until(double t_stop, Watch&& watch) {
-    assert(tree_.size() == n_);
     while (tree_.top_time() <= t_stop) {
       const std::size_t i = tree_.top();
       prefetch(i);
@@ -122,11 +122,10 @@ class EventEngine {
     return EngineStop::reached;
   }
 
-  // (Re)builds the global event queue from the bodies as they are at now().
-  void build_queue() {
-    tree_.assign(n_, [&](std::size_t i) { return pair_time(i, now_); });
-  }
-
+  std::size_t size() const { return n_; }
+  double length() const { return L_; }
+  bool ring() const { return ring_; }
+  const CollisionRule& rule() const { return rule_; }
   double now() const { return now_; }
   std::size_t alive() const { return alive_; }
   // Collisions by kind (CollisionKind order), and all of them.
@@ -136,7 +135,8 @@ class EventEngine {
   // Position (unrolled) of the body of the last collision.
   double last_position() const { return last_x_; }
 
-  // Visits the live bodies in order: f(index, x at time t (unrolled), v, m).
+  // Visits the live bodies in chain order from body 0: f(index, x at time t
+  // (unrolled), v, m).
   template <class F>
   void for_each_body(double t, F&& f) const {
     for (std::size_t i = 0; i < n_; ++i) {
@@ -148,7 +148,9 @@ class EventEngine {
   }
 
  private:
-  friend class WindowScheduler;
+  friend class WindowScheduler<Linked>;
+  friend class WindowPlanner<Linked>;
+  friend class DomainStepper<Linked>;
   struct Body {
     double x;                                              // position at local time t [length], unrolled
     double v;                                              // velocity [length/time]
@@ -156,9 +158,41 @@ class EventEngine {
     double at(double s) const { return x + v * (s - t); }  // position at time s
   };
 
+  template <class Fill>
+  void load_bodies(Fill& fill) {
+    constexpr std::size_t chunk = 4096;
+    std::vector<double> x(std::min(chunk, n_)), v(x.size()), m(x.size());
+    body_.resize(n_);
+    if constexpr (Linked) mass_.resize(n_);
+    for (std::size_t lo = 0; lo < n_; lo += chunk) {
+      const std::size_t size = std::min(chunk, n_ - lo);
+      fill(lo, size, x.data(), v.data(), m.data());
+      if (lo == 0) m0_ = m[0];
+      for (std::size_t k = 0; k < size; ++k) {
+        body_[lo + k] = {x[k], v[k], 0.0};
+        if constexpr (Linked) mass_[lo + k] = m[k];
+        assert(Linked || m[k] == m0_);
+      }
+    }
+  }
+  void link_all() {
+    next_.resize(n_);
+    prev_.resize(n_);
+    for (std::size_t i = 0; i < n_; ++i) {
+      next_[i] = static_cast<std::uint32_t>(i + 1);
+      prev_[i] = static_cast<std::uint32_t>(i) - 1;  // none for i = 0
+    }
+    next_[n_ - 1] = ring_ ? 0 : none;
+    prev_[0] = ring_ ? static_cast<std::uint32_t>(n_ - 1) : none;
+  }
+
   double mass(std::size_t i) const {
     if constexpr (Linked) return mass_[i];
     return m0_;
+  }
+  bool live(std::size_t i) const {
+    if constexpr (Linked) return mass_[i] != 0.0;
+    return true;
   }
   // Starts the loads of an event's bodies and tree path at once (they miss at large N).
   void prefetch(std::size_t i) const {
@@ -188,6 +222,7 @@ class EventEngine {
   // Contact time of slot i: the gap closes at speed g = v_i - v_j. now: the time
   // of the collision being processed.
   double pair_time(std::size_t i, double now) const {
+    if (!live(i)) return EventTree::never;
     const std::size_t j = right(i);
     if (j == none) return EventTree::never;
     return contact_time(i, j, now);
@@ -209,6 +244,7 @@ class EventEngine {
     return g > 0 ? t : EventTree::never;
   }
 
+  // The collision at the top of the global queue.
   void collide(std::size_t i) {
     const std::size_t j = right(i);
     assert(j != none);
@@ -216,10 +252,14 @@ class EventEngine {
     now_ = t;
     if constexpr (Linked) {
       const double g = body_[i].v - body_[j].v;
-      last_x_ = meet(i, j, t);
       const CollisionKind kind = rule_.classify(g);
       ++count_[static_cast<int>(kind)];
-      if (kind == CollisionKind::merge) return merge(i, j);
+      if (kind == CollisionKind::merge) {
+        merge(i, j, t, dissipated_, last_x_);
+        --alive_;
+        return after_merge(i, j);
+      }
+      last_x_ = meet(i, j, t);
       dissipated_ += bounce(body_[i].v, body_[j].v, mass_[i], mass_[j], rule_.restitution(kind));
     } else {
       ++count_[collide_equal(i, j, t, dissipated_, last_x_)];
@@ -248,32 +288,36 @@ class EventEngine {
     dissipated += bounce_equal(v, u, m0_, sub ? 1.0 : rule_.r);
     return sub;
   }
-
-  // Body j joins body i (j = right(i)).
-  void merge(std::size_t i, std::size_t j) {
+  // Body j = right(i) joins body i at time t (Linked): velocities, masses and
+  // links; the slots are the caller's. Adds the energy lost to dissipated and
+  // stores the contact point in x.
+  void merge(std::size_t i, std::size_t j, double t, double& dissipated, double& x) {
+    x = meet(i, j, t);
     const Merged out = particles::merge(body_[i].v, body_[j].v, mass_[i], mass_[j]);
     body_[i].v = out.v;
     mass_[i] = out.m;
     mass_[j] = 0.0;
-    dissipated_ += out.dissipated;
-    const std::uint32_t k = next_[j];
+    dissipated += out.dissipated;
+    const std::uint32_t k = next_[j];  // i itself when i and j were alone on a ring
     next_[i] = k;
     if (k != none) prev_[k] = static_cast<std::uint32_t>(i);
-    --alive_;
+  }
+  // The global queue after body j joined body i.
+  void after_merge(std::size_t i, std::size_t j) {
     tree_.set(j, EventTree::never);
     tree_.refresh_path(j);
-    const std::size_t p = left(i);
-    refresh(p, i, none, false);
+    refresh(left(i), i, none, false);
   }
 
-  // Recomputes slots p (left of i, may be none), i and j (right of i, may be none).
-  // bounced: i and j just bounced, so they separate (g -> -r g <= 0): no event.
+  // Recomputes slots p (left of i, may be none), i and j (right of i, may be none)
+  // on the global queue. bounced: i and j just bounced, so they separate
+  // (g -> -r g <= 0): no event.
   void refresh(std::size_t p, std::size_t i, std::size_t j, bool bounced) {
     if (p != none) tree_.set(p, pair_time(p, now_));
     tree_.set(i, bounced ? EventTree::never : pair_time(i, now_));
     if (j != none) tree_.set(j, pair_time(j, now_));
-    if (p != none && j != none && p + 1 == i && i + 1 == j) return tree_.refresh_range(p, j);
-    if (p != none && p + 1 == i && j == none) return tree_.refresh_range(p, i);
+    if (p != none && j != none && p + 1 == i && i + 1 == j) return tree_.refresh(p, j);
+    if (p != none && p + 1 == i && j == none) return tree_.refresh(p, i);
     if (p != none) tree_.refresh_path(p);
     tree_.refresh_path(i);
     if (j != none) tree_.refresh_path(j);
@@ -286,9 +330,10 @@ class EventEngine {
   std::size_t alive_;
   double m0_ = 1.0;
   std::vector<Body, HugePageAllocator<Body>> body_;
-  std::vector<double> mass_;                // Linked only; 0 = merged away
-  std::vector<std::uint32_t> next_, prev_;  // Linked only
-  EventTree tree_;
+  SlotTimes slot_;                                       // contact time of every pair slot
+  std::vector<double, HugePageAllocator<double>> mass_;  // Linked only; 0 = merged away
+  std::vector<std::uint32_t, HugePageAllocator<std::uint32_t>> next_, prev_;  // Linked only
+  EventTree tree_;                                                            // the global queue, when used
   double now_ = 0.0;
   double window_start_ = 0.0;
   int stall_ = 0;            // consecutive collisions advancing time by <= step_scale_ max(1, t)

@@ -1,9 +1,9 @@
 #include "hull_model.hpp"
 
-#include <chrono>
 #include <optional>
 
 #include "recorder.hpp"
+#include "run_watch.hpp"
 #include "shockgas/core/sticky_hull.hpp"
 
 namespace shockgas::particles::detail {
@@ -26,10 +26,11 @@ Counters hull_counters(double initial_energy, const StickyHull& hull) {
 
 }  // namespace
 
-RunResult simulate_hull(const Bodies& initial, double L, bool ring, const ParticleParams& p) {
-  const auto start = std::chrono::steady_clock::now();
+RunResult simulate_hull(const Bodies& initial, double L, bool ring, const ParticleParams& p,
+                        const StateSink* sink) {
+  RunWatch watch{p, {}};
   const double energy = kinetic_energy(initial);
-  Recorder recorder(p, initial.size(), L, ring);
+  Recorder recorder(p, initial.size(), L, ring, sink);
   // Built from the bodies at the first stop, then advanced from its own clusters.
   std::optional<StickyHull> hull;
   auto reach = [&](double t) -> const StickyHull& {
@@ -39,14 +40,18 @@ RunResult simulate_hull(const Bodies& initial, double L, bool ring, const Partic
       hull->advance(t);
     return *hull;
   };
+  RunStop stop{StopReason::completed, p.t_end, 0.0};
   for (double t = recorder.next_stop(); t != Recorder::done; t = recorder.next_stop()) {
+    if (!watch.interruption()) {
+      stop = {StopReason::interrupted, hull ? hull->time() : 0.0, 0.0};
+      break;
+    }
     const StickyHull& h = reach(t);
     recorder.observe(t, chain_view(h), hull_counters(energy, h));
   }
-  const StickyHull& final_state = reach(p.t_end);
-  RunResult out = recorder.finish(chain_view(final_state), {StopReason::completed, p.t_end, 0.0},
-                                  hull_counters(energy, final_state));
-  out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const StickyHull& final_state = reach(stop.time);
+  RunResult out = recorder.finish(chain_view(final_state), stop, hull_counters(energy, final_state));
+  out.wall_seconds = watch.elapsed();
   return out;
 }
 

@@ -7,11 +7,15 @@
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
+#include "shockgas/particles/state_sink.hpp"
 
 namespace shockgas::particles::detail {
 
 // Collisions are merges: N - (number of clusters); dissipated energy: the
-// kinetic energy lost since t = 0. Inputs checked by the caller.
-RunResult simulate_hull(const Bodies& initial, double L, bool ring, const ParticleParams& p);
+// kinetic energy lost since t = 0. Inputs checked by the caller. With a sink,
+// the snapshots and the final state go to it. Interruption is polled between
+// stops: each stop is a safe point.
+RunResult simulate_hull(const Bodies& initial, double L, bool ring, const ParticleParams& p,
+                        const StateSink* sink = nullptr);
 
 }  // namespace shockgas::particles::detail

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <optional>
+
+#include "sorted_state.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -21,43 +22,7 @@ std::vector<double> frame_times(double t_end, std::size_t frames) {
   return t;
 }
 
-// Index of the first body whose wrapped position drops below its left neighbour's (0 if none).
-std::size_t seam_of(const std::vector<double>& x) {
-  for (std::size_t b = 1; b < x.size(); ++b)
-    if (x[b] < x[b - 1]) return b;
-  return 0;
-}
-
-// b reordered by a stable sort on x (rounding at the wrap can leave equal
-// neighbours misordered).
-Bodies stable_sorted(const Bodies& b) {
-  std::vector<std::size_t> order(b.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return b.x[i] < b.x[j]; });
-  Bodies out;
-  out.reserve(b.size());
-  for (std::size_t k : order) out.push_back(b.x[k], b.v[k], b.m[k]);
-  return out;
-}
-
 }  // namespace
-
-Bodies sorted_bodies(const ChainView& s, double L, bool ring) {
-  Bodies out;
-  out.reserve(s.size());
-  s.visit(
-      [&](const ChainChunk& c) {
-        for (std::size_t k = 0; k < c.size; ++k)
-          out.push_back(ring ? wrap_into(c.x[k], L) : c.x[k], c.v[k], c.m[k]);
-      },
-      Fields::all);
-  // The chain is sorted but for the ring's seam: rotate the seam to the front.
-  const auto start = static_cast<std::ptrdiff_t>(ring ? seam_of(out.x) : 0);
-  for (std::vector<double>* a : {&out.x, &out.v, &out.m})
-    std::rotate(a->begin(), a->begin() + start, a->end());
-  if (!std::is_sorted(out.x.begin(), out.x.end())) return stable_sorted(out);
-  return out;
-}
 
 std::vector<double> sample_times(double t_end, std::size_t samples) {
   if (samples == 1) return {t_end};
@@ -70,8 +35,8 @@ std::vector<double> sample_times(double t_end, std::size_t samples) {
   return t;
 }
 
-Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring)
-    : p_(p), n_(n), L_(L), ring_(ring) {
+Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, const StateSink* sink)
+    : p_(p), n_(n), L_(L), ring_(ring), sink_(sink) {
   samples_ = sample_times(p.t_end, p.samples);
   snapshots_ = sorted_copy(p.snapshots);
   if (p.spacetime) frames_ = frame_times(p.t_end, p.spacetime_frames);
@@ -96,10 +61,7 @@ void Recorder::observe(double t, const ChainView& s, const Counters& c) {
   for (; next_sample_ < samples_.size() && samples_[next_sample_] <= t; ++next_sample_) ++samples;
   for (; next_snapshot_ < snapshots_.size() && snapshots_[next_snapshot_] <= t; ++next_snapshot_) ++snapshots;
   if (samples > 0) sample(t, s, c, samples);
-  if (snapshots > 0) {
-    const Bodies sorted = sorted_bodies(s, L_, ring_);
-    for (std::size_t k = 0; k < snapshots; ++k) out_.snapshots.push_back({t, sorted});
-  }
+  if (snapshots > 0) snapshot(t, s, snapshots);
   for (; next_frame_ < frames_.size() && frames_[next_frame_] <= t; ++next_frame_) frame(t, s);
 }
 
@@ -128,6 +90,18 @@ void Recorder::sample(double t, const ChainView& s, const Counters& c, std::size
     out_.histogram.t.push_back(t);
     out_.histogram.density.insert(out_.histogram.density.end(), row.begin(), row.end());
   }
+}
+
+// The `copies` snapshots due at t (the last ones passed), into RunResult or the sink.
+void Recorder::snapshot(double t, const ChainView& s, std::size_t copies) {
+  if (!sink_) {
+    const Bodies sorted = sorted_bodies(s, L_, ring_);
+    for (std::size_t k = 0; k < copies; ++k) out_.snapshots.push_back({t, sorted});
+    return;
+  }
+  if (!sink_->snapshot) return;
+  const SortedState sorted(s, L_, ring_);
+  for (std::size_t k = next_snapshot_ - copies; k < next_snapshot_; ++k) sink_->snapshot(k, t, sorted);
 }
 
 // The streamed count, or (rounding left the chain out of order) the count of the sorted copy.
@@ -166,7 +140,10 @@ void Recorder::frame(double t, const ChainView& s) {
 double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }
 
 RunResult Recorder::finish(const ChainView& final_state, const RunStop& stop, const Counters& c) {
-  out_.final_state = sorted_bodies(final_state, L_, ring_);
+  if (!sink_)
+    out_.final_state = sorted_bodies(final_state, L_, ring_);
+  else if (sink_->final_state)
+    sink_->final_state(stop.time, SortedState(final_state, L_, ring_));
   out_.stop = stop;
   out_.stop.position =
       stop.reason == StopReason::collapse || stop.reason == StopReason::stall ? wrap(stop.position) : 0.0;

@@ -14,6 +14,7 @@
 #include "shockgas/particles/cluster_finder.hpp"
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
+#include "shockgas/particles/state_sink.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -23,9 +24,6 @@ struct Counters {
   double dissipated = 0;  // [mass length^2/time^2]
 };
 
-// The state as Bodies sorted by x, ring positions wrapped into [0, L).
-Bodies sorted_bodies(const ChainView& s, double L, bool ring);
-
 // Sample times: `samples` log-spaced times from 1 to t_end (from t_end / 1000 if
 // t_end <= 1); just t_end if samples = 1. The last is t_end exactly.
 std::vector<double> sample_times(double t_end, std::size_t samples);
@@ -34,19 +32,22 @@ class Recorder {
  public:
   static constexpr double done = std::numeric_limits<double>::infinity();
 
-  // n: original particles; L: ring length or line extent (for the cluster criteria).
-  Recorder(const ParticleParams& p, std::size_t n, double L, bool ring);
+  // n: original particles; L: ring length or line extent (for the cluster
+  // criteria). With a sink, the snapshots and the final state go to it, sorted
+  // (sorted_state.hpp), instead of into RunResult.
+  Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, const StateSink* sink = nullptr);
 
   // The next time the run must reach and observe; `done` after the last.
   double next_stop() const;
   // Observes every record due at t = next_stop(); each observable only if asked.
   void observe(double t, const ChainView& s, const Counters& c);
-  // Moves the records out, with the final state and how the run ended.
+  // Moves the records out, with the final state at stop.time and how the run ended.
   RunResult finish(const ChainView& final_state, const RunStop& stop, const Counters& c);
 
  private:
   void sample(double t, const ChainView& s, const Counters& c, std::size_t copies);
   std::size_t count_clusters(const ChainView& s, ClusterCounter& counter) const;
+  void snapshot(double t, const ChainView& s, std::size_t copies);
   void frame(double t, const ChainView& s);
   double wrap(double x) const;
 
@@ -54,6 +55,7 @@ class Recorder {
   std::size_t n_;
   double L_;
   bool ring_;
+  const StateSink* sink_;
   ClusterCriteria criteria_;
   std::vector<double> samples_, snapshots_, frames_;
   std::size_t next_sample_ = 0, next_snapshot_ = 0, next_frame_ = 0;

@@ -1,15 +1,16 @@
 #include "shockgas/particles/simulate.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <optional>
 
 #include "event_engine.hpp"
 #include "hull_model.hpp"
 #include "recorder.hpp"
+#include "run_watch.hpp"
+#include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/core/interrupt.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "window_scheduler.hpp"
 
 namespace shockgas::particles {
@@ -26,13 +27,13 @@ std::string to_string(StopReason reason) {
       return "wall_limit";
     case StopReason::stall:
       return "rounding_stall";
+    case StopReason::interrupted:
+      return "interrupted";
   }
   return "unknown";
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // Checks every body; the error message is built only for a failing one.
 void check_bodies(const Bodies& b, double L, bool ring) {
@@ -56,34 +57,6 @@ bool equal_masses(const Bodies& b) {
   return std::all_of(b.m.begin(), b.m.end(), [&](double m) { return m == b.m[0]; });
 }
 
-// Share of the work done at time t: collisions grow ~ t^(2/3) in the sticky regime.
-double work_fraction(double t, double t_end) {
-  return std::min(1.0, std::cbrt(t / t_end) * std::cbrt(t / t_end));
-}
-
-// Decides, every few thousand collisions, whether to go on: limits and progress.
-struct Watch {
-  const ParticleParams& p;
-  const ProgressCallback& progress;
-  Clock::time_point start = Clock::now();
-  double last_report = 0;
-  StopReason reason = StopReason::completed;
-
-  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
-  bool operator()(double t, std::uint64_t collisions) {
-    if (interrupt_requested() == InterruptMode::abort) return false;  // run_events throws Interrupted
-    if (p.max_collisions > 0 && collisions >= p.max_collisions)
-      return reason = StopReason::event_limit, false;
-    const double s = elapsed();
-    if (p.max_wall_seconds > 0 && s >= p.max_wall_seconds) return reason = StopReason::wall_limit, false;
-    if (progress && s - last_report >= 0.1) {
-      last_report = s;
-      progress(work_fraction(t, p.t_end), t);
-    }
-    return true;
-  }
-};
-
 // The engine's live bodies at time t as the recorder reads them: streamed, not copied.
 template <bool Linked>
 auto chain_view(const detail::EventEngine<Linked>& engine, double t) {
@@ -100,65 +73,141 @@ CollisionRule rule_of(const ParticleParams& p) {
   return {p.r, p.delta, p.subthreshold == Subthreshold::sticky};
 }
 
+// The engine's layout: links and masses for merges or unequal masses.
+bool linked(const CollisionRule& rule, bool equal_masses) { return rule.can_merge() || !equal_masses; }
+
 // Time windows over domains where they are exact (particles.schedule).
-bool windows_possible(const Bodies& initial, const ParticleParams& p) {
-  return equal_masses(initial) && detail::WindowScheduler::applicable(initial.size(), rule_of(p));
+bool windows_possible(std::size_t n, bool equal_masses, const ParticleParams& p) {
+  return detail::window_obstacle(n, equal_masses, rule_of(p)).empty();
 }
 
-template <bool Linked>
-RunResult run_events(const Bodies& initial, double L, bool ring, const ParticleParams& p,
-                     const ProgressCallback& progress) {
-  const CollisionRule rule = rule_of(p);
-  const bool windows = !Linked && p.schedule != Schedule::global && windows_possible(initial, p);
-  detail::Recorder recorder(p, initial.size(), L, ring);
-  detail::EventEngine<Linked> engine(initial, L, ring, rule, !windows);
-  std::optional<detail::WindowScheduler> scheduler;
-  if constexpr (!Linked)
-    if (windows) scheduler.emplace(engine);
-  Watch watch{p, progress};
-  auto advance = [&](double t) {
-    if constexpr (!Linked)
-      if (scheduler) return scheduler->run_until(t, watch);
-    return engine.run_until(t, watch);
-  };
+void check_schedule(std::size_t n, bool equal_masses, const ParticleParams& p) {
+  require(p.schedule != Schedule::windows || windows_possible(n, equal_masses, p), "particles.schedule",
+          name_of(p.schedule),
+          "\"windows\" only where every collision keeps the velocities in their range (equal masses "
+          "without merges, or merges only: r = 0 with delta = 0 or sticky sub-threshold), without "
+          "inelastic collapse (delta > 0 or r = 0, 1), N >= 1024; else \"auto\" or \"global\"");
+}
+
+std::size_t threads_of(const ParticleParams& p) { return p.threads > 0 ? p.threads : usable_cores(); }
+
+// How an engine run ended.
+RunStop stop_of(detail::EngineStop s, double now, double position, StopReason watched) {
+  switch (s) {
+    case detail::EngineStop::collapse:
+      return {StopReason::collapse, now, position};
+    case detail::EngineStop::stall:
+      return {StopReason::stall, now, position};
+    case detail::EngineStop::halted:
+      return {watched, now, 0.0};
+    case detail::EngineStop::reached:
+      break;
+  }
+  return {StopReason::completed, now, 0.0};
+}
+
+// What the summary says about the order of events.
+template <class Scheduler>
+RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_masses, const ParticleParams& p) {
+  RunSchedule s;
+  if (scheduler) {
+    s.threads = scheduler->threads();
+    s.order = scheduler->on_global_queue() ? "windows, then global" : "windows";
+    s.why_global = scheduler->why_global();
+  } else {
+    s.why_global = p.schedule == Schedule::global ? "particles.schedule = \"global\""
+                                                  : detail::window_obstacle(n, equal_masses, rule_of(p));
+  }
+  return s;
+}
+
+// One run of the engine from n bodies written by fill (see EventEngine).
+template <bool Linked, class Fill>
+RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
+                     const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink) {
+  const bool windows = p.schedule != Schedule::global && windows_possible(n, equal_masses, p);
+  detail::Recorder recorder(p, n, L, ring, sink);
+  detail::EventEngine<Linked> engine(n, L, ring, rule_of(p), fill);
+  std::optional<detail::WindowScheduler<Linked>> scheduler;
+  if (windows)
+    scheduler.emplace(engine, threads_of(p));
+  else
+    engine.use_global_queue();
+  detail::RunWatch watch{p, progress};
   RunStop stop;
   for (double t = recorder.next_stop(); t != detail::Recorder::done; t = recorder.next_stop()) {
-    const detail::EngineStop s = advance(t);
-    if (s == detail::EngineStop::collapse)
-      stop = {StopReason::collapse, engine.now(), engine.last_position()};
-    if (s == detail::EngineStop::stall) stop = {StopReason::stall, engine.now(), engine.last_position()};
-    if (s == detail::EngineStop::halted) stop = {watch.reason, engine.now(), 0.0};
+    const detail::EngineStop s = scheduler ? scheduler->run_until(t, watch) : engine.run_until(t, watch);
+    stop = stop_of(s, engine.now(), engine.last_position(), watch.reason);
     if (s != detail::EngineStop::reached) break;
     recorder.observe(t, chain_view(engine, t), counters(engine));
   }
-  throw_if_aborted();
-  if (stop.reason == StopReason::completed) stop.time = engine.now();
+  stop.time = engine.now();
   RunResult out = recorder.finish(chain_view(engine, engine.now()), stop, counters(engine));
   out.wall_seconds = watch.elapsed();
+  out.schedule = schedule_of(scheduler ? &*scheduler : nullptr, n, equal_masses, p);
   return out;
+}
+
+template <class Fill>
+RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
+                     const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink) {
+  if (linked(rule_of(p), equal_masses))
+    return run_events<true>(n, fill, L, ring, equal_masses, p, progress, sink);
+  return run_events<false>(n, fill, L, ring, equal_masses, p, progress, sink);
+}
+
+void check_params(std::size_t n, const ParticleParams& p) {
+  validate(p);
+  require(!p.spacetime || n <= 100000, "particles.spacetime", std::string("true"),
+          "a space-time record only for N <= 10^5");
+}
+
+// The engine from a stream of bodies; `bodies` the same bodies whole, if at hand.
+RunResult run_stream(InitialStream& stream, double L, const Bodies* bodies, const ParticleParams& p,
+                     const ProgressCallback& progress, const StateSink* sink) {
+  const bool equal = !bodies || equal_masses(*bodies);
+  check_schedule(stream.size(), equal, p);
+  auto fill = [&](std::size_t, std::size_t count, double* x, double* v, double* m) {
+    stream.next(count, x, v, m);
+  };
+  return run_events(stream.size(), fill, L, p.geometry == Geometry::ring, equal, p, progress, sink);
 }
 
 }  // namespace
 
 void check_schedule(const Bodies& initial, const ParticleParams& p) {
-  require(p.schedule != Schedule::windows || windows_possible(initial, p), "particles.schedule",
-          name_of(p.schedule),
-          "\"windows\" only for equal masses without merges or inelastic collapse (delta > 0 or r = 1), "
-          "N >= 1024; else \"auto\" or \"global\"");
+  check_schedule(initial.size(), equal_masses(initial), p);
 }
 
-RunResult simulate(const Bodies& initial, double L, const ParticleParams& p,
-                   const ProgressCallback& progress) {
-  validate(p);
+RunResult simulate(const Bodies& initial, double L, const ParticleParams& p, const ProgressCallback& progress,
+                   const StateSink* sink) {
+  check_params(initial.size(), p);
   const bool ring = p.geometry == Geometry::ring;
   check_bodies(initial, L, ring);
-  require(!p.spacetime || initial.size() <= 100000, "particles.spacetime", std::string("true"),
-          "a space-time record only for N <= 10^5");
-  if (p.solver == ParticleSolver::hull) return detail::simulate_hull(initial, L, ring, p);
-  check_schedule(initial, p);
-  const CollisionRule rule = rule_of(p);
-  if (rule.can_merge() || !equal_masses(initial)) return run_events<true>(initial, L, ring, p, progress);
-  return run_events<false>(initial, L, ring, p, progress);
+  if (p.solver == ParticleSolver::hull) return detail::simulate_hull(initial, L, ring, p, sink);
+  InitialStream stream(initial);
+  return run_stream(stream, L, &initial, p, progress, sink);
+}
+
+RunResult simulate(const InitialCondition& initial, std::uint64_t realization, const ParticleParams& p,
+                   const ProgressCallback& progress, const StateSink* sink) {
+  if (realization == 0 || !initial.depends_on_realization())
+    return simulate(initial.bodies(), initial.length(), p, progress, sink);
+  if (p.solver == ParticleSolver::hull)
+    return simulate(initial.realization(realization), initial.length(), p, progress, sink);
+  check_params(initial.params().N, p);
+  InitialStream stream = stream_realization(initial, realization);
+  return run_stream(stream, initial.length(), nullptr, p, progress, sink);
+}
+
+RunResult simulate(const InitialParams& initial, std::uint64_t realization, const ParticleParams& p,
+                   const ProgressCallback& progress, const StateSink* sink) {
+  if (!InitialStream::streamable(initial) || p.solver == ParticleSolver::hull)
+    return simulate(InitialCondition(initial), realization, p, progress, sink);
+  validate(initial);
+  check_params(initial.N, p);
+  InitialStream stream(initial, realization);
+  return run_stream(stream, domain_length(initial), nullptr, p, progress, sink);
 }
 
 }  // namespace shockgas::particles

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
+#include "event_tree.hpp"
 #include "shockgas/core/random.hpp"
-#include "shockgas/particles/event_tree.hpp"
 
 namespace shockgas::particles {
 namespace {
@@ -27,7 +27,7 @@ TEST(EventTree, TopIsTheMinimumAfterRandomUpdates) {
         tree.set(i, t[i]);
       }
       if (step % 2) {
-        tree.refresh_range(lo, hi);
+        tree.refresh(lo, hi);
       } else {
         for (std::size_t i = lo; i <= hi; ++i) tree.refresh_path(i);
       }

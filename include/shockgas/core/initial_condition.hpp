@@ -81,8 +81,11 @@ class InitialCondition {
   // make_initial_bodies). Sorted, positions in [0, length).
   const Bodies& bodies() const { return field_.from_bodies() ? field_.bodies : expression_bodies_; }
   // Realization k >= 1 (k = 0: a copy of bodies()). Data from a file or from
-  // expressions do not depend on k.
+  // expressions do not depend on k. To read one without a whole copy:
+  // stream_realization (core/initial_stream.hpp).
   Bodies realization(std::uint64_t k) const;
+  // Whether realizations differ (random velocities), or all equal bodies().
+  bool depends_on_realization() const;
   // The continuum's view of realization 0: expressions, or bodies() as point masses.
   const InitialField& field() const { return field_; }
 

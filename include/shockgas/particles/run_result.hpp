@@ -68,13 +68,25 @@ enum class StopReason : std::uint8_t {
   wall_limit,   // params.max_wall_seconds reached
   stall,        // no collapse is possible (delta > 0, or r = 0 or 1), yet time stopped
                 // advancing through rounding (2^24 collisions at one time); not physics
+  interrupted,  // a checkpoint was requested (core/interrupt.hpp): stopped at a safe point
 };
 std::string to_string(StopReason reason);
 
+// A run stopped by `interrupted` ends at a safe point: a state the uninterrupted
+// run passes through as well (the event engine: the end of a time window or
+// sub-window, or a check point of the global queue), every record up to
+// stop.time kept; run on from there, it gives the uninterrupted run's results.
 struct RunStop {
   StopReason reason = StopReason::completed;
   double time = 0;      // simulated time reached [time] (collapse: the collapse time)
   double position = 0;  // collapse or stall: where (ring: in [0, L)); else 0 [length]
+};
+
+// How the event engine ordered the collisions (particles/window_scheduler.hpp).
+struct RunSchedule {
+  std::string order = "global";  // "windows", "global", or "windows, then global"
+  std::string why_global;        // when not (only) windows: why, and what windows would need
+  std::size_t threads = 1;       // threads that ran the windows
 };
 
 struct RunResult {
@@ -86,6 +98,7 @@ struct RunResult {
   RunStop stop;
   std::uint64_t collisions = 0;  // total collisions (hull solver: merges)
   double wall_seconds = 0;       // wall-clock time of the run [s]
+  RunSchedule schedule;          // event solver only
 };
 
 }  // namespace shockgas::particles

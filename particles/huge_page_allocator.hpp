@@ -1,7 +1,8 @@
 #pragma once
-// Allocator for the engine's large arrays: blocks of 2 MiB or more are aligned to
-// 2 MiB and offered to the kernel for transparent huge pages (madvise), so that
-// the random accesses of the event loop at N ~ 10^6 do not also miss the TLB.
+// Allocator for the engine's large arrays (private to particles/): blocks of
+// 2 MiB or more are aligned to 2 MiB and offered to the kernel for transparent
+// huge pages (madvise), so that the random accesses of the event loop at
+// N ~ 10^6 do not also miss the TLB.
 // Smaller blocks, or systems without madvise, get ordinary memory.
 #include <cstddef>
 #include <cstdlib>

@@ -1,0 +1,61 @@
+#include "shockgas/core/initial_stream.hpp"
+
+#include <algorithm>
+
+namespace shockgas {
+
+bool InitialStream::streamable(const InitialParams& p) {
+  return p.velocities == Velocities::uniform || p.velocities == Velocities::gaussian;
+}
+
+InitialStream::InitialStream(const InitialParams& p, std::uint64_t realization)
+    : n_(p.N),
+      length_(domain_length(p)),
+      amplitude_(p.amplitude),
+      lattice_(p.positions == Positions::lattice),
+      gaussian_(p.velocities == Velocities::gaussian),
+      rng_(realization_seed(p.seed, realization)) {
+  if (!lattice_) {
+    positions_.resize(n_);
+    for (double& x : positions_) x = rng_.uniform(0.0, length_);
+    std::sort(positions_.begin(), positions_.end());
+  }
+  if (p.remove_mean) {
+    // As subtract_mean: momentum summed in order over unit masses, then / N.
+    Rng replay = rng_;
+    double momentum = 0;
+    for (std::size_t i = 0; i < n_; ++i) momentum += 1.0 * draw_velocity(replay);
+    mean_ = momentum / static_cast<double>(n_);
+  }
+}
+
+InitialStream::InitialStream(const Bodies& held) : held_(&held), n_(held.size()) {}
+
+double InitialStream::draw_velocity(Rng& rng) const {
+  return gaussian_ ? amplitude_ * rng.normal() : rng.uniform(-amplitude_, amplitude_);
+}
+
+void InitialStream::next(std::size_t count, double* x, double* v, double* m) {
+  if (held_) {
+    std::copy_n(held_->x.begin() + next_, count, x);
+    std::copy_n(held_->v.begin() + next_, count, v);
+    std::copy_n(held_->m.begin() + next_, count, m);
+    next_ += count;
+    return;
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = next_ + k;
+    x[k] = lattice_ ? (i + 0.5) * length_ / n_ : positions_[i];
+    v[k] = draw_velocity(rng_) - mean_;
+    m[k] = 1.0;
+  }
+  next_ += count;
+  if (next_ == n_) positions_ = std::vector<double>();  // the memory goes back now
+}
+
+InitialStream stream_realization(const InitialCondition& initial, std::uint64_t k) {
+  if (k == 0 || !initial.depends_on_realization()) return InitialStream(initial.bodies());
+  return InitialStream(initial.params(), k);
+}
+
+}  // namespace shockgas

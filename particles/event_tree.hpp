@@ -1,0 +1,350 @@
+#pragma once
+// Event queue of the particle engine (private to particles/): a tournament
+// (winner) tree over a run of pair slots.
+//
+// Contract:
+//  * SlotTimes holds one predicted event time per pair slot (pair i = body i and
+//    its right neighbour), +inf for "no event". It is the one copy of the times:
+//    the global queue and the window domains all read and write it.
+//  * An EventTree ranks the slots first..last of a SlotTimes (on a ring the run
+//    may wrap past the last slot to slot 0: last < first). Several trees may
+//    rank disjoint runs of the same SlotTimes at once, from different threads.
+//  * set(i, t) replaces slot i's time; the tree is consistent only after the
+//    matching refresh (refresh_path(i), or refresh(a, b) for a slot a and the
+//    slot b after it, covering every slot set since the last refresh).
+//  * top() is a slot with the smallest time, O(1). Of tied slots it is the
+//    earlier one within a block and, above, the one the refreshes left in place:
+//    the same for the same sequence of operations.
+//
+// Layout. The times are stored in blocks of 8 (one cache line); the tree is over
+// the blocks of the run: the implicit heap of the bottom-up segment tree, leaves
+// at nb..2nb-1 (nb blocks), node k < nb the winner of nodes 2k and 2k+1, so node
+// 1 is the winner for any nb (no padding to a power of two, which would put every
+// leaf at the deepest level). A node stores the winner's time and slot (12 bytes),
+// so a comparison never leaves the path being refreshed. A collision changes at
+// most three adjacent slots, nearly always in one block: one line of times, then
+// one path to the root. The tree is 3 bytes per slot (8 for the times), so at
+// N = 10^6 its upper levels stay in cache. A run's first and last blocks may be
+// shared with the neighbouring runs: their winners read only the run's own slots.
+#include <algorithm>
+#include <bit>
+#include <cassert>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "slot_times.hpp"
+
+namespace shockgas::particles {
+
+class EventTree {
+ public:
+  static constexpr double never = SlotTimes::never;
+  static constexpr std::size_t block = SlotTimes::block;
+  // Node storage of a tree of nb blocks: 2 nb keys and 2 nb slots.
+  static constexpr std::size_t nodes(std::size_t nb) { return 2 * nb; }
+  using Key = std::int64_t;
+
+  EventTree() = default;
+  // A standalone tree over n slots of its own, all at +inf.
+  explicit EventTree(std::size_t n) { reset(n); }
+  EventTree(const EventTree&) = delete;
+  EventTree& operator=(const EventTree&) = delete;
+  EventTree(EventTree&& other) noexcept { *this = std::move(other); }
+  EventTree& operator=(EventTree&& other) noexcept {
+    const bool own_times = other.times_ == &other.own_times_;
+    const bool own_nodes = other.key_ == other.own_key_.data();
+    times_ = other.times_, time_ = other.time_, first_ = other.first_, last_ = other.last_;
+    b0_ = other.b0_, all_blocks_ = other.all_blocks_, nb_ = other.nb_;
+    head_partial_ = other.head_partial_, tail_partial_ = other.tail_partial_;
+    hint_ = other.hint_, hinting_ = other.hinting_, key_ = other.key_, win_ = other.win_;
+    own_key_ = std::move(other.own_key_), own_win_ = std::move(other.own_win_);
+    own_times_ = std::move(other.own_times_);
+    if (own_times) times_ = &own_times_, time_ = own_times_.data();  // the storage moved, its owner did not
+    if (own_nodes) key_ = own_key_.data(), win_ = own_win_.data();
+    return *this;
+  }
+
+  // Standalone: n slots of its own at +inf.
+  void reset(std::size_t n) {
+    own_times_.reset(n);
+    attach(own_times_, 0, n - 1);
+  }
+  // Ranks slots first..last of times (wrapping past the end if last < first),
+  // as they are now; O(length). Nodes in storage of its own, reused.
+  void attach(SlotTimes& times, std::size_t first, std::size_t last) {
+    const std::size_t nb = blocks_of(times, first, last);
+    own_key_.resize(nodes(nb));
+    own_win_.resize(nodes(nb));
+    attach(times, first, last, own_key_.data(), own_win_.data());
+  }
+  // The same with node storage from the caller: nodes(number of blocks) each.
+  void attach(SlotTimes& times, std::size_t first, std::size_t last, Key* keys, std::uint32_t* wins) {
+    assert(first < times.size() && last < times.size() && times.size() < (std::size_t{1} << 32));
+    times_ = &times;
+    time_ = times.data();
+    first_ = first;
+    last_ = last;
+    b0_ = first / block;
+    all_blocks_ = times.blocks();
+    nb_ = blocks_of(times, first, last);
+    head_partial_ = first % block != 0;
+    tail_partial_ = (last + 1) % block != 0 && last + 1 != times.size();
+    hinting_ = nb_ * block >= hint_slots;
+    hint_ = static_cast<std::uint32_t>(first);
+    key_ = keys;
+    win_ = wins;
+    rebuild();
+  }
+  // Number of blocks of the run first..last of times.
+  static std::size_t blocks_of(const SlotTimes& times, std::size_t first, std::size_t last) {
+    const std::size_t a = first / block, b = last / block;
+    return first <= last ? b - a + 1 : times.blocks() - a + b + 1;
+  }
+
+  // Recomputes every block and internal node, O(length): after many set() calls.
+  void rebuild() {
+    for (std::size_t p = 0; p < nb_; ++p) put(nb_ + p, block_winner(p, block_at(p)));
+    for (std::size_t k = nb_ - 1; k >= 1; --k) pull(k);
+  }
+
+  // The node arrays (for prefetching): nodes() keys and slots.
+  const Key* node_keys() const { return key_; }
+  const std::uint32_t* node_slots() const { return win_; }
+  std::size_t node_count() const { return nodes(nb_); }
+  std::size_t first() const { return first_; }
+  std::size_t last() const { return last_; }
+  double time(std::size_t slot) const { return time_[slot]; }
+  std::size_t top() const { return win_[1]; }
+  double top_time() const { return std::bit_cast<double>(key_[1]); }
+
+  void set(std::size_t slot, double t) { time_[slot] = t; }
+  // With hinting() (trees of hint_slots slots or more, too large for the caches):
+  // a slot likely to hold the second-earliest time after the last refresh (see
+  // climb), for prefetching only, never relied on. Otherwise the first slot.
+  static constexpr std::size_t hint_slots = std::size_t{1} << 18;
+  bool hinting() const { return hinting_; }
+  std::size_t hint() const { return hint_; }
+
+  // Refreshes the path of one slot.
+  void refresh_path(std::size_t slot) { refresh_block(slot / block); }
+  // Refreshes slots a and b, where b is a or a slot after it in the run and the
+  // slots set since the last refresh lie between them (b - a small).
+  [[gnu::always_inline]] void refresh(std::size_t a, std::size_t b) {
+    const std::size_t ba = a / block, bb = b / block;
+    if (ba == bb) [[likely]]
+      return refresh_block(ba);
+    refresh_two(position(ba), position(bb));
+  }
+  // Hints the cache about a slot's block and the deep part of its path.
+  void prefetch_path(std::size_t slot) const {
+    prefetch_line(time_ + slot);
+    for (std::size_t k = nb_ + position(slot / block); k >= 4096; k >>= 1)
+      prefetch_line(&key_[k]), prefetch_line(&win_[k]);
+  }
+
+ private:
+  // Event times are >= 0 (or +inf), and for such doubles the order of their bit
+  // patterns read as signed integers is the order of the numbers: an integer
+  // compare and a conditional move take 2 cycles against 4 for a floating-point
+  // minimum, which matters on the climb's serial chain. (A NaN would sort after
+  // +inf: never.)
+  static Key key_of(double t) { return std::bit_cast<Key>(t); }
+  // (t, slot) := (u, at) if u < t: compare and two conditional moves. Written as
+  // assembly on x86-64 because GCC 12 turns the equivalent ternaries into
+  // branches, which mispredict half the time here. Ties keep (t, slot).
+  static void take_earlier(Key& t, std::uint32_t& slot, Key u, std::uint32_t at) {
+#if defined(__x86_64__)
+    asm("cmpq %[u], %[t]\n\tcmovgq %[u], %[t]\n\tcmovgl %[at], %[slot]"
+        : [t] "+r"(t), [slot] "+r"(slot)
+        : [u] "r"(u), [at] "r"(at)
+        : "cc");
+#else
+    const bool take = u < t;
+    slot = take ? at : slot;
+    t = take ? u : t;
+#endif
+  }
+  struct Node {
+    Key t;               // winner's event time, as key_of
+    std::uint32_t slot;  // winner's slot
+  };
+
+  // Leaf position of block b in the run.
+  std::size_t position(std::size_t b) const { return b >= b0_ ? b - b0_ : b + all_blocks_ - b0_; }
+  std::size_t block_at(std::size_t p) const {
+    const std::size_t b = b0_ + p;
+    return b < all_blocks_ ? b : b - all_blocks_;
+  }
+
+  // The earliest slot of block b, at position p: a tournament of depth 3 over
+  // one cache line.
+  [[gnu::always_inline]] Node block_winner(std::size_t p, std::size_t b) const {
+    if (p - 1 >= nb_ - 2) [[unlikely]]  // the first or the last (or nb <= 2)
+      if ((p == 0 && head_partial_) || (p == nb_ - 1 && tail_partial_)) return partial_winner(p);
+    const double* t = time_ + b * block;
+#if defined(__SSE2__)
+    // The smallest of the 8 in three packed minima, then its first slot by an
+    // equality mask: the same winner as the pairwise tournament (the earliest
+    // slot of the tied ones), in fewer instructions. Times are never NaN.
+    const __m128d a = _mm_load_pd(t), c = _mm_load_pd(t + 2), e = _mm_load_pd(t + 4), g = _mm_load_pd(t + 6);
+    const __m128d m2 = _mm_min_pd(_mm_min_pd(a, c), _mm_min_pd(e, g));
+    const __m128d m1 = _mm_min_sd(m2, _mm_unpackhi_pd(m2, m2));
+    const __m128d m = _mm_unpacklo_pd(m1, m1);
+    const unsigned mask = static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(a, m))) |
+                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(c, m))) << 2 |
+                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(e, m))) << 4 |
+                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(g, m))) << 6;
+    return Node{key_of(_mm_cvtsd_f64(m1)), static_cast<std::uint32_t>(b * block) + std::countr_zero(mask)};
+#else
+    Key k0 = key_of(t[0]), k1 = key_of(t[1]), k2 = key_of(t[2]), k3 = key_of(t[3]);
+    Key k4 = key_of(t[4]), k5 = key_of(t[5]), k6 = key_of(t[6]), k7 = key_of(t[7]);
+    std::uint32_t a0 = 0, a2 = 2, a4 = 4, a6 = 6;
+    take_earlier(k0, a0, k1, 1);
+    take_earlier(k2, a2, k3, 3);
+    take_earlier(k4, a4, k5, 5);
+    take_earlier(k6, a6, k7, 7);
+    take_earlier(k0, a0, k2, a2);
+    take_earlier(k4, a4, k6, a6);
+    take_earlier(k0, a0, k4, a4);
+    return Node{k0, static_cast<std::uint32_t>(b * block) + a0};
+#endif
+  }
+  // A first or last block shared with a neighbouring run: only the run's slots
+  // are read (another thread may be writing the others).
+  [[gnu::noinline, gnu::cold]] Node partial_winner(std::size_t p) const {
+    const std::size_t b = block_at(p);
+    std::size_t lo = b * block, hi = lo + block;  // slots lo..hi-1 of the run
+    if (p == 0 && head_partial_) lo = first_;
+    if (p == nb_ - 1 && tail_partial_) hi = last_ + 1;
+    Node best{key_of(never), static_cast<std::uint32_t>(lo)};
+    for (std::size_t s = lo; s < hi; ++s) take_earlier(best.t, best.slot, key_of(time_[s]), s);
+    return best;
+  }
+
+  void put(std::size_t k, const Node& node) {
+    key_[k] = node.t;
+    win_[k] = node.slot;
+  }
+
+  // Block b and its path to the root.
+  [[gnu::always_inline]] void refresh_block(std::size_t b) {
+    const std::size_t p = position(b);
+    put(nb_ + p, block_winner(p, b));
+    climb(nb_ + p);
+  }
+  // Adjacent leaves at positions a and b = a + 1 and their paths to the root. A
+  // leaf whose winner did not change leaves its path as it was below the joint
+  // (usually the block of the slot that did not collide: one climb from the
+  // other). Else both paths in step up to where they join (on average two levels
+  // up), then one climb; leaves at two depths (rare) take a climb each, the
+  // second redoing the common part with both leaves new.
+  [[gnu::noinline]] void refresh_two(std::size_t a, std::size_t b) {
+    std::size_t ka = nb_ + a, kb = nb_ + b;
+    const Node wa = block_winner(a, block_at(a)), wb = block_winner(b, block_at(b));
+    const bool same_a = wa.t == key_[ka] && wa.slot == win_[ka],
+               same_b = wb.t == key_[kb] && wb.slot == win_[kb];
+    put(ka, wa);
+    put(kb, wb);
+    if (same_a) return climb(kb);
+    if (same_b) return climb(ka);
+    if (std::bit_width(ka) != std::bit_width(kb)) {
+      climb(ka);
+      return climb(kb);
+    }
+    for (; (ka ^ 1) != kb; ka >>= 1, kb >>= 1) pull(ka >> 1), pull(kb >> 1);
+    climb(ka);
+  }
+
+  // Refreshes the ancestors of node k (k itself up to date). The winner so far
+  // stays in registers; only the siblings are loaded, and their addresses do not
+  // depend on the comparisons, so the loads overlap. Selects by conditional
+  // moves: no branch to mispredict.
+  //
+  // On the way it keeps the runner-up among node k and the siblings (the winners
+  // of the subtrees that partition the rest of the tree): the slot of the event
+  // after the next one whenever that lies outside the next one's subtree (for
+  // random positions, with probability 1 - sum_j 4^-j = 2/3). hint() serves it
+  // for prefetching.
+  [[gnu::always_inline]] void climb(std::size_t k) { hinting_ ? climb<true>(k) : climb_unrolled(k); }
+  // The climb without the hint (the trees of a window's domains), unrolled: one
+  // case per level, entered at node k's depth, no loop counter.
+  [[gnu::always_inline]] void climb_unrolled(std::size_t k) {
+    Key t = key_[k];
+    std::uint32_t slot = win_[k];
+    auto level = [&]() __attribute__((always_inline)) {
+      const Key sib_t = key_[k ^ 1];
+      const std::uint32_t sib_slot = win_[k ^ 1];
+      take_earlier(t, slot, sib_t, sib_slot);
+      k >>= 1;
+      key_[k] = t;
+      win_[k] = slot;
+    };
+    static_assert(sizeof(std::size_t) == 8);
+    switch (std::bit_width(k) - 1) {  // levels above node k; the tree has fewer than 2^31 nodes
+      // clang-format off
+      case 30: level(); [[fallthrough]]; case 29: level(); [[fallthrough]]; case 28: level(); [[fallthrough]];
+      case 27: level(); [[fallthrough]]; case 26: level(); [[fallthrough]]; case 25: level(); [[fallthrough]];
+      case 24: level(); [[fallthrough]]; case 23: level(); [[fallthrough]]; case 22: level(); [[fallthrough]];
+      case 21: level(); [[fallthrough]]; case 20: level(); [[fallthrough]]; case 19: level(); [[fallthrough]];
+      case 18: level(); [[fallthrough]]; case 17: level(); [[fallthrough]]; case 16: level(); [[fallthrough]];
+      case 15: level(); [[fallthrough]]; case 14: level(); [[fallthrough]]; case 13: level(); [[fallthrough]];
+      case 12: level(); [[fallthrough]]; case 11: level(); [[fallthrough]]; case 10: level(); [[fallthrough]];
+      case 9: level(); [[fallthrough]]; case 8: level(); [[fallthrough]]; case 7: level(); [[fallthrough]];
+      case 6: level(); [[fallthrough]]; case 5: level(); [[fallthrough]]; case 4: level(); [[fallthrough]];
+      case 3: level(); [[fallthrough]]; case 2: level(); [[fallthrough]]; case 1: level(); [[fallthrough]];
+      default: break;
+        // clang-format on
+    }
+  }
+  template <bool Hint>
+  void climb(std::size_t k) {
+    Key t = key_[k];
+    std::uint32_t slot = win_[k];
+    Key t2 = key_of(never);
+    std::uint32_t slot2 = slot;
+    for (; k > 1; k >>= 1) {
+      const Key sib_t = key_[k ^ 1];
+      const std::uint32_t sib_slot = win_[k ^ 1];
+      const Key old_t = t;
+      const std::uint32_t old_slot = slot;
+      take_earlier(t, slot, sib_t, sib_slot);
+      if constexpr (Hint) {
+        // The loser of this match (the one of the two not kept) may be the runner-up.
+        take_earlier(t2, slot2, old_t ^ sib_t ^ t, old_slot ^ sib_slot ^ slot);
+      }
+      key_[k >> 1] = t;
+      win_[k >> 1] = slot;
+    }
+    if constexpr (Hint) hint_ = slot2;
+  }
+  // Node k := the earlier of its children (branch-free: select by index; ties go left).
+  void pull(std::size_t k) {
+    const std::size_t c = 2 * k;
+    const std::size_t w = c + (key_[c + 1] < key_[c]);
+    key_[k] = key_[w];
+    win_[k] = win_[w];
+  }
+
+  SlotTimes* times_ = nullptr;
+  double* time_ = nullptr;  // times_->data()
+  std::size_t first_ = 0, last_ = 0;
+  std::size_t b0_ = 0, all_blocks_ = 0, nb_ = 0;
+  bool head_partial_ = false, tail_partial_ = false;
+  std::uint32_t hint_ = 0;
+  bool hinting_ = false;
+  // Node k: its winner's key and slot, in two arrays (index arithmetic the
+  // addressing modes do for free); siblings share cache lines.
+  Key* key_ = nullptr;
+  std::uint32_t* win_ = nullptr;
+  std::vector<Key, HugePageAllocator<Key>> own_key_;
+  std::vector<std::uint32_t, HugePageAllocator<std::uint32_t>> own_win_;
+  SlotTimes own_times_;
+};
+
+}  // namespace shockgas::particles

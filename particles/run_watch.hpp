@@ -1,0 +1,63 @@
+#pragma once
+// Whether a run goes on (private to particles/): its limits, its progress
+// reports and interruption requests (core/interrupt.hpp), asked at the engine's
+// check points.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+
+#include "shockgas/core/interrupt.hpp"
+#include "shockgas/core/progress.hpp"
+#include "shockgas/particles/params.hpp"
+#include "shockgas/particles/run_result.hpp"
+
+namespace shockgas::particles::detail {
+
+// Share of the work done at time t: collisions grow ~ t^(2/3) in the sticky regime.
+inline double work_fraction(double t, double t_end) {
+  return std::min(1.0, std::cbrt(t / t_end) * std::cbrt(t / t_end));
+}
+
+// operator() at points where the collision count is exact (the same for any
+// number of threads) and the state is a safe point (the end of a time window
+// or sub-window, or a check point of the global queue); tick() between them,
+// from one thread, for the wall clock, progress and interruption only. Both
+// return false to stop at the next safe point (reason says why) and throw
+// Interrupted on an abort request.
+struct RunWatch {
+  using Clock = std::chrono::steady_clock;
+  const ParticleParams& p;
+  const ProgressCallback& progress;
+  Clock::time_point start = Clock::now();
+  double last_report = 0;
+  StopReason reason = StopReason::completed;
+
+  double elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
+  bool operator()(double t, std::uint64_t collisions) {
+    if (p.max_collisions > 0 && collisions >= p.max_collisions)
+      return reason = StopReason::event_limit, false;
+    return tick(t);
+  }
+  bool tick(double t) {
+    if (!interruption()) return false;
+    const double s = elapsed();
+    if (p.max_wall_seconds > 0 && s >= p.max_wall_seconds) return reason = StopReason::wall_limit, false;
+    if (progress && s - last_report >= 0.1) {
+      last_report = s;
+      progress(work_fraction(t, p.t_end), t);
+    }
+    return true;
+  }
+  // False on a checkpoint request; throws Interrupted on an abort request.
+  bool interruption() {
+    const InterruptMode mode = interrupt_requested();
+    if (mode == InterruptMode::none) [[likely]]
+      return true;
+    throw_if_aborted();
+    reason = StopReason::interrupted;
+    return false;
+  }
+};
+
+}  // namespace shockgas::particles::detail

@@ -1,0 +1,61 @@
+#pragma once
+// The predicted event times of the pair slots (private to particles/), in cache
+// lines of 8, and the cache hints the engine uses on them.
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "huge_page_allocator.hpp"
+
+namespace shockgas::particles {
+
+// Starts loading the cache line at p (any address; it is never dereferenced).
+// Inline assembly, because GCC 12 at -O2 finds a function whose only effect is
+// __builtin_prefetch "pure" and deletes the calls to it.
+inline void prefetch_line(const void* p) {
+#if defined(__x86_64__) || defined(__i386__)
+  asm volatile("prefetcht0 (%0)" : : "r"(p));
+#else
+  __builtin_prefetch(p, 1);
+#endif
+}
+// The same into the second-level cache only: for data needed in a while, which
+// should not push the data in use out of the first level.
+inline void prefetch_line_l2(const void* p) {
+#if defined(__x86_64__) || defined(__i386__)
+  asm volatile("prefetcht1 (%0)" : : "r"(p));
+#else
+  __builtin_prefetch(p, 1, 2);
+#endif
+}
+
+// The event times of n pair slots, in cache lines of 8; the padding after slot
+// n - 1 stays at +inf.
+class SlotTimes {
+ public:
+  static constexpr double never = std::numeric_limits<double>::infinity();
+  static constexpr std::size_t block = 8;  // slot times per cache line
+
+  // n slots, all at +inf.
+  void reset(std::size_t n) {
+    n_ = n;
+    lines_.assign((n + block - 1) / block, Line{});
+    for (Line& line : lines_) std::fill(line.t, line.t + block, never);
+  }
+  std::size_t size() const { return n_; }
+  std::size_t blocks() const { return lines_.size(); }
+  double& operator[](std::size_t i) { return lines_[i / block].t[i % block]; }
+  double operator[](std::size_t i) const { return lines_[i / block].t[i % block]; }
+  const double* line(std::size_t b) const { return lines_[b].t; }
+  double* data() { return lines_.empty() ? nullptr : lines_[0].t; }
+
+ private:
+  struct alignas(64) Line {
+    double t[block];
+  };
+  std::vector<Line, HugePageAllocator<Line>> lines_;
+  std::size_t n_ = 0;
+};
+
+}  // namespace shockgas::particles

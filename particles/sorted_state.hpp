@@ -1,0 +1,59 @@
+#pragma once
+// A chain's state sorted by x (private to particles/): what the recorder keeps
+// (Bodies) and what a StateSink reads (in chunks, straight from the model).
+//
+// In chain order the positions never decrease (the engine's are unrolled, the
+// hull's too), so on a ring the wrapped positions rise to the seam, where they
+// drop by about L, and rise again: the order by x starts at the seam. Rounding
+// at the wrap can leave equal neighbours misordered; then (rarely) the state is
+// sorted through a copy by a stable sort of the order from the seam. On a line
+// the order is the chain's, stably sorted where rounding left it out of order.
+#include <cstddef>
+
+#include "chain_view.hpp"
+#include "shockgas/core/bodies.hpp"
+#include "shockgas/particles/state_sink.hpp"
+
+namespace shockgas::particles::detail {
+
+// The seam of wrapped positions fed in chain order, and whether the order from
+// the seam is sorted.
+class SeamSearch {
+ public:
+  explicit SeamSearch(bool ring) : ring_(ring) {}
+  void add(double w) {
+    if (k_ == 0) first_ = w;
+    if (k_ > 0 && w < last_ && drops_++ == 0 && ring_) seam_ = k_;
+    last_ = w;
+    ++k_;
+  }
+  std::size_t seam() const { return seam_; }
+  bool sorted() const { return drops_ == 0 || (ring_ && drops_ == 1 && last_ <= first_); }
+
+ private:
+  bool ring_;
+  std::size_t k_ = 0, drops_ = 0, seam_ = 0;
+  double first_ = 0, last_ = 0;
+};
+
+// The state as Bodies sorted by x, ring positions wrapped into [0, L).
+Bodies sorted_bodies(const ChainView& s, double L, bool ring);
+
+// The state as a StateReader: two passes over the view per read (from the
+// seam, then up to it) in chunks of ChainChunk::capacity; the view must stay
+// valid while the reader is used.
+class SortedState final : public StateReader {
+ public:
+  SortedState(const ChainView& view, double L, bool ring);
+  std::size_t size() const override { return view_.size(); }
+  void read(const Chunk& chunk) const override;
+
+ private:
+  const ChainView& view_;
+  double L_;
+  bool ring_;
+  std::size_t seam_ = 0;
+  bool sorted_ = true;
+};
+
+}  // namespace shockgas::particles::detail

@@ -1,0 +1,88 @@
+#pragma once
+// A fixed team of threads for the stages of one realization (private to
+// particles/): run(job) calls job(k) once on each member k = 0 .. size() - 1 (member
+// 0 is the calling thread) and returns when all have finished. The members wait
+// between stages, so a stage costs no thread creation. What a stage computes must
+// not depend on which member does which part (the callers claim work by index).
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace shockgas::particles::detail {
+
+class ThreadTeam {
+ public:
+  explicit ThreadTeam(std::size_t size) {
+    for (std::size_t k = 1; k < size; ++k) members_.emplace_back([this, k] { serve(k); });
+  }
+  ThreadTeam(const ThreadTeam&) = delete;
+  ThreadTeam& operator=(const ThreadTeam&) = delete;
+  ~ThreadTeam() {
+    {
+      std::lock_guard lock(mutex_);
+      closing_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : members_) t.join();
+  }
+
+  std::size_t size() const { return members_.size() + 1; }
+
+  // Runs job(k) on every member; rethrows the first exception any member threw.
+  void run(const std::function<void(std::size_t)>& job) {
+    if (members_.empty()) return job(0);
+    {
+      std::lock_guard lock(mutex_);
+      job_ = &job;
+      pending_ = members_.size();
+      error_ = nullptr;
+      ++stage_;
+    }
+    wake_.notify_all();
+    call(job, 0);
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [this] { return pending_ == 0; });
+    job_ = nullptr;
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  void call(const std::function<void(std::size_t)>& job, std::size_t k) {
+    try {
+      job(k);
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      if (!error_) error_ = std::current_exception();
+    }
+  }
+  void serve(std::size_t k) {
+    std::size_t seen = 0;
+    for (;;) {
+      const std::function<void(std::size_t)>* job = nullptr;
+      {
+        std::unique_lock lock(mutex_);
+        wake_.wait(lock, [&] { return closing_ || stage_ != seen; });
+        if (closing_) return;
+        seen = stage_;
+        job = job_;
+      }
+      call(*job, k);
+      std::lock_guard lock(mutex_);
+      if (--pending_ == 0) done_.notify_one();
+    }
+  }
+
+  std::vector<std::thread> members_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(std::size_t)>* job_ = nullptr;
+  std::size_t stage_ = 0, pending_ = 0;
+  std::exception_ptr error_;
+  bool closing_ = false;
+};
+
+}  // namespace shockgas::particles::detail
