@@ -44,6 +44,7 @@
 
 #include "domain_prefetcher.hpp"
 #include "event_engine.hpp"
+#include "shockgas/core/interrupt.hpp"
 #include "thread_team.hpp"
 #include "window_domain.hpp"
 #include "window_plan.hpp"
@@ -256,7 +257,9 @@ class WindowScheduler {
 
   // Every domain to `end` (inclusive: collisions at exactly end too), on the
   // team. Member 0 tells the watch about the time every so many steps; halt is
-  // set when the watch asks to stop (the sub-window finishes first).
+  // set when the watch asks to stop (the sub-window finishes first). On an abort
+  // request (core/interrupt.hpp) every member throws Interrupted within
+  // check_every / 2 rounds of its own; the team rethrows it.
   template <class Watch>
   void run_domains(double end, bool inclusive, Watch& watch, bool& halt) {
     const double limit = inclusive ? end : std::nextafter(end, -std::numeric_limits<double>::infinity());
@@ -295,7 +298,10 @@ class WindowScheduler {
           if (!stepper_.step(*one, limit)) one = take();
         }
         prefetch.advance(lines);
-        if (member == 0 && round % (Engine::check_every / 2) == 0 && !halt && !watch.tick(end)) halt = true;
+        if (round % (Engine::check_every / 2) == 0) [[unlikely]] {
+          throw_if_aborted();  // every member: an abort leaves the sub-window unfinished
+          if (member == 0 && !halt && !watch.tick(end)) halt = true;
+        }
       }
     });
   }
