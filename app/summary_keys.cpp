@@ -106,7 +106,7 @@ std::vector<Declaration> particles() {
             if (r.particles && r.particles->parallel.shards > 0) out.json(r.particles->parallel.shards);
           }),
       key(p, "particles.stop", "",
-          "how realization 0 ended (completed, collapse, rounding_stall, event_limit, wall_limit, interrupted)", "",
+          "how realization 0 ended (completed, collapse, rounding_stall, event_limit, wall_limit)", "",
           particle([](const PR& pr, const Scene&) { return to_string(pr.ensemble.first.stop.reason); })),
       key(p, "particles.stop_time", "time", "when it ended", "",
           particle([](const PR& pr, const Scene&) { return pr.ensemble.first.stop.time; })),
@@ -129,6 +129,10 @@ std::vector<Declaration> particles() {
           "why the events (also) ran on the global queue, and what time windows would need there",
           "with the event solver, when not only windows",
           events([](const particles::RunSchedule& s) { return s.why_global.empty() ? Json() : Json(s.why_global); })),
+      key(p, "particles.window_threads", "1",
+          "threads that ran realization 0's time windows (particles.threads shared out among the realizations)",
+          "with the event solver, on windows",
+          events([](const particles::RunSchedule& s) { return s.order == "global" ? Json() : Json(s.threads); })),
       key(p, "particles.T_final", "length^2/time^2", "T at the last sample (ensemble mean)", "",
           [](const RunResults& r, Emitter& out) {
             if (r.particles && !r.particles->ensemble.T.mean.empty())
