@@ -7,9 +7,10 @@ import os
 import h5py
 
 from .clusters import figure_clusters
-from .common import save
+from .common import is_gas, save
 from .distribution import figure_distribution
 from .evolution import figure_evolution
+from .few_bodies import figure_few_bodies
 from .fields import figure_fields
 from .regimes import figure_regimes
 from .spacetime import figure_spacetime
@@ -30,6 +31,8 @@ def figures(f, summary):
         drawn["velocity_distribution.png"] = figure_sweep_distribution(f)
     if "particles/T" in f:
         drawn["temperature.png"] = figure_temperature(f, summary)
+    if not is_gas(summary):
+        drawn["temperature.png"] = figure_few_bodies(f)
     if "particles/histogram" in f:
         drawn["velocity_distribution.png"] = figure_distribution(f)
     if "particles/spacetime" in f:

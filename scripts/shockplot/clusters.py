@@ -6,9 +6,14 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.ticker import LogFormatterSciNotation
 
-from .common import CLUSTER, EXACT, GUIDE, SHOCK, attr, draw_guide, finish, label, unit
+from .common import CLUSTER, EXACT, GUIDE, SHOCK, attr, draw_guide, finish, is_gas, label, unit
 
 DATA = {"color": "tab:blue", "marker": "o", "ms": 3, "lw": 1, "zorder": 3}
+
+
+def minor_labels():
+    """Labels on the minor ticks of a log axis that spans less than two decades."""
+    return LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(2, 0.4))
 
 
 def _count_in_time(ax, f, summary):
@@ -29,16 +34,18 @@ def _count_in_time(ax, f, summary):
     coefficient = attr(an, "n_shocks_exact_coefficient") if an is not None else None
     t_stick = summary.get("analysis", {}).get("t_stick_theory")
     start = max(t[0], t_stick) if t_stick else t[0]
-    if coefficient is not None and N and start < t[-1]:
+    gas = is_gas(summary)  # the laws are statistical: none over a few bodies
+    if coefficient is not None and N and start < t[-1] and gas:
         tt = np.geomspace(start, t[-1], 50)
         ax.plot(tt, coefficient * tt ** (-2 / 3), **EXACT,
                 label=rf"exact: shocks of Burgers turbulence from this white noise, ${coefficient / N:.4g}\,N t^{{-2/3}}$")
-    elif an is not None and "T_fit_t" in an:
+    elif an is not None and "T_fit_t" in an and gas:
         window = an["T_fit_t"][:]
         draw_guide(ax, t, n, -2 / 3, window, (max(t[0], window[0] / 10), t[-1]), "N t^(-2/3) law")
     _eligible_at_the_comparison(ax, summary)
     ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.yaxis.set_minor_formatter(minor_labels())  # a count over less than a decade still reads
     ax.set_xlabel(label("time $t$", unit(p["t"])))
     ax.set_ylabel(label("number of clusters", unit(p["n_clusters"])))
     ax.set_title("clusters in time", fontsize=10)
@@ -100,7 +107,7 @@ def _positions(ax, cmp, solver):
     ax.plot(sx[lone_s], sm[lone_s], **dict(SHOCK, mfc="none"), label=f"shock of {solver} without a cluster")
     ax.axhline(min_mass, ls=":", **GUIDE, label=f"smallest mass the comparison counts: {min_mass:.3g}")
     ax.set_yscale("log")
-    ax.yaxis.set_minor_formatter(LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(2, 0.4)))
+    ax.yaxis.set_minor_formatter(minor_labels())
     ax.set_xlabel(label("position $x$", unit(cmp["clusters_x"])))
     ax.set_ylabel(label("mass $m$", unit(cmp["clusters_m"])))
     ax.set_title(f"clusters against shocks at t = {attr(cmp, 't', 0):.4g}: positions and masses", fontsize=10)

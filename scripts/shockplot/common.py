@@ -13,11 +13,23 @@ EXACT = {"color": "black", "ls": "--", "lw": 1.4, "zorder": 5}
 GUIDE = {"color": "0.45", "lw": 1.1, "zorder": 4}
 # Data of the particles, distinct from every solver's line.
 PARTICLES = {"color": "0.25", "marker": ".", "ls": "none", "ms": 2.5, "zorder": 3}
-# The initial condition (t = 0).
 # The initial condition (t = 0): a wide pale band behind every line.
 INITIAL = {"color": "0.55", "ls": "-", "lw": 3.5, "alpha": 0.35, "zorder": 0}
 CLUSTER = {"marker": "v", "color": "tab:red", "ls": "none", "ms": 7}
 SHOCK = {"marker": "^", "color": "tab:blue", "ls": "none", "ms": 7}
+
+
+# The laws of the gas (cooling, sticky-gas, velocity scaling) are statistical:
+# below this many particles a run is a few bodies, drawn without them.
+GAS_PARTICLES = 100
+
+
+def is_gas(summary):
+    """Whether the run's particles are a gas: initial.N (of every variant of a sweep) >= GAS_PARTICLES."""
+    sizes = [v.get("summary", {}).get("initial", {}).get("N") for v in summary.get("variants", [])]
+    sizes.append(summary.get("initial", {}).get("N"))
+    sizes = [n for n in sizes if n is not None]
+    return not sizes or min(sizes) >= GAS_PARTICLES
 
 
 def attr(obj, name, default=None):

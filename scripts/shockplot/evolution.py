@@ -56,6 +56,9 @@ def _amplitude(ax, e, t, s, t_unit):
         spread = rf" \pm {error:.2g}" if error is not None else ""
         ax.loglog(window, e["amplitude_fit"][:], "-", **FIT,
                   label=rf"fit of the amplitude on [{window[0]:.3g}, {window[1]:.3g}]: $t^{{{exponent:.3f}{spread}}}$")
+    low, high = a[ok].min(), a[ok].max()
+    if high - low <= 1e-9 * high:  # constant to rounding: no zoom into the rounding
+        ax.set_ylim(np.sqrt(low * high) / 2, np.sqrt(low * high) * 2)
     ax.set_xlabel(label("time $t$", t_unit))
     ax.set_ylabel(label("amplitude", unit(e["amplitude"])))
     ax.set_title("decay (theory: N-wave $t^{-1/2}$, periodic sawtooth $t^{-1}$)", fontsize=10)
@@ -99,7 +102,9 @@ def figure_evolution(f, summary):
     if _breaking(axes[0, 0], e, t, s, t_unit):
         drawn.insert(0, axes[0, 0])
     else:
-        axes[0, 0].set_visible(False)
+        axes[0, 0].axis("off")
+        axes[0, 0].text(0.5, 0.5, "no breaking to show:\nfewer than two smooth frames before the first shock",
+                        ha="center", va="center", transform=axes[0, 0].transAxes, fontsize=10)
     _amplitude(axes[0, 1], e, t, s, t_unit)
     _lobes(axes[1, 0], e, t, t_unit, log)
     _shocks(axes[1, 1], e, t, t_unit, log)

@@ -1,8 +1,8 @@
 """fields.png: every solver's velocity and density at the comparison time,
 each in the label and colour of its registration, the exact solution black and
 dashed, the particles where they deposited mass (cells without mass hold an
-interpolated velocity: not data, not drawn), the counted clusters and shocks,
-and the initial condition."""
+interpolated velocity: not data, not drawn), the counted clusters and shocks
+(without a comparison, the heaviest cluster), and the initial condition."""
 import matplotlib.pyplot as plt
 import numpy as np
 
@@ -85,6 +85,20 @@ def draw_clusters_and_shocks(ar, cmp, solver):
             ar.plot(xs, np.full_like(xs, 0.04), **style, label=text, transform=ar.get_xaxis_transform(), zorder=6)
 
 
+def draw_heaviest_cluster(av, ar, summary, t):
+    """Without a comparison, the particles' heaviest cluster (summary analysis.heaviest_cluster_*)
+    at (x, v) and at the foot of the density panel, when the particles stopped at the fields' time."""
+    a, p = summary.get("analysis", {}), summary.get("particles", {})
+    stop = p.get("stop_time")
+    if "heaviest_cluster_x" not in a or stop is None or abs(stop - t) > 1e-9 * max(abs(t), 1.0):
+        return
+    x, m, v = a["heaviest_cluster_x"], a["heaviest_cluster_m"], a["heaviest_cluster_v"]
+    text = f"heaviest cluster of the gas: mass {m:.4g}, velocity {v:.4g}"
+    av.plot([x], [v], **dict(CLUSTER, ms=9), label=text, zorder=6)
+    if ar is not None:
+        ar.plot([x], [0.04], **dict(CLUSTER, ms=9), label=text, transform=ar.get_xaxis_transform(), zorder=6)
+
+
 def draw_initial(av, ar, f, beside):
     """v0 beside the fields when it fits their scale (else in its own panel), rho0 always."""
     if "initial/cells/x" not in f:
@@ -124,6 +138,8 @@ def figure_fields(f, summary):
         draw_particles(av, ar, cmp)
         draw_clusters_and_shocks(ar, cmp, summary.get("compare", {}).get("solver", "the compared solver"))
     some = groups[0][1]
+    if cmp is None:
+        draw_heaviest_cluster(av, ar, summary, attr(some, "t", 0))
     av.set_ylabel(label("velocity $v$", unit(some["v"])))
     title = f"fields at t = {attr(some, 't', 0):.4g}"
     window = window_with_shocks(f, groups)

@@ -6,16 +6,15 @@ exponent d ln T / d ln t against the plateaus 0, -2 and -2/3 with the
 measured crossovers."""
 import matplotlib.pyplot as plt
 
-from .common import GUIDE, attr, finish, fraction, label, unit
+from .common import GUIDE, attr, finish, fraction, is_gas, label, unit
 from .temperature import ALPHA_NAME, DATA, FIT, T_NAME, TIME_NAME, exponent_ticks
 
 BANDS = [("elastic", "#eeeeee"), ("homogeneous cooling", "#dde8f5"), ("sticky gas (clusters)", "#f5e6d6")]
 
 
 def shows_regimes(f, summary):
-    """A gas (100 particles or more) whose local exponent crossed into the sticky regime."""
-    gas = summary.get("initial", {}).get("N", 0) >= 100
-    return gas and summary.get("analysis", {}).get("t_stick") is not None and \
+    """A gas (common.is_gas) whose local exponent crossed into the sticky regime."""
+    return is_gas(summary) and summary.get("analysis", {}).get("t_stick") is not None and \
         "particles/analysis/T_local_exponent" in f
 
 

@@ -43,13 +43,20 @@ solver = "hopf_lax"
 fit_window = 10
 """
 
-# Continuum only, a smooth start: hopf_cole (no density) listed before hopf_lax,
-# the order in which the old plots drew hopf_lax's density in hopf_cole's colour.
+# A smooth start: hopf_cole (no density) listed before hopf_lax, the order in
+# which the old plots drew hopf_lax's density in hopf_cole's colour; the sticky
+# gas by its exact hull, without a comparison.
 SINE = """[initial]
+N = 1000
 velocities = "expression"
 v0 = "0.5 + sin(2*pi*x)"
 rho0 = "1"
 domain = 1.0
+[particles]
+r = 0
+solver = "hull"
+t_end = 0.5
+samples = 5
 [continuum]
 solvers = ["godunov", "hopf_cole", "pressureless", "hopf_lax"]
 cells = 128
@@ -73,6 +80,33 @@ t_end = 3000
 samples = 36
 [compare]
 fit_window = 10
+"""
+
+# A few bodies: the gas's laws, statistical, are not drawn over them.
+FEW = """[initial]
+N = 12
+seed = 3
+[particles]
+r = 0.5
+t_end = 50
+samples = 10
+[compare]
+fit_window = 10
+"""
+
+# A shock from the start: its amplitude stays (max v - min v) / 2 = 0.75, to rounding.
+STEP = """[initial]
+velocities = "expression"
+v0 = "(x < 0.5) ? 1 : -0.5"
+rho0 = "1"
+domain = 1.0
+[continuum]
+solvers = ["hopf_lax"]
+cells = 100
+t_end = 0.2
+[output]
+animation = true
+animation_frames = 11
 """
 
 SWEEP = """[initial]
@@ -99,7 +133,7 @@ def run(tmp, name, scene):
 def runs(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("plots")
     return {name: run(tmp, name, scene) for name, scene in
-            [("gas", GAS), ("sine", SINE), ("cooling", COOLING), ("sweep", SWEEP)]}
+            [("gas", GAS), ("sine", SINE), ("cooling", COOLING), ("sweep", SWEEP), ("few", FEW), ("step", STEP)]}
 
 
 def figures_of(out):
@@ -114,7 +148,8 @@ def figures(runs):
 
 
 def panels(fig):
-    return [ax for ax in fig.axes if ax.get_visible()]
+    """The axes that show data (not hidden, not turned off to hold a note)."""
+    return [ax for ax in fig.axes if ax.get_visible() and ax.axison]
 
 
 def labelled(ax):
@@ -262,6 +297,17 @@ def test_clusters_against_the_exact_count_masses_and_shocks(runs, figures):
     assert abs(coefficient / 600 - 1.9157) < 5e-5  # 1.916 N for uniform velocities on [-1, 1]
 
 
+def test_without_a_comparison_the_heaviest_cluster_is_marked_on_the_shock(runs, figures):
+    summary = json.load(open(runs["sine"] / "summary.json"))
+    x, m = summary["analysis"]["heaviest_cluster_x"], summary["analysis"]["heaviest_cluster_m"]
+    assert abs(x - summary["continuum"]["hopf_lax"]["heaviest_shock_x"]) < 1e-2  # on the shock, within a cell (1/128)
+    fig = figures["sine"]["fields.png"]
+    marks = [line for ax in panels(fig) for line in ax.get_lines()
+             if line.get_label().startswith("heaviest cluster of the gas")]
+    assert len(marks) == 2 and all(np.allclose(line.get_xdata(), [x]) for line in marks)
+    assert f"mass {m:.4g}" in marks[0].get_label()
+
+
 def test_the_wave_in_time_against_the_exact_breaking_time(runs, figures):
     fig = figures["sine"]["evolution.png"]
     legend = the_legend(fig)
@@ -279,6 +325,27 @@ def test_the_regimes_of_a_cooling_gas(figures):
         assert f"theory: {regime} regime" in legend
     assert any(t.startswith("measured t_stick") for t in legend)
     assert any(t.startswith("theory: homogeneous cooling") for t in legend)
+
+
+def test_a_few_bodies_are_drawn_without_the_laws_of_the_gas(figures):
+    drawn = figures["few"]
+    assert "regimes.png" not in drawn
+    fig = drawn["temperature.png"]
+    (ax,) = panels(fig)
+    assert ax.get_yscale() == "linear" and ax.get_ylim()[0] == 0  # T = 0 of a collapse stays on the axis
+    legend = the_legend(fig)
+    assert not any(t.startswith(("exact", "guide", "theory", "fit")) for t in legend), legend
+    if "clusters.png" in drawn:
+        assert not any(t.startswith(("exact", "guide")) for t in the_legend(drawn["clusters.png"]))
+
+
+def test_a_constant_amplitude_is_not_magnified_to_its_rounding(figures):
+    fig = figures["step"]["evolution.png"]
+    (amplitude,) = [ax for ax in panels(fig) if ax.get_ylabel().startswith("amplitude")]
+    low, high = amplitude.get_ylim()
+    assert high / low >= 2  # 0.75 +- 1e-16 would otherwise fill the panel with rounding
+    texts = [t.get_text() for ax in fig.axes for t in ax.texts]
+    assert any(t.startswith("no breaking to show") for t in texts)  # a shock from t = 0
 
 
 def test_the_script_writes_every_picture(runs):
