@@ -91,4 +91,29 @@ JackknifeEstimate jackknife_joint_collapse(const ZHistogram& layout,
   });
 }
 
+std::optional<AnalysisErrors> jackknife_analysis(const std::vector<double>& t,
+                                                 const std::vector<std::vector<double>>& T_rows, double r,
+                                                 double t_end, double fit_window, const ZHistogram& layout,
+                                                 const std::vector<std::vector<double>>& density_rows,
+                                                 double t_min) {
+  if (T_rows.size() < 2) return std::nullopt;
+  AnalysisErrors e;
+  try {
+    e.T_exponent = jackknife_T_exponent(t, T_rows, t_end / fit_window, t_end);
+    e.crossovers = jackknife_crossovers(t, T_rows, r);
+  } catch (const InputError&) {
+    return std::nullopt;  // the ensemble's own analysis says why (analyse_cooling)
+  }
+  const JackknifeEstimate none{kNaN, kNaN, kNaN, density_rows.size(), 0};
+  e.distribution = {none, none};
+  if (layout.bins > 0 && density_rows.size() == T_rows.size()) {
+    try {
+      e.distribution = jackknife_distribution(layout, density_rows, t_min);
+    } catch (const InputError&) {
+      // the distribution's own analysis says why (analyse_velocity_distribution)
+    }
+  }
+  return e;
+}
+
 }  // namespace shockgas::compare

@@ -11,6 +11,7 @@
 // small; realizations are independent, and the jackknife over them sees every
 // correlation inside one.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "shockgas/compare/cooling_law.hpp"
@@ -56,5 +57,23 @@ DistributionErrors jackknife_distribution(const ZHistogram& layout,
 JackknifeEstimate jackknife_joint_collapse(const ZHistogram& layout,
                                            const std::vector<std::vector<std::vector<double>>>& ensembles,
                                            double t_min);
+
+// Everything above for one ensemble, as analyse_cooling and
+// analyse_velocity_distribution define it: the exponent on
+// [t_end / fit_window, t_end], the crossovers with the default params, the
+// distribution from t_min. T_rows: one series per realization at the sample
+// times t; density_rows: their histograms (layout.bins = 0: none). Nothing
+// (nullopt) for fewer than 2 realizations or when the ensemble's own fit is
+// refused; a part the data cannot support is NaN.
+struct AnalysisErrors {
+  JackknifeEstimate T_exponent;
+  CrossoverErrors crossovers;
+  DistributionErrors distribution;
+};
+std::optional<AnalysisErrors> jackknife_analysis(const std::vector<double>& t,
+                                                 const std::vector<std::vector<double>>& T_rows, double r,
+                                                 double t_end, double fit_window, const ZHistogram& layout,
+                                                 const std::vector<std::vector<double>>& density_rows,
+                                                 double t_min);
 
 }  // namespace shockgas::compare
