@@ -71,6 +71,21 @@ std::vector<Declaration> realization_error_keys() {
           "error of analysis.T_exponent from the realizations (jackknife); the least-squares error "
           "treats correlated sample times as independent",
           when, error_of([](const E& e) { return e.T_exponent; })),
+      key(p, "analysis.T_exponent_windows", "1",
+          "the T exponent fitted on every window of one and two decades, each {t_min, t_max, exponent, "
+          "jackknife_error}",
+          when,
+          [](const RunResults& r, Emitter& out) {
+            if (!r.particles || !r.particles->errors) return;
+            Json list = Json::array();
+            for (const compare::WindowExponent& w : r.particles->errors->windows)
+              list.push_back({{"t_min", w.t_min},
+                              {"t_max", w.t_max},
+                              {"exponent", w.exponent.value},
+                              {"jackknife_error", std::isfinite(w.exponent.error) ? Json(w.exponent.error)
+                                                                                  : Json(nullptr)}});
+            out.json(list);
+          }),
       key(p, "analysis.t_dissip_error", "time", "jackknife error of analysis.t_dissip (null: not crossed)",
           when, error_of([](const E& e) { return e.crossovers.t_dissip; })),
       key(p, "analysis.t_stick_error", "time", "jackknife error of analysis.t_stick (null: not crossed)",

@@ -1,5 +1,7 @@
 #include "shockgas/compare/realization_errors.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "shockgas/compare/velocity_distribution.hpp"
@@ -39,6 +41,19 @@ JackknifeEstimate jackknife_T_exponent(const std::vector<double>& t,
       return kNaN;  // too few samples left in the window without realization i
     }
   });
+}
+
+std::vector<WindowExponent> jackknife_decade_windows(const std::vector<double>& t,
+                                                     const std::vector<std::vector<double>>& T_rows) {
+  std::vector<WindowExponent> out;
+  if (t.empty() || !(t.front() > 0)) return out;
+  for (const double decades : {1.0, 2.0})
+    for (double k = std::ceil(std::log10(t.front()) - 1e-9); k + decades <= std::log10(t.back()) + 1e-9; k += 1) {
+      const double lo = std::pow(10.0, k), hi = std::pow(10.0, k + decades);
+      const auto in = std::count_if(t.begin(), t.end(), [&](double x) { return x >= lo && x <= hi; });
+      if (in >= 3) out.push_back({lo, hi, jackknife_T_exponent(t, T_rows, lo, hi)});
+    }
+  return out;
 }
 
 CrossoverErrors jackknife_crossovers(const std::vector<double>& t,
@@ -100,6 +115,7 @@ std::optional<AnalysisErrors> jackknife_analysis(const std::vector<double>& t,
   AnalysisErrors e;
   try {
     e.T_exponent = jackknife_T_exponent(t, T_rows, t_end / fit_window, t_end);
+    e.windows = jackknife_decade_windows(t, T_rows);
     e.crossovers = jackknife_crossovers(t, T_rows, r);
   } catch (const InputError&) {
     return std::nullopt;  // the ensemble's own analysis says why (analyse_cooling)

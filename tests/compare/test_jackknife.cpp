@@ -127,6 +127,27 @@ TEST(Jackknife, ExponentErrorOfCorrelatedSeriesMatchesTheirTrueSpread) {
   EXPECT_LT(fit_var, 0.25 * var);
 }
 
+TEST(Jackknife, DecadeWindowsOfAPowerLaw) {
+  // T = t^(-2/3) times a constant per realization: every window's exponent is
+  // -2/3 and its jackknife error 0 (a constant factor does not change a slope).
+  std::vector<double> t;
+  for (int k = 0; k <= 40; ++k) t.push_back(std::pow(10.0, k / 10.0 + 0.5));  // 10^0.5 .. 10^4.5
+  std::vector<std::vector<double>> rows;
+  for (const double c : {1.0, 1.3, 0.8}) {
+    rows.emplace_back();
+    for (const double ti : t) rows.back().push_back(c * std::pow(ti, -2.0 / 3.0));
+  }
+  const std::vector<WindowExponent> w = jackknife_decade_windows(t, rows);
+  // One decade: [10, 100] .. [1000, 10^4]; two: [10, 1000], [100, 10^4].
+  ASSERT_EQ(w.size(), 5u);
+  EXPECT_EQ(w.front().t_min, 10.0);
+  EXPECT_EQ(w.back().t_max, 1e4);
+  for (const WindowExponent& x : w) {
+    EXPECT_NEAR(x.exponent.value, -2.0 / 3.0, 1e-13);
+    EXPECT_NEAR(x.exponent.error, 0.0, 1e-13);
+  }
+}
+
 TEST(Jackknife, DistributionErrorsVanishForIdenticalRealizations) {
   // Identical realizations: every leave-one-out mean equals the full one, so the
   // errors are 0 and the values those of analyse_velocity_distribution.

@@ -58,15 +58,26 @@ JackknifeEstimate jackknife_joint_collapse(const ZHistogram& layout,
                                            const std::vector<std::vector<std::vector<double>>>& ensembles,
                                            double t_min);
 
+// The exponent with its jackknife error on windows of one and two decades
+// [10^k, 10^(k+1)] and [10^k, 10^(k+2)] inside [t.front(), t.back()] (each with
+// >= 3 samples): how the fitted exponent depends on the window.
+struct WindowExponent {
+  double t_min = 0, t_max = 0;  // the window [time]
+  JackknifeEstimate exponent;
+};
+std::vector<WindowExponent> jackknife_decade_windows(const std::vector<double>& t,
+                                                     const std::vector<std::vector<double>>& T_rows);
+
 // Everything above for one ensemble, as analyse_cooling and
 // analyse_velocity_distribution define it: the exponent on
-// [t_end / fit_window, t_end], the crossovers with the default params, the
+// [t_end / fit_window, t_end] and on the decade windows, the crossovers with the default params, the
 // distribution from t_min. T_rows: one series per realization at the sample
 // times t; density_rows: their histograms (layout.bins = 0: none). Nothing
 // (nullopt) for fewer than 2 realizations or when the ensemble's own fit is
 // refused; a part the data cannot support is NaN.
 struct AnalysisErrors {
   JackknifeEstimate T_exponent;
+  std::vector<WindowExponent> windows;
   CrossoverErrors crossovers;
   DistributionErrors distribution;
 };
