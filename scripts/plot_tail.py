@@ -58,7 +58,7 @@ def plot_phi(phi, r, N, out):
     law = [p for p in phi if p["t"] == times[-1] and p["z"] >= 0.5 and 0 < p["exact_phi"] < 1]
     zmax = max(p["z"] for p in phi)
     exact = sorted({(p["z"], p["exact_phi"]) for p in phi if p["z"] >= 0.5 and 0 < p["exact_phi"] < 1})
-    ax.plot([math.log(z) for z, _ in exact], [math.log(-math.log(f)) for _, f in exact], "k-", lw=1.2,
+    ax.plot([math.log(z) for z, _ in exact], [math.log(-math.log(f)) for _, f in exact], "k--", lw=1.2,
             label="exact mass-weighted law (bin means)")
     if law:
         x0, y0 = math.log(exact[-1][0]), math.log(-math.log(exact[-1][1]))
@@ -85,8 +85,8 @@ def plot_local(phi, r, N, out):
                     elinewidth=0.8, label="t = %g" % t)
     law = sorted({(p["z"], p["exact_local"]) for p in phi if not math.isnan(p["exact_local"])})
     bins = sorted({(p["z"], p["exact_local_bins"]) for p in phi if not math.isnan(p["exact_local_bins"])})
-    ax.plot([z for z, _ in law], [a for _, a in law], "k-", lw=1.2, label="exact law, d ln(-ln Phi)/d ln|z|")
-    ax.plot([z for z, _ in bins], [a for _, a in bins], "k--", lw=0.8, label="exact law, same estimator on bins")
+    ax.plot([z for z, _ in law], [a for _, a in law], "k--", lw=1.2, label="exact law, d ln(-ln Phi)/d ln|z|")
+    ax.plot([z for z, _ in bins], [a for _, a in bins], "k-.", lw=0.8, label="exact law, same estimator on bins")
     ax.axhline(3, color="grey", ls=":", lw=1, label="3 (the asymptotic exponent)")
     ax.set_ylim(1.3, 3.1)
     ax.set_xlabel("|z|")
