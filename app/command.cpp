@@ -104,7 +104,8 @@ int do_tail(Arguments args) {
     if (!(N >= 1 && N <= 4e9 && N == std::floor(N))) throw InputError("tail.N", to_text(N), "whole numbers >= 1");
     args.tail.sizes.push_back(static_cast<std::size_t>(N));
   }
-  std::cout << "tail results in " << studies::run_tail_study(args.tail) << "/\n";
+  const std::string out = studies::run_tail_study(args.tail);  // nothing printed before it returns
+  std::cout << "tail results in " << out << "/\n";
   return kExitOk;
 }
 

@@ -3,25 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shockgas/compare/cluster_velocity_law.hpp"
+#include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/initial_condition.hpp"
 
 namespace shockgas::studies {
 
 namespace {
-
-// <z^2> of the exact mass-weighted law = T t^(2/3) of the r = 0 gas: Simpson's
-// rule on [-8, 8] (the density is below 1e-100 beyond).
-double exact_second_moment(double D) {
-  const int n = 8000;
-  const double h = 16.0 / n;
-  double sum = 0;
-  for (int i = 0; i <= n; ++i) {
-    const double z = -8 + i * h, w = i == 0 || i == n ? 1 : (i % 2 ? 4 : 2);
-    sum += w * z * z * compare::cluster_velocity_density(z, D);
-  }
-  return sum * h / 3;
-}
 
 // Windows [z_lo, z_hi]: from each start, one unit wide and up to the reach.
 std::vector<std::pair<double, double>> windows(double reach) {
@@ -49,9 +37,16 @@ void TailEnsemble::add(std::size_t k, TailRealization run) {
 }
 
 TailFiles::TailFiles(const TailStudyOptions& o) : options_(o) {
-  params_.D = 1.0 / 3.0;  // uniform on [-1, 1] at unit spacing: sigma^2 l
+  // Realizations are make_initial_bodies({N, seed}, k): the default lattice start,
+  // white noise whose intensity D and sticky-gas T t^(2/3) do not depend on N.
+  InitialParams ip;
+  ip.N = o.sizes.front();
+  ip.seed = o.seed;
+  const auto exact = compare::white_noise_references(ip);
+  if (!exact) throw RunError("tail: the default initial condition is not white noise on a lattice");
+  params_.D = exact->D;
   params_.min_clusters = o.min_clusters;
-  exact_T_ = exact_second_moment(params_.D);
+  exact_T_ = exact->temperature_amplitude;
   const std::string dir = o.out_dir + "/";
   phi_ = std::make_unique<CsvWriter>(
       dir + "tail_phi.csv",
