@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <iostream>
 
 #include "animate.hpp"
@@ -14,6 +15,7 @@
 #include "plots.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/studies/studies.hpp"
+#include "shockgas/studies/tail_study.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app {
@@ -28,6 +30,8 @@ struct Arguments {
   std::vector<std::string> overrides;
   bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false;
   studies::StudyOptions bench;
+  studies::TailStudyOptions tail;
+  std::vector<double> tail_sizes;  // --N, read as numbers so that 1e7 is allowed
 };
 
 void add_run(CLI::App& app, Arguments& args) {
@@ -78,7 +82,35 @@ int do_run(const Arguments& args) {
   return kExitOk;
 }
 
+void add_tail(CLI::App& app, Arguments& args) {
+  auto* tail = app.add_subcommand("tail", "The tail of Phi(z) at sizes beyond a scene: CSV files (docs/paper.md)");
+  studies::TailStudyOptions& o = args.tail;
+  tail->add_option("--N", args.tail_sizes, "particles per realization, e.g. 1e5,1e6,1e7")->delimiter(',');
+  tail->add_option("--realizations", o.realizations, "realizations per size (default 100)");
+  tail->add_option("--times", o.times, "increasing times, e.g. 1e3,1e4,1e5")->delimiter(',');
+  tail->add_option("--r", o.r, "restitution: 0 = the exact hull (default), > 0 = the event engine");
+  tail->add_option("--delta", o.delta, "the engine's threshold (default 1e-2)");
+  tail->add_option("--seed", o.seed, "seed of the initial velocities (default 1999)");
+  tail->add_option("--bin-width", o.bin_width, "bin width in |z| (default 0.05)");
+  tail->add_option("--min-clusters", o.min_clusters, "clusters a bin must hold to count (default 25)");
+  tail->add_option("--threads", o.threads, "realizations at once (default 0: every core)");
+  tail->add_option("--out", o.out_dir, "output directory (default out/tail)");
+  tail->add_flag("--quiet,-q", [&o](std::int64_t) { o.progress = false; }, "no progress output");
+}
+
+int do_tail(Arguments args) {
+  if (!args.tail_sizes.empty()) args.tail.sizes.clear();
+  for (const double N : args.tail_sizes) {
+    if (!(N >= 1 && N <= 4e9 && N == std::floor(N))) throw InputError("tail.N", to_text(N), "whole numbers >= 1");
+    args.tail.sizes.push_back(static_cast<std::size_t>(N));
+  }
+  const std::string out = studies::run_tail_study(args.tail);  // nothing printed before it returns
+  std::cout << "tail results in " << out << "/\n";
+  return kExitOk;
+}
+
 int dispatch(const CLI::App& app, const Arguments& args) {
+  if (app.got_subcommand("tail")) return do_tail(args);
   if (app.got_subcommand("run")) return do_run(args);
   if (app.got_subcommand("merge")) {
     guard_partial_outputs();
@@ -133,6 +165,7 @@ int run_command(int argc, char** argv) {
   bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)");
   bench->add_flag("--full", args.bench.full, "the record size (long) instead of the quick one");
   bench->add_flag("--quiet,-q", [&args](std::int64_t) { args.bench.progress = false; }, "no progress output");
+  add_tail(app, args);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -145,6 +145,7 @@ const std::vector<Declaration>& dataset_declarations() {
   static const std::vector<Declaration> all = [] {
     std::vector<Declaration> d = layout::provenance_datasets();
     layout::append(d, layout::particle_datasets());
+    layout::append(d, layout::realization_datasets());
     layout::append(d, layout::field_datasets());
     layout::append(d, layout::frame_datasets());
     layout::append(d, layout::shard_datasets());
@@ -156,6 +157,7 @@ const std::vector<Declaration>& dataset_declarations() {
 const std::vector<Declaration>& summary_declarations() {
   static const std::vector<Declaration> all = [] {
     std::vector<Declaration> d = layout::run_keys();
+    layout::append(d, layout::realization_error_keys());
     layout::append(d, layout::comparison_keys());
     layout::append(d, layout::extreme_keys());
     layout::append(d, layout::frame_keys());

@@ -15,6 +15,7 @@
 #include "shockgas/app/scene.hpp"
 #include "shockgas/compare/field_distance.hpp"
 #include "shockgas/compare/particle_analysis.hpp"
+#include "shockgas/compare/realization_errors.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
 #include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/continuum/field.hpp"
@@ -44,6 +45,7 @@ struct ParticleResults {
   // and the exact mass-weighted law of z averaged over the histogram's bins.
   std::optional<compare::WhiteNoiseReferences> exact;
   std::vector<double> histogram_exact;
+  std::optional<compare::AnalysisErrors> errors;  // jackknife over realizations (2 or more)
 };
 
 struct ContinuumRun {

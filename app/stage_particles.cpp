@@ -59,6 +59,9 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   r.exact = compare::white_noise_references(scene.initial);
   if (r.exact && r.histogram.bins > 0)
     r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
+  r.errors = compare::jackknife_analysis(r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r,
+                                         scene.particles.t_end, scene.compare.fit_window, r.histogram,
+                                         r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
   return r;
 }
 

@@ -163,6 +163,8 @@ EnsembleResult reduce_ensemble(std::vector<RunResult> runs) {
   e.dissipated = stats(runs, samples, &TimeSeries::dissipated);
   e.histogram = mean_histogram(runs);
   for (const RunResult& r : runs) {
+    e.T_by_realization.push_back(r.series.T);
+    e.histogram_by_realization.push_back(r.histogram.density);
     e.stops.push_back(r.stop);
     e.collisions_per_realization.push_back(r.collisions);
     e.total_collisions += r.collisions;

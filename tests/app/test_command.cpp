@@ -51,6 +51,14 @@ TEST(Command, BadOverrideExitsTwoAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST(Command, BadTailOptionsExitTwoAndWriteNothing) {
+  const fs::path out = temp_dir("tail") / "out";
+  EXPECT_EQ(run({"tail", "--realizations", "1", "--out", out.string(), "-q"}), 2);
+  EXPECT_EQ(run({"tail", "--N", "1500.5", "--out", out.string(), "-q"}), 2);
+  EXPECT_EQ(run({"tail", "--times", "1e3,1e2", "--out", out.string(), "-q"}), 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST(Command, SolverLimitIsCheckedBeforeAnyWork) {
   const fs::path dir = temp_dir("preflight");
   const fs::path scene = write_scene(dir, kSmallScene);

@@ -56,6 +56,20 @@ TEST(Ensemble, MeanAndStandardErrorOverRealizations) {
   EXPECT_LT(e.T.mean.back(), 0.05);
 }
 
+TEST(Ensemble, KeepsEachRealizationsSeriesForTheJackknife) {
+  const EnsembleResult e = run_ensemble(small_gas(), four_realizations(2));
+  ASSERT_EQ(e.T_by_realization.size(), 4u);
+  ASSERT_EQ(e.histogram_by_realization.size(), 4u);
+  EXPECT_EQ(e.T_by_realization.front(), e.first.series.T);
+  EXPECT_EQ(e.histogram_by_realization.front(), e.first.histogram.density);
+  // Their means are the ensemble's (the same sums, to rounding).
+  for (std::size_t k = 0; k < e.t.size(); ++k) {
+    double sum = 0;
+    for (const auto& row : e.T_by_realization) sum += row[k];
+    EXPECT_NEAR(sum / 4, e.T.mean[k], 1e-15 * e.T.mean[k]);
+  }
+}
+
 TEST(Ensemble, ProgressIsReportedAndEnds) {
   double last = -1;
   ParticleParams p = four_realizations(2);

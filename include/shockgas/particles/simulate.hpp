@@ -66,6 +66,10 @@ struct EnsembleResult {
   std::vector<double> count;  // realizations that reached each sample [1]
   SeriesStats T, mean_v, n_bodies, n_clusters, collisions, inelastic, elastic, merges, dissipated;
   std::vector<double> histogram;  // mean of the histogram densities (layout of ScaledHistogram)
+  // Each realization's own T(t) and histogram density, in index order: what a
+  // jackknife over realizations needs (compare/realization_errors.hpp).
+  std::vector<std::vector<double>> T_by_realization;          // at the samples it reached
+  std::vector<std::vector<double>> histogram_by_realization;  // empty rows without a histogram
   RunResult first;                // realization 0 in full (final state, snapshots, space-time)
   std::vector<RunStop> stops;     // how each realization ended
   std::vector<std::uint64_t> collisions_per_realization;

@@ -1,0 +1,135 @@
+#include "shockgas/compare/realization_errors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "shockgas/compare/velocity_distribution.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::compare {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The sample times a mean of `size` columns reaches.
+std::vector<double> first(const std::vector<double>& t, std::size_t size) {
+  return {t.begin(), t.begin() + static_cast<std::ptrdiff_t>(std::min(size, t.size()))};
+}
+
+// The late distributions of analyse_velocity_distribution for a mean density.
+std::vector<ScaledDistribution> late_distributions(const ZHistogram& layout, std::vector<double> density,
+                                                   double t_min) {
+  ZHistogram h = layout;
+  h.density = std::move(density);
+  return analyse_velocity_distribution(h, t_min).late;
+}
+
+}  // namespace
+
+JackknifeEstimate jackknife_T_exponent(const std::vector<double>& t,
+                                       const std::vector<std::vector<double>>& T_rows, double t_min,
+                                       double t_max) {
+  const LeaveOneOutMeans T(T_rows);
+  fit_power_law(first(t, T.mean(T.rows()).size()), T.mean(T.rows()), t_min, t_max);  // refuses bad input
+  return jackknife(T.rows(), [&](std::size_t i) {
+    const std::vector<double> mean = T.mean(i);
+    try {
+      return fit_power_law(first(t, mean.size()), mean, t_min, t_max).exponent;
+    } catch (const InputError&) {
+      return kNaN;  // too few samples left in the window without realization i
+    }
+  });
+}
+
+std::vector<WindowExponent> jackknife_decade_windows(const std::vector<double>& t,
+                                                     const std::vector<std::vector<double>>& T_rows) {
+  std::vector<WindowExponent> out;
+  if (t.empty() || !(t.front() > 0)) return out;
+  for (const double decades : {1.0, 2.0})
+    for (double k = std::ceil(std::log10(t.front()) - 1e-9); k + decades <= std::log10(t.back()) + 1e-9; k += 1) {
+      const double lo = std::pow(10.0, k), hi = std::pow(10.0, k + decades);
+      const auto in = std::count_if(t.begin(), t.end(), [&](double x) { return x >= lo && x <= hi; });
+      if (in >= 3) out.push_back({lo, hi, jackknife_T_exponent(t, T_rows, lo, hi)});
+    }
+  return out;
+}
+
+CrossoverErrors jackknife_crossovers(const std::vector<double>& t,
+                                     const std::vector<std::vector<double>>& T_rows, double r,
+                                     const CrossoverParams& params) {
+  const LeaveOneOutMeans T(T_rows);
+  auto crossovers = [&](std::size_t i) {
+    const std::vector<double> mean = T.mean(i);
+    return find_crossovers(first(t, mean.size()), mean, r, params);
+  };
+  CrossoverErrors e;
+  e.t_dissip = jackknife(T.rows(), [&](std::size_t i) { return crossovers(i).t_dissip; });
+  e.t_stick = jackknife(T.rows(), [&](std::size_t i) { return crossovers(i).t_stick; });
+  return e;
+}
+
+DistributionErrors jackknife_distribution(const ZHistogram& layout,
+                                          const std::vector<std::vector<double>>& density_rows,
+                                          double t_min) {
+  const LeaveOneOutMeans density(density_rows);
+  auto analysis = [&](std::size_t i) {
+    ZHistogram h = layout;
+    h.density = density.mean(i);
+    return analyse_velocity_distribution(h, t_min);
+  };
+  const std::vector<JackknifeEstimate> e = jackknife_components(density.rows(), [&](std::size_t i) {
+    const DistributionAnalysis a = analysis(i);
+    const bool tail = a.not_determined.empty() && a.tail.points > 0 && !a.tail.at_bound;
+    return std::vector<double>{a.collapse_distance ? *a.collapse_distance : kNaN,
+                               tail ? a.tail.exponent : kNaN};
+  });
+  return DistributionErrors{e[0], e[1]};
+}
+
+JackknifeEstimate jackknife_joint_collapse(const ZHistogram& layout,
+                                           const std::vector<std::vector<std::vector<double>>>& ensembles,
+                                           double t_min) {
+  require(!ensembles.empty(), "jackknife.ensembles", ensembles.size(), "at least one ensemble");
+  std::vector<LeaveOneOutMeans> densities;
+  for (const auto& rows : ensembles) {
+    densities.emplace_back(rows);
+    require(densities.back().rows() == densities.front().rows(), "jackknife.realizations",
+            densities.back().rows(), "as many realizations in every ensemble");
+  }
+  return jackknife(densities.front().rows(), [&](std::size_t i) {
+    std::vector<ScaledDistribution> all;
+    for (const LeaveOneOutMeans& d : densities)
+      for (ScaledDistribution& s : late_distributions(layout, d.mean(i), t_min)) all.push_back(std::move(s));
+    return all.size() >= 2 ? collapse_distance(all) : kNaN;
+  });
+}
+
+std::optional<AnalysisErrors> jackknife_analysis(const std::vector<double>& t,
+                                                 const std::vector<std::vector<double>>& T_rows, double r,
+                                                 double t_end, double fit_window, const ZHistogram& layout,
+                                                 const std::vector<std::vector<double>>& density_rows,
+                                                 double t_min) {
+  if (T_rows.size() < 2) return std::nullopt;
+  AnalysisErrors e;
+  try {
+    e.T_exponent = jackknife_T_exponent(t, T_rows, t_end / fit_window, t_end);
+    e.windows = jackknife_decade_windows(t, T_rows);
+    e.crossovers = jackknife_crossovers(t, T_rows, r);
+  } catch (const InputError&) {
+    return std::nullopt;  // the ensemble's own analysis says why (analyse_cooling)
+  }
+  const JackknifeEstimate none{kNaN, kNaN, kNaN, density_rows.size(), 0};
+  e.distribution = {none, none};
+  if (layout.bins > 0 && density_rows.size() == T_rows.size()) {
+    try {
+      e.distribution = jackknife_distribution(layout, density_rows, t_min);
+    } catch (const InputError&) {
+      // the distribution's own analysis says why (analyse_velocity_distribution)
+    }
+  }
+  return e;
+}
+
+}  // namespace shockgas::compare

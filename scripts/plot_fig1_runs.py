@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""Fig. 1 at the paper's size from the kept runs (data/paper-runs/fig1, docs/paper.md).
+
+    scripts/plot_fig1_runs.py data/paper-runs/fig1 --out docs/img/paper
+
+Reads each run's T.csv and summary.json (scripts/collect_paper_run.py) and draws
+fig1-paper-size.png:
+  left   T t^(2/3) against t, with the standard error over realizations, and the
+         exact continuum value 0.17571 (4D)^(2/3) = 0.2129 (D = 1/3);
+  right  the exponent of T(t) fitted on each decade [t, 10 t], with its jackknife
+         error over realizations (analysis.T_exponent_windows), and -2/3.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+EXACT_T_T23 = 0.2128531785  # compare/cluster_velocity_law.hpp, D = 1/3
+RUNS = [  # directory, legend, colour
+    ("hull-r0-R1000", "exact hull, 1000 x N = 10^6", "C0"),
+    ("hull-r0-R10", "exact hull, 10 x N = 10^6 (realizations 0-9)", "C1"),
+    ("r0", "event engine r = 0, 10 x N = 10^6 (same 10)", "C3"),
+]
+
+
+def read_T(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return [(float(r["t"]), float(r["T"]), float(r["T_stderr"])) for r in rows]
+
+
+def summary(path):
+    with open(path) as f:
+        s = json.load(f)
+    if "analysis" not in s and s.get("variants"):
+        s = s["variants"][0]["summary"]
+    return s
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("root")
+    ap.add_argument("--out", default=".")
+    a = ap.parse_args()
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4))
+    for k, (name, label, colour) in enumerate(RUNS):
+        d = os.path.join(a.root, name)
+        if not os.path.isdir(d):
+            continue
+        series = [(t, T, e) for t, T, e in read_T(os.path.join(d, "T.csv")) if t >= 10]
+        scale = [t ** (2.0 / 3.0) for t, _, _ in series]
+        left.errorbar([t for t, _, _ in series], [T * s for (_, T, _), s in zip(series, scale)],
+                      yerr=[e * s for (_, _, e), s in zip(series, scale)], fmt="o-", ms=2.5, lw=0.8,
+                      color=colour, label=label)
+        windows = [w for w in summary(os.path.join(d, "summary.json"))["analysis"]["T_exponent_windows"]
+                   if abs(w["t_max"] / w["t_min"] - 10) < 1e-6]
+        shift = 1 + 0.06 * (k - 1)
+        right.errorbar([math.sqrt(w["t_min"] * w["t_max"]) * shift for w in windows],
+                       [w["exponent"] for w in windows], yerr=[w["jackknife_error"] for w in windows],
+                       fmt="o", ms=4, capsize=2, color=colour, label=label)
+    left.axhline(EXACT_T_T23, color="k", ls="--", lw=1, label="exact continuum law: 0.2129")
+    left.set_xscale("log")
+    left.set_xlabel("t")
+    left.set_ylabel("T t^(2/3)")
+    left.set_title("r = 0: T t^(2/3), error over realizations")
+    left.legend(fontsize=7)
+    right.axhline(-2.0 / 3.0, color="k", ls="--", lw=1, label="-2/3")
+    right.set_xscale("log")
+    right.set_xlabel("t (centre of the decade fitted)")
+    right.set_ylabel("exponent of T(t) fitted on the decade")
+    right.set_title("exponent per decade, jackknife error over realizations")
+    right.legend(fontsize=7)
+    fig.tight_layout()
+    os.makedirs(a.out, exist_ok=True)
+    fig.savefig(os.path.join(a.out, "fig1-paper-size.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    main()
