@@ -1,0 +1,12 @@
+# Checkpoint and resume through the command in a child process (label `unit`):
+# a run killed with SIGKILL after its first checkpoint, and one stopped by
+# SIGTERM (which writes a checkpoint and exits with 143), each resumed and
+# compared with the uninterrupted run bit for bit (tools/compare_runs.cpp).
+# The checkpoint file's refusals are tested in app/test_checkpoint.cpp.
+set(checkpoint_dir ${CMAKE_CURRENT_SOURCE_DIR}/checkpoint)
+foreach(signal KILL TERM)
+  add_test(NAME checkpoint.resumed_after_${signal}
+           COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
+                   ${checkpoint_dir}/ensemble.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/${signal} ${signal})
+  set_tests_properties(checkpoint.resumed_after_${signal} PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
+endforeach()
