@@ -20,7 +20,6 @@ namespace shockgas::app {
 namespace {
 
 namespace fs = std::filesystem;
-using testing_support::run;
 
 const char* kScene =
     "[initial]\nN = 300\n[particles]\nr = 0.5\nt_end = 15\nsamples = 7\nrealizations = 5\n"
@@ -37,11 +36,7 @@ std::string bytes_of(const fs::path& file) {
 class Checkpoints : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("shockgas-test-checkpoint-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = testing_support::fresh_test_directory("shockgas-test-checkpoint-");
     std::ofstream(path("scene.toml")) << kScene;
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
@@ -63,12 +58,7 @@ class Checkpoints : public ::testing::Test {
     write_checkpoint(path(out), make_checkpoint(scene, "", "", records(scene, indices)));
   }
   // Runs the command; returns its exit code and keeps what it said.
-  int command(std::vector<std::string> args) {
-    ::testing::internal::CaptureStderr();
-    const int code = run(args);
-    said_ = ::testing::internal::GetCapturedStderr();
-    return code;
-  }
+  int command(std::vector<std::string> args) { return testing_support::run_saying(std::move(args), said_); }
   fs::path dir_;
   std::string said_;
 };
