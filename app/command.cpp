@@ -3,9 +3,13 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <iostream>
+#include <optional>
 
 #include "animate.hpp"
+#include "checkpoint.hpp"
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
@@ -14,6 +18,7 @@
 #include "partial_outputs.hpp"
 #include "plots.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
 #include "shockgas/studies/studies.hpp"
 #include "shockgas/studies/tail_study.hpp"
 #include "shockgas/version.hpp"
@@ -24,8 +29,16 @@ namespace {
 
 constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 
+// Ends the process by `sig` with its default action (status 128 + sig in a shell).
+[[noreturn]] void end_by_signal(int sig) {
+  std::cerr.flush();
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+  std::_Exit(128 + sig);  // a signal whose default action does not end the process
+}
+
 struct Arguments {
-  std::string scene_path, out_dir, result_path, realizations, variants;
+  std::string scene_path, out_dir, result_path, realizations, variants, resume;
   std::vector<std::string> shards;
   std::vector<std::string> overrides;
   bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false;
@@ -36,15 +49,23 @@ struct Arguments {
 
 void add_run(CLI::App& app, Arguments& args) {
   auto* run = app.add_subcommand("run", "Run a scene (TOML) and write result.h5, summary.json, report.md, plots");
-  run->add_option("SCENE", args.scene_path, "scene file, e.g. data/scenes/default.toml")->required();
-  run->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)");
+  run->add_option("SCENE", args.scene_path, "scene file, e.g. data/scenes/default.toml");
+  auto* out = run->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)");
   run->add_option("--set", args.overrides, "override a scene key: --set particles.r=0.5 (value read as TOML)")
       ->allow_extra_args(false);
   run->add_flag("--quiet,-q", args.quiet, "no progress output");
   run->add_flag("--no-plots", args.no_plots, "skip the PNG plots");
-  run->add_option("--realizations", args.realizations,
-                  "only realizations A..B-1 of each ensemble (A:B), written as a shard for `shockgas merge`");
-  run->add_option("--variants", args.variants, "only variants A..B-1 of a sweep (A:B), written as a shard");
+  auto* realizations = run->add_option(
+      "--realizations", args.realizations,
+      "only realizations A..B-1 of each ensemble (A:B), written as a shard for `shockgas merge`");
+  auto* variants = run->add_option("--variants", args.variants,
+                                   "only variants A..B-1 of a sweep (A:B), written as a shard");
+  run->add_option(
+         "--resume", args.resume,
+         "continue the interrupted run in DIR from its checkpoint (its scene; SCENE, if given, must match)")
+      ->excludes(out)
+      ->excludes(realizations)
+      ->excludes(variants);
 }
 
 void add_merge(CLI::App& app, Arguments& args) {
@@ -73,10 +94,32 @@ void guard_partial_outputs() {
   if (current_job() == nullptr) remove_partial_outputs_on_signals();
 }
 
+// The scene of `shockgas run --resume DIR [SCENE]`, and the options of the run
+// it continues (checkpoint.hpp); InputError for a missing, damaged or foreign checkpoint.
+Scene resumed_scene(const Arguments& args, RunOptions& options) {
+  const Checkpoint checkpoint = read_checkpoint(args.resume);
+  if (args.scene_path.empty() && !args.overrides.empty())
+    throw InputError("--set", to_text(args.overrides.front()),
+                     "with --resume, only together with the scene file (which must match the checkpoint's)");
+  std::optional<Scene> given;
+  if (!args.scene_path.empty()) given = load_scene(args.scene_path, args.overrides);
+  options.out_dir = args.resume;
+  options.realizations = checkpoint.realizations;
+  options.variants = checkpoint.variants;
+  options.resume = true;
+  return checkpoint_scene(checkpoint, given ? &*given : nullptr);
+}
+
 int do_run(const Arguments& args) {
   guard_partial_outputs();
-  const Scene scene = load_scene(args.scene_path, args.overrides);  // InputError: nothing written
-  const std::string dir = run_scene(scene, run_options(args));
+  RunOptions options = run_options(args);
+  options.checkpoint = true;
+  if (args.scene_path.empty() && args.resume.empty())
+    throw InputError("run", "", "a scene file (shockgas run SCENE), or --resume DIR");
+  const Scene scene = args.resume.empty()
+                          ? load_scene(args.scene_path, args.overrides)  // InputError: nothing written
+                          : resumed_scene(args, options);
+  const std::string dir = run_scene(scene, options);
   if (!speaks_for_job()) return kExitOk;  // rank 0 writes and speaks for an MPI job
   std::cout << "results in " << dir << "/\n";
   return kExitOk;
@@ -177,6 +220,12 @@ int run_command(int argc, char** argv) {
   } catch (const InputError& e) {
     report_for_job(std::string("shockgas: error: ") + e.what() + "\n");
     return kExitBadInput;
+  } catch (const Interrupted& e) {
+    if (current_job() || e.signal_number() == 0) {
+      report_for_job(std::string("shockgas: run failed: ") + e.what() + "\n");
+      return kExitFailure;
+    }
+    end_by_signal(e.signal_number());  // the usual status of a process a signal ended
   } catch (const std::exception& e) {
     report_for_job(std::string("shockgas: run failed: ") + e.what() + "\n");
     return kExitFailure;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <thread>
 
+#include "checkpointer.hpp"
 #include "progress_bar.hpp"
 #include "realization_pool.hpp"
 #include "shockgas/core/error.hpp"
@@ -59,16 +60,23 @@ void sort_in_plan_order(std::vector<RealizationRecord>& records) {
 }
 
 ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
-                              ProgressBar& progress) {
+                              ProgressBar& progress, Checkpointer* checkpoints) {
   ComputedRecords out;
   out.threads = threads;
-  RealizationPool pool(plan, plan->items(), threads, false);
+  RealizationPool pool(plan, checkpoints ? checkpoints->remaining(*plan) : plan->items(), threads, false);
+  auto keep_finished = [&] {
+    if (!checkpoints) return;
+    checkpoints->add(pool.take_finished());
+    checkpoints->poll();  // saves when due; on an interrupt request saves and throws
+  };
   while (!pool.finished()) {
     progress.update(pool.fraction(), pool.sim_time());
+    keep_finished();
     std::this_thread::sleep_for(kPoll);
   }
+  keep_finished();
   if (auto failure = pool.failure()) std::rethrow_exception(failure->error);
-  out.records = pool.take_finished();
+  out.records = checkpoints ? checkpoints->take_records() : pool.take_finished();
   sort_in_plan_order(out.records);
   return out;
 }
@@ -272,10 +280,10 @@ class Worker {
 }  // namespace
 
 ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
-                                ProgressBar& progress) {
+                                ProgressBar& progress, Checkpointer* checkpoints) {
   const Clock::time_point start = Clock::now();
   if (!job) {
-    ComputedRecords out = compute_alone(std::move(plan), threads, progress);
+    ComputedRecords out = compute_alone(std::move(plan), threads, progress, checkpoints);
     out.wall_seconds = seconds_since(start);
     return out;
   }

@@ -26,6 +26,7 @@
 namespace shockgas::app {
 
 class ProgressBar;
+class Checkpointer;
 
 // The messages between the ranks (MPI tags). Numbers travel as doubles, an
 // item as its ensemble and index.
@@ -50,7 +51,9 @@ struct ComputedRecords {
 
 // With job == nullptr: this process alone (a shard without MPI). `threads`: of
 // each process. Rethrows a realization's own error when running alone.
+// checkpoints: when running alone, the records it keeps are not run again and
+// every record passes through it (checkpointer.hpp); nullptr for none.
 ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
-                                ProgressBar& progress);
+                                ProgressBar& progress, Checkpointer* checkpoints = nullptr);
 
 }  // namespace shockgas::app

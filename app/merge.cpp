@@ -11,14 +11,11 @@ namespace shockgas::app {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// The resolved parameters that decide the results: all but the thread count.
 std::string physics_of(const std::string& resolved) {
   std::istringstream in(resolved);
   std::string out;
   for (std::string line; std::getline(in, line);)
-    if (line.rfind("threads", 0) != 0) out += line + "\n";
+    if (line.rfind("threads", 0) != 0 && line.rfind("checkpoint_minutes", 0) != 0) out += line + "\n";
   return out;
 }
 
@@ -31,6 +28,8 @@ std::string first_difference(const std::string& a, const std::string& b) {
     if (p != q) return "`" + p + "` against `" + q + "`";
   }
 }
+
+namespace {
 
 void require_one_run(const std::vector<ShardHeader>& shards) {
   const ShardHeader& a = shards.front();

@@ -17,6 +17,12 @@
 
 namespace shockgas::app {
 
+// The resolved parameters (resolved_scene_text) that decide the results: all
+// but the thread count and the checkpoint interval.
+std::string physics_of(const std::string& resolved);
+// The first line in which two texts differ, "`a` against `b`"; "" if none.
+std::string first_difference(const std::string& a, const std::string& b);
+
 // Returns the output directory (options.out_dir; empty: out/<scene name>).
 std::string merge_shards(const std::vector<std::string>& shard_dirs, const RunOptions& options);
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "checkpointer.hpp"
 #include "job.hpp"
 #include "job_ensembles.hpp"
 #include "progress_bar.hpp"
@@ -41,10 +42,23 @@ std::vector<double> wall_shares(const EnsemblePlan& plan, const std::vector<Real
   return own;
 }
 
+// out/<name>.shard-A-B[-vC-D] for a shard without --out.
+std::string shard_name(const Scene& scene, const RunOptions& options) {
+  std::string name = scene.name + ".shard-" + options.realizations +
+                     (options.variants.empty() ? "" : "-v" + options.variants);
+  std::replace(name.begin(), name.end(), ':', '-');
+  return name;
+}
+
 }  // namespace
 
 bool runs_in_parallel(const RunOptions& options) {
-  return current_job() || !options.realizations.empty() || !options.variants.empty();
+  return current_job() || !options.realizations.empty() || !options.variants.empty() ||
+         keeps_checkpoints(options);
+}
+
+bool keeps_checkpoints(const RunOptions& options) {
+  return (options.checkpoint || options.resume) && !current_job();
 }
 
 std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptions& options) {
@@ -56,24 +70,32 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   Job* job = current_job();
   if (speaks_for_job()) say_idle_ranks(job, *plan);
   const std::size_t threads = resolved_threads(scene.particles.threads);
+  const fs::path where =
+      shard && options.out_dir.empty() ? fs::path("out") / shard_name(scene, options) : dir;
   ComputedRecords computed;
   {
+    std::unique_ptr<Checkpointer> checkpoints;
+    if (keeps_checkpoints(options))
+      checkpoints = std::make_unique<Checkpointer>(
+          where, scene, options.realizations, options.variants,
+          options.resume ? read_checkpoint(where).records : std::vector<RealizationRecord>{});
+    if (options.resume)
+      std::cerr << "shockgas: resuming " << where.string() << ": " << checkpoints->kept() << " of "
+                << plan->items().size() << " realizations kept from the checkpoint\n";
     ProgressBar progress(options.progress && speaks_for_job());
     progress.stage(job ? "particles, " + std::to_string(job->size()) + " ranks" : "particles");
-    computed = compute_records(job, plan, threads, progress);
+    computed = compute_records(job, plan, threads, progress, checkpoints.get());
   }
   if (!speaks_for_job()) return dir.string();
   if (shard) {
-    std::string name =
-        scene.name + ".shard-" + options.realizations + (variants ? "-v" + options.variants : "");
-    std::replace(name.begin(), name.end(), ':', '-');
-    const fs::path where = options.out_dir.empty() ? fs::path("out") / name : dir;
     write_shard(where, scene, *plan, std::move(computed));
-    return where.string();
+  } else {
+    const ParallelRun parallel{computed.ranks, computed.threads, 0};
+    write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
+                       options, scene.has_sweep ? nullptr : &plan->initial(0));
   }
-  const ParallelRun parallel{computed.ranks, computed.threads, 0};
-  return write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
-                            options, scene.has_sweep ? nullptr : &plan->initial(0));
+  if (keeps_checkpoints(options)) remove_checkpoint(where);  // the result holds it all now
+  return where.string();
 }
 
 std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,

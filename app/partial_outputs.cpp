@@ -7,7 +7,9 @@
 #include <fstream>
 #include <mutex>
 
+#include "checkpointer.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::app {
 
@@ -22,6 +24,10 @@ char g_partial[kMaxPartial][4096];
 volatile std::sig_atomic_t g_partial_count = 0;
 
 extern "C" void remove_partials_and_exit(int sig) {
+  if (signals_take_checkpoints()) {  // the run saves a checkpoint and stops (checkpointer.hpp)
+    request_interrupt(InterruptMode::checkpoint, sig);
+    return;
+  }
   for (int i = 0; i < g_partial_count; ++i) unlink(g_partial[i]);
   std::signal(sig, SIG_DFL);
   std::raise(sig);

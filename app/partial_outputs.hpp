@@ -30,7 +30,8 @@ class PartialOutputs {
 
 // For a host that leaves SIGINT and SIGTERM to shockgas (the command line):
 // handlers that remove the temporary files of every open PartialOutputs, then
-// end the process by the same signal. A host with its own handlers (a Python
+// end the process by the same signal; while a run keeps checkpoints, they ask
+// it for a checkpoint instead (checkpointer.hpp). A host with its own handlers (a Python
 // session) stops runs by an interrupt request instead (core/interrupt.hpp).
 void remove_partial_outputs_on_signals();
 

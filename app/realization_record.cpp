@@ -1,8 +1,8 @@
 #include "realization_record.hpp"
 
-#include <cstring>
 #include <map>
 
+#include "byte_buffer.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -52,54 +52,6 @@ class FieldReader {
 
  private:
   std::map<std::string, const std::vector<double>*> by_name_;
-};
-
-// Bytes: the ensemble and index, then per field its name and numbers, each
-// length-prefixed (std::uint64_t, native byte order: messages stay on one kind of machine).
-class ByteWriter {
- public:
-  void u64(std::uint64_t x) { raw(&x, sizeof x); }
-  void text(const std::string& s) { u64(s.size()), raw(s.data(), s.size()); }
-  void numbers(const std::vector<double>& d) { u64(d.size()), raw(d.data(), d.size() * sizeof(double)); }
-  std::string take() { return std::move(out_); }
-
- private:
-  void raw(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
-  std::string out_;
-};
-
-class ByteReader {
- public:
-  explicit ByteReader(const std::string& in) : in_(in) {}
-  bool done() const { return at_ == in_.size(); }
-  std::uint64_t u64() {
-    std::uint64_t x;
-    raw(&x, sizeof x);
-    return x;
-  }
-  std::string text() {
-    std::string s(checked_count(u64(), 1), '\0');
-    raw(s.data(), s.size());
-    return s;
-  }
-  std::vector<double> numbers() {
-    std::vector<double> d(checked_count(u64(), sizeof(double)));
-    raw(d.data(), d.size() * sizeof(double));
-    return d;
-  }
-
- private:
-  std::size_t checked_count(std::uint64_t n, std::size_t size) const {
-    if (n > (in_.size() - at_) / size) throw RunError("realization record: truncated message");
-    return static_cast<std::size_t>(n);
-  }
-  void raw(void* p, std::size_t n) {
-    if (n > in_.size() - at_) throw RunError("realization record: truncated message");
-    std::memcpy(p, in_.data() + at_, n);
-    at_ += n;
-  }
-  const std::string& in_;
-  std::size_t at_ = 0;
 };
 
 }  // namespace
@@ -175,6 +127,7 @@ RunResult from_fields(const RecordFields& fields) {
   return run;
 }
 
+// Bytes: the ensemble and index, then per field its name and numbers.
 std::string encode(const RealizationRecord& record) {
   ByteWriter out;
   out.u64(record.ensemble);
@@ -184,7 +137,7 @@ std::string encode(const RealizationRecord& record) {
 }
 
 RealizationRecord decode(const std::string& bytes) {
-  ByteReader in(bytes);
+  ByteReader in(bytes, "realization record: message");
   RealizationRecord r;
   r.ensemble = in.u64();
   r.index = in.u64();

@@ -41,7 +41,10 @@ std::string run_sweep(const Scene& scene, const std::filesystem::path& dir, cons
 
 // A run on the processes of an MPI job, or of a slice of the realizations (a
 // shard): parallel_run.cpp.
+// So does a run that keeps checkpoints (checkpointer.hpp): its records are
+// saved as they finish.
 bool runs_in_parallel(const RunOptions& options);
+bool keeps_checkpoints(const RunOptions& options);
 std::string run_parallel(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);
 
 }  // namespace shockgas::app

@@ -41,11 +41,7 @@ const char* kAnimated =
 class Shards : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("shockgas-test-shards-" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = testing_support::fresh_test_directory("shockgas-test-shards-");
     std::ofstream(dir_ / "scene.toml") << kScene;
     std::ofstream(dir_ / "sweep.toml") << kSweep;
     std::ofstream(dir_ / "animated.toml") << kAnimated;
@@ -62,10 +58,7 @@ class Shards : public ::testing::Test {
     std::vector<std::string> args{"merge"};
     for (const auto& s : shards) args.push_back(path(s));
     args.insert(args.end(), {"--out", path(out), "-q"});
-    ::testing::internal::CaptureStderr();
-    const int code = run(args);
-    said_ = ::testing::internal::GetCapturedStderr();
-    return code;
+    return testing_support::run_saying(std::move(args), said_);
   }
   fs::path dir_;
   std::string said_;

@@ -20,6 +20,12 @@ struct RunOptions {
   // half-open), and only these variants of a sweep; written for `shockgas merge`.
   std::string realizations;
   std::string variants;
+  // Keep checkpoints of the particle ensembles in the output directory
+  // (output.checkpoint_minutes; a host that turns SIGTERM and SIGINT into
+  // checkpoint requests: the command), for a run of one process.
+  bool checkpoint = false;
+  // Continue from the checkpoint in out_dir (the scene is the checkpoint's).
+  bool resume = false;
   // Also told of the progress of each stage ("particles", "continuum/<solver>"):
   // the fraction of the stage done in [0, 1] and the simulated time reached.
   // Called from the run's threads, one call at a time; a host's own display.

@@ -40,6 +40,7 @@ struct OutputParams {
   std::size_t animation_frames = 60;
   FrameSpacing animation_spacing = FrameSpacing::linear;
   double animation_t_min = 0;  // first frame after t = 0 of log spacing; 0 = t_end / 1000
+  double checkpoint_minutes = 10;  // save finished realizations this often (app/checkpoint.hpp); 0 = on signals only
 };
 
 struct Scene {

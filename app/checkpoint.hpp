@@ -1,0 +1,66 @@
+#pragma once
+// Checkpoints of a run's particle ensembles: the exact records of the
+// realizations finished so far (realization_record.hpp), saved in the run's
+// output directory so that `shockgas run --resume DIR` runs only the others and
+// reduces all of them in index order, as an uninterrupted run does: the same
+// result bit for bit.
+//
+// One file, DIR/checkpoint.bin, written atomically (a temporary file, fsync,
+// rename, fsync of the directory): a kill at any moment leaves the previous
+// checkpoint or the new one, never a mixture. It holds, in this order:
+//   "shockgas checkpoint\n", the format number (u64),
+//   texts: shockgas version, git commit, scene path, scene text, the overrides
+//   (a count, then each), the resolved parameters, the realization and variant
+//   slices of a shard ("" for a whole run),
+//   the records (a count, then each as encode() bytes),
+//   a checksum (FNV-1a, 64 bits) of every byte before it.
+// Numbers and lengths are u64 in the machine's byte order: a checkpoint is
+// resumed by the same build on the same kind of machine.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "realization_record.hpp"
+#include "shockgas/app/scene.hpp"
+
+namespace shockgas::app {
+
+inline constexpr std::uint64_t kCheckpointFormat = 1;
+
+struct Checkpoint {
+  std::string version, commit;  // of the build that wrote it
+  std::string scene_path, scene_text;
+  std::vector<std::string> overrides;
+  std::string resolved;                // resolved_scene_text of the scene
+  std::string realizations, variants;  // a shard's slices, as given; "" for a whole run
+  std::vector<RealizationRecord> records;
+};
+
+// DIR/checkpoint.bin
+std::filesystem::path checkpoint_path(const std::filesystem::path& dir);
+
+// The checkpoint of `scene` (this build) with these records.
+Checkpoint make_checkpoint(const Scene& scene, const std::string& realizations, const std::string& variants,
+                           std::vector<RealizationRecord> records);
+
+// Writes it atomically to checkpoint_path(dir) (creating dir); RunError if it
+// cannot, the previous checkpoint then left as it was.
+void write_checkpoint(const std::filesystem::path& dir, const Checkpoint& checkpoint);
+
+// Reads checkpoint_path(dir) and checks it: InputError (key "--resume") naming
+// what is wrong when there is none, it is damaged (checksum, truncation, not a
+// checkpoint, another format) or written by another build (version, commit).
+// The file is left as it is.
+Checkpoint read_checkpoint(const std::filesystem::path& dir);
+
+// The scene a checkpoint was taken of (parsed from its text, path and overrides).
+// given: a scene also named on the command line, which must have the same
+// resolved parameters but for the thread count (InputError naming the first
+// line that differs); nullptr for none.
+Scene checkpoint_scene(const Checkpoint& checkpoint, const Scene* given);
+
+// Removes the checkpoint of dir, if any (the run's result is written).
+void remove_checkpoint(const std::filesystem::path& dir);
+
+}  // namespace shockgas::app

@@ -1,0 +1,160 @@
+// Checkpoints (app/checkpoint.hpp): the file carries the finished
+// realizations' records exactly; a resumed run that keeps them equals the
+// uninterrupted run bit for bit; a damaged checkpoint, one of another build
+// and a scene that is not the checkpoint's are refused with exit 2, the
+// checkpoint left as it was and nothing written. (Stopping a run by SIGKILL and
+// SIGTERM in a child process: tests/checkpoint.cmake.)
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "app/run_command.hpp"
+#include "app/run_comparison.hpp"
+#include "checkpoint.hpp"
+#include "frames.hpp"
+#include "shockgas/core/error.hpp"
+#include "shockgas/particles/simulate.hpp"
+
+namespace shockgas::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kScene =
+    "[initial]\nN = 300\n[particles]\nr = 0.5\nt_end = 15\nsamples = 7\nrealizations = 5\n"
+    "histogram_bins = 10\nsnapshots = [4]\n[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 200\n[compare]\n"
+    "[output]\nplots = false\n";
+
+std::string bytes_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+class Checkpoints : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = testing_support::fresh_test_directory("shockgas-test-checkpoint-");
+    std::ofstream(path("scene.toml")) << kScene;
+  }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Realizations `indices` of the scene, as a run keeps them (realization 0 with its states).
+  std::vector<RealizationRecord> records(const Scene& scene, std::vector<std::uint64_t> indices) const {
+    const InitialCondition ic(scene.initial);
+    std::vector<RealizationRecord> out;
+    for (std::uint64_t k : indices) {
+      RealizationRecord r{0, k, particles::simulate(ic.realization(k), ic.length(), particle_params(scene))};
+      if (k != 0) strip_states(r.run);
+      out.push_back(std::move(r));
+    }
+    return out;
+  }
+  // The checkpoint of an interrupted run of scene.toml into `out` that finished `indices`.
+  void interrupted_run(const std::string& out, std::vector<std::uint64_t> indices) const {
+    const Scene scene = load_scene(path("scene.toml"));
+    write_checkpoint(path(out), make_checkpoint(scene, "", "", records(scene, indices)));
+  }
+  // Runs the command; returns its exit code and keeps what it said.
+  int command(std::vector<std::string> args) { return testing_support::run_saying(std::move(args), said_); }
+  fs::path dir_;
+  std::string said_;
+};
+
+TEST_F(Checkpoints, TheFileCarriesTheRecordsExactly) {
+  const Scene scene = load_scene(path("scene.toml"));
+  const Checkpoint written = make_checkpoint(scene, "2:5", "", records(scene, {2, 0, 4}));
+  write_checkpoint(path("run"), written);
+  const Checkpoint back = read_checkpoint(path("run"));
+  EXPECT_EQ(back.scene_text, scene.text);
+  EXPECT_EQ(back.resolved, resolved_scene_text(scene));
+  EXPECT_EQ(back.realizations, "2:5");
+  ASSERT_EQ(back.records.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(encode(back.records[i]), encode(written.records[i])) << i;
+  for (const auto& entry : fs::directory_iterator(path("run")))  // no temporary file left beside it
+    EXPECT_EQ(entry.path().filename(), "checkpoint.bin");
+}
+
+TEST_F(Checkpoints, AResumedRunEqualsTheUninterruptedOne) {
+  ASSERT_EQ(command({"run", path("scene.toml"), "--out", path("whole"), "-q"}), 0) << said_;
+  interrupted_run("resumed", {3, 0, 1});
+  ASSERT_EQ(command({"run", "--resume", path("resumed"), "-q"}), 0) << said_;
+  EXPECT_NE(said_.find("3 of 5 realizations kept from the checkpoint"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(checkpoint_path(path("resumed"))));  // the result holds it all
+  const auto differences = testing::result_differences(path("whole"), path("resumed"));
+  EXPECT_TRUE(differences.empty()) << differences.front();
+}
+
+TEST_F(Checkpoints, ARunThatEndsLeavesNoCheckpoint) {
+  ASSERT_EQ(command({"run", path("scene.toml"), "--out", path("run"), "-q", "--set",
+                     "output.checkpoint_minutes=1e-4"}),
+            0)
+      << said_;
+  EXPECT_TRUE(fs::exists(path("run/result.h5")));
+  EXPECT_FALSE(fs::exists(checkpoint_path(path("run"))));
+}
+
+TEST_F(Checkpoints, ADamagedCheckpointIsRefusedAndKept) {
+  interrupted_run("run", {0, 1});
+  std::string bytes = bytes_of(checkpoint_path(path("run")));
+  bytes[bytes.size() / 2] ^= 0x10;  // one bit of a record
+  std::ofstream(checkpoint_path(path("run")), std::ios::binary) << bytes;
+  EXPECT_EQ(command({"run", "--resume", path("run"), "-q"}), 2);
+  EXPECT_NE(said_.find("damaged: its checksum does not match"), std::string::npos) << said_;
+  EXPECT_EQ(bytes_of(checkpoint_path(path("run"))), bytes);
+  EXPECT_FALSE(fs::exists(path("run/result.h5")));
+}
+
+TEST_F(Checkpoints, ATruncatedFileOrAnotherFileIsRefused) {
+  interrupted_run("run", {0});
+  const std::string bytes = bytes_of(checkpoint_path(path("run")));
+  std::ofstream(checkpoint_path(path("run")), std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  EXPECT_THROW(read_checkpoint(path("run")), InputError);
+  std::ofstream(checkpoint_path(path("run")), std::ios::binary) << kScene;
+  try {
+    read_checkpoint(path("run"));
+    ADD_FAILURE() << "a scene file read as a checkpoint";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a shockgas checkpoint"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(command({"run", "--resume", path("nothing-here"), "-q"}), 2);
+  EXPECT_NE(said_.find("does not exist"), std::string::npos) << said_;
+}
+
+TEST_F(Checkpoints, ACheckpointOfAnotherBuildIsRefused) {
+  const Scene scene = load_scene(path("scene.toml"));
+  Checkpoint other = make_checkpoint(scene, "", "", records(scene, {0}));
+  other.version = "0.0.1-other";
+  write_checkpoint(path("run"), other);
+  EXPECT_EQ(command({"run", "--resume", path("run"), "-q"}), 2);
+  EXPECT_NE(said_.find("written by shockgas 0.0.1-other"), std::string::npos) << said_;
+  EXPECT_TRUE(fs::exists(checkpoint_path(path("run"))));
+}
+
+TEST_F(Checkpoints, AnotherSceneIsRefusedAThreadCountIsNot) {
+  interrupted_run("run", {0});
+  EXPECT_EQ(command({"run", "--resume", path("run"), path("scene.toml"), "-q", "--set", "particles.r=0.6"}),
+            2);
+  EXPECT_NE(said_.find("differs in `r = 0.6"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(path("run/result.h5")));
+  EXPECT_EQ(command({"run", "--resume", path("run"), "-q", "--set", "particles.threads=2"}),
+            2);  // no scene named
+  EXPECT_EQ(
+      command({"run", "--resume", path("run"), path("scene.toml"), "-q", "--set", "particles.threads=2"}), 0)
+      << said_;
+}
+
+TEST_F(Checkpoints, RecordsThatTheRunDoesNotComputeAreRefused) {
+  const Scene scene = load_scene(path("scene.toml"));
+  std::vector<RealizationRecord> r = records(scene, {0});
+  r[0].index = 7;  // the scene has 5 realizations
+  write_checkpoint(path("run"), make_checkpoint(scene, "", "", std::move(r)));
+  EXPECT_EQ(command({"run", "--resume", path("run"), "-q"}), 2);
+  EXPECT_NE(said_.find("realization 7 of ensemble 0, which the run does not compute"), std::string::npos)
+      << said_;
+}
+
+}  // namespace
+}  // namespace shockgas::app
