@@ -1,5 +1,7 @@
 #include "realization_pool.hpp"
 
+#include "shockgas/core/interrupt.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <mutex>
@@ -8,6 +10,7 @@
 
 #include "frames.hpp"
 #include "shockgas/core/cores.hpp"
+#include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::app {
@@ -39,6 +42,9 @@ struct RealizationPool::State {
       sim_time = std::max(sim_time, t);
     };
     RealizationRecord r{item.ensemble, item.index, particles::run_realization(ic, item.index, p, progress)};
+    // Stopped at a safe point by a checkpoint request: not finished, so not a
+    // record; a resumed run computes it again from its start.
+    if (r.run.stop.reason == particles::StopReason::interrupted) throw Interrupted(interrupt_signal());
     std::lock_guard lock(mutex);
     fraction[i] = 1;
     active[i] = false;
