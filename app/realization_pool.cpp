@@ -1,7 +1,5 @@
 #include "realization_pool.hpp"
 
-#include "shockgas/core/interrupt.hpp"
-
 #include <algorithm>
 #include <atomic>
 #include <mutex>
