@@ -45,11 +45,8 @@ class Checkpoints : public ::testing::Test {
   std::vector<RealizationRecord> records(const Scene& scene, std::vector<std::uint64_t> indices) const {
     const InitialCondition ic(scene.initial);
     std::vector<RealizationRecord> out;
-    for (std::uint64_t k : indices) {
-      RealizationRecord r{0, k, particles::simulate(ic.realization(k), ic.length(), particle_params(scene))};
-      if (k != 0) strip_states(r.run);
-      out.push_back(std::move(r));
-    }
+    for (std::uint64_t k : indices)
+      out.push_back({0, k, particles::run_realization(ic, k, particle_params(scene))});
     return out;
   }
   // The checkpoint of an interrupted run of scene.toml into `out` that finished `indices`.
