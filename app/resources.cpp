@@ -26,7 +26,11 @@ namespace {
 constexpr double kProcessBase = 24e6;     // the program and its libraries, resident (measured 18-22 MB)
 constexpr double kBodyBytes = 24;         // x, v, m of one body
 constexpr double kEngineBytes = 80;       // the event engine per body while it runs (measured 78)
-constexpr double kCellBytes = 200;        // a continuum solver at work, per cell (the largest of the solvers)
+// Copies of the records held at the peak (measured with threads = 1): a
+// histogram R + 3 times (the realizations' and the ensemble's, scaled and
+// written: 4 at R = 1 and 2, 4.8 at R = 3), a space-time record R + 1 times
+// (1.2 at R = 1, 2.8 at R = 2).
+constexpr double kHistogramCopies = 3, kSpacetimeCopies = 1;
 constexpr double kCellResultBytes = 24;   // x, v, rho kept per cell and solver
 constexpr double kSeriesColumns = 10;     // the time series of a run (run_result.hpp)
 constexpr double kFileOverhead = 64e3;    // HDF5 metadata, attributes, summary.json, report.md
@@ -48,25 +52,51 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   items.push_back({"particles.samples", "the time series of every realization", R * samples * kSeriesColumns * 8});
   if (p.histogram_bins > 0)
     items.push_back({"particles.histogram_bins", "the velocity histograms of every realization",
-                     (R + 1) * samples * d(p.histogram_bins) * 8});
+                     (R + kHistogramCopies) * samples * d(p.histogram_bins) * 8, "particles.samples"});
   if (p.spacetime)
     items.push_back({"particles.spacetime", "the space-time records of every realization",
-                     R * d(p.spacetime_frames) * N * 8});
+                     (R + kSpacetimeCopies) * d(p.spacetime_frames) * N * 8, "initial.N"});
   if (!p.snapshots.empty())
     items.push_back({"particles.snapshots", "the snapshots of every realization",
                      R * d(p.snapshots.size()) * N * kBodyBytes});
 }
 
+// A continuum solver at work, bytes per cell (peak resident memory at 2e4 to
+// 4e5 cells, less the process base); a solver registered from elsewhere is
+// given the largest.
+double solver_cell_bytes(const std::string& solver) {
+  static const std::vector<std::pair<std::string, double>> measured = {
+      {"hopf_lax", 620}, {"cvode", 700},       {"arkode", 850},      {"hopf_cole", 75},
+      {"godunov", 60},   {"godunov2", 60},     {"pressureless", 60},
+  };
+  for (const auto& [name, bytes] : measured)
+    if (name == solver) return bytes;
+  return 850;
+}
+
 void continuum_memory(const Scene& s, std::vector<ResourceItem>& items) {
   const double cells = d(s.continuum.cells), solvers = d(s.continuum.solvers.size());
+  double at_work = 0;  // the solvers run one after the other
+  for (const auto& solver : s.continuum.solvers) at_work = std::max(at_work, solver_cell_bytes(solver));
   items.push_back({"continuum.cells", "the continuum solvers: one at work, the fields of each kept",
-                   cells * (kCellBytes + solvers * kCellResultBytes)});
+                   cells * (at_work + solvers * kCellResultBytes)});
+}
+
+// The frames of an animation (app/frames.hpp): the particles (at most N
+// clusters) and every solver's fields at each frame time, held and written.
+double frame_bytes(const Scene& s) {
+  if (!s.output.animation) return 0;
+  const double particles = s.has_particles ? d(s.initial.N) * kBodyBytes : 0;
+  const double fields = s.has_continuum ? d(s.continuum.cells) * d(s.continuum.solvers.size()) * kCellResultBytes : 0;
+  return d(s.output.animation_frames) * (particles + fields);
 }
 
 std::vector<ResourceItem> single_memory(const Scene& s) {
   std::vector<ResourceItem> items;
   if (s.has_particles) particle_memory(s, items);
   if (s.has_continuum) continuum_memory(s, items);
+  if (s.output.animation)
+    items.push_back({"output.animation_frames", "the frames of the animation", frame_bytes(s)});
   return items;
 }
 
@@ -78,9 +108,10 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
     items.push_back({"initial.N", "the initial and final states", 2 * N * kBodyBytes});
     items.push_back({"particles.samples", "the time series", samples * 2 * kSeriesColumns * 8});
     if (p.histogram_bins > 0)
-      items.push_back({"particles.histogram_bins", "the velocity histogram", samples * d(p.histogram_bins) * 8});
+      items.push_back({"particles.histogram_bins", "the velocity histogram", samples * d(p.histogram_bins) * 8,
+                       "particles.samples"});
     if (p.spacetime)
-      items.push_back({"particles.spacetime", "the space-time record", d(p.spacetime_frames) * N * 8});
+      items.push_back({"particles.spacetime", "the space-time record", d(p.spacetime_frames) * N * 8, "initial.N"});
     if (!p.snapshots.empty())
       items.push_back({"particles.snapshots", "the snapshots", d(p.snapshots.size()) * N * kBodyBytes});
   }
@@ -89,6 +120,7 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
     items.push_back({"continuum.cells", "the continuum fields", cells * d(s.continuum.solvers.size()) * kCellResultBytes});
   if (s.has_continuum && s.has_compare)
     items.push_back({"continuum.cells", "the particles on the continuum's grid", cells * kCellResultBytes});
+  if (s.output.animation) items.push_back({"output.animation_frames", "the frames of the animation", frame_bytes(s)});
   items.push_back({"", "metadata, summary.json, report.md", kFileOverhead});
   if (plots && s.output.plots) items.push_back({"output.plots", "the plots", kPlotsBytes});
   return items;
@@ -161,9 +193,21 @@ std::string value_of(const Scene& scene, const std::string& dotted) {
   return key ? key->get(scene).written : "(the scene)";
 }
 
+// The key a refusal names: of the keys an item grows with, the one the
+// command line or a sweep variant set (the user's change), else its own.
+std::string blamed_key(const Scene& scene, const ResourceItem& item) {
+  auto overridden = [&](const std::string& key) {
+    const auto it = scene.key_origin.find(key);
+    return !key.empty() && it != scene.key_origin.end() &&
+           (it->second.rfind("--set ", 0) == 0 || it->second.find("(sweep variant") != std::string::npos);
+  };
+  return !overridden(item.key) && overridden(item.factor) ? item.factor : item.key;
+}
+
 std::string estimate_text(const ResourceEstimate& e) {
   const ResourceItem& big = e.largest();
-  return "about " + size_text(e.total()) + " (" + (big.key.empty() ? "" : big.key + ": ") + big.what + ", " +
+  const std::string keys = big.key + (big.factor.empty() ? "" : " x " + big.factor);
+  return "about " + size_text(e.total()) + " (" + (big.key.empty() ? "" : keys + ": ") + big.what + ", " +
          size_text(big.bytes) + ")";
 }
 
@@ -227,9 +271,9 @@ void check_resources(const Scene& scene, const fs::path& out, bool plots) {
   const ResourceEstimate memory = estimate_memory(scene);
   const MemoryLimit limit = memory_limit();
   if (memory.total() > limit.bytes) {
-    const ResourceItem& big = memory.largest();
-    const auto origin = scene.key_origin.find(big.key);
-    throw InputError(big.key.empty() ? "scene" : big.key, value_of(scene, big.key),
+    const std::string key = blamed_key(scene, memory.largest());
+    const auto origin = scene.key_origin.find(key);
+    throw InputError(key.empty() ? "scene" : key, value_of(scene, key),
                      "a scene that fits in the memory available: it needs " + estimate_text(memory) + ", " +
                          size_text(limit.bytes) + " available (" + limit.source + ")",
                      origin != scene.key_origin.end() ? origin->second : scene.path);

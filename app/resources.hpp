@@ -23,6 +23,7 @@ struct ResourceItem {
   std::string key;  // "initial.N", "particles.histogram_bins", ... ("" for the process base)
   std::string what;
   double bytes = 0;
+  std::string factor = "";  // a second key the size grows with ("particles.samples"), or ""
 };
 
 struct ResourceEstimate {

@@ -3,6 +3,7 @@
 // of its manifest present with its size and SHA-256, nothing else) and holds a
 // named scene's results, and nothing of a run is left beside it.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -61,9 +62,10 @@ inline void write_text(const fs::path& file, const std::string& text) {
   std::ofstream(file) << text;
 }
 
-// A fresh directory for one test.
+// A fresh directory for one test, of this process alone (test binaries of
+// other builds may run at the same time).
 inline fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-" + name);
+  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-" + std::to_string(getpid()) + "-" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -71,7 +71,7 @@ TEST(Integrity, TheManifestListsEveryFileWithItsSizeAndSha256) {
     EXPECT_EQ(f.bytes, fs::file_size(run / f.path)) << f.path;
     EXPECT_EQ(f.sha256, sha256sum(run / f.path)) << f.path;
   }
-  EXPECT_EQ(listed, (std::vector<std::string>{"report.md", "result.h5", "summary.json"}));
+  EXPECT_EQ(listed, (std::vector<std::string>{"report.html", "report.md", "result.h5", "summary.json"}));
 }
 
 TEST(Integrity, InfoReportsADamagedFileBeforeTheHdf5LibraryReadsIt) {

@@ -186,5 +186,22 @@ TEST(RunDirectory, ASweepIsWholeWithItsVariantsInside) {
   EXPECT_NE(read_text(d.out / kManifestFile).find("1-high/result.h5"), std::string::npos);
 }
 
+// `shockgas animate DIR` adds files to a finished run: they join its manifest,
+// so the directory stays whole and the scene can run into it again.
+TEST(RunDirectory, AnimateKeepsTheManifestWhole) {
+  const Dirs d = setup("rundir-animate");
+  write_text(d.a, std::string(kSceneA) + "[output]\nplots = false\nanimation = true\nanimation_frames = 3\n");
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q"}), 0);
+  const fs::path script = d.root / "fake_animate.py";
+  write_text(script, "import os, sys\nopen(os.path.join(sys.argv[1], 'animation.gif'), 'w').write('gif')\n");
+  setenv("SHOCKGAS_ANIMATE_SCRIPT", script.c_str(), 1);
+  const int animated = run({"animate", d.out.string()});
+  unsetenv("SHOCKGAS_ANIMATE_SCRIPT");
+  ASSERT_EQ(animated, 0);
+  ASSERT_TRUE(fs::exists(d.out / "animation.gif"));
+  EXPECT_EQ(whole_run(d.out, "alpha"), "");
+  EXPECT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q"}), 0);
+}
+
 }  // namespace
 }  // namespace shockgas::app
