@@ -13,6 +13,7 @@
 #include "durable_file.hpp"
 #include "run_target.hpp"
 #include "scene_schema.hpp"
+#include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -61,17 +62,13 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
                      R * d(p.snapshots.size()) * N * kBodyBytes});
 }
 
-// A continuum solver at work, bytes per cell (peak resident memory at 2e4 to
-// 4e5 cells, less the process base); a solver registered from elsewhere is
-// given the largest.
+// A continuum solver at work, bytes per cell (its registration's measure); a
+// solver without one is given the largest.
 double solver_cell_bytes(const std::string& solver) {
-  static const std::vector<std::pair<std::string, double>> measured = {
-      {"hopf_lax", 620}, {"cvode", 700},       {"arkode", 850},      {"hopf_cole", 75},
-      {"godunov", 60},   {"godunov2", 60},     {"pressureless", 60},
-  };
-  for (const auto& [name, bytes] : measured)
-    if (name == solver) return bytes;
-  return 850;
+  double largest = 0;
+  for (const auto& info : continuum::registered_solvers()) largest = std::max(largest, info.bytes_per_cell);
+  const double own = continuum::solver_info(solver).bytes_per_cell;
+  return own > 0 ? own : largest;
 }
 
 void continuum_memory(const Scene& s, std::vector<ResourceItem>& items) {

@@ -15,30 +15,18 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
+#include "two_runs.hpp"
 
 namespace shockgas::app {
 namespace {
 
 using namespace testing;
 
-struct Scenario {
-  fs::path root, a, b, out, script;
-};
+using Scenario = TwoRuns;
 
 // alpha's complete results in out; beta (with the test's plotting script)
 // about to replace them.
-Scenario setup(const std::string& name) {
-  Scenario s;
-  s.root = fresh_dir(name);
-  s.a = s.root / "alpha.toml";
-  s.b = s.root / "beta.toml";
-  s.out = s.root / "D";
-  write_text(s.a, kSceneA);
-  write_text(s.b, kSceneB);
-  s.script = fake_plot_script(s.root, 0.3);
-  EXPECT_EQ(run_child({"run", s.a.string(), "--out", s.out.string(), "-q", "--no-plots"}).first, 0);
-  return s;
-}
+Scenario setup(const std::string& name) { return alpha_done(fresh_dir(name), 0.3); }
 
 std::vector<std::string> run_beta(const Scenario& s) {
   return {"run", s.b.string(), "--out", s.out.string(), "-q", "--force"};

@@ -13,6 +13,7 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
+#include "two_runs.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/core/interrupt.hpp"
 
@@ -22,23 +23,10 @@ namespace {
 using namespace testing;
 using namespace std::chrono_literals;
 
-struct Scenario {
-  fs::path root, a, b, out, script;
-};
+using Scenario = TwoRuns;
 
-// The previous results (alpha) in out, and beta to run over them.
-Scenario setup(const std::string& name) {
-  Scenario s;
-  s.root = fresh_dir(name);
-  s.a = s.root / "alpha.toml";
-  s.b = s.root / "beta.toml";
-  s.out = s.root / "D";
-  write_text(s.a, kSceneA);
-  write_text(s.b, kSceneB);
-  s.script = fake_plot_script(s.root, 30);
-  EXPECT_EQ(run_child({"run", s.a.string(), "--out", s.out.string(), "-q", "--no-plots"}).first, 0);
-  return s;
-}
+// The previous results (alpha) in out, beta to run over them with a slow plotter.
+Scenario setup(const std::string& name) { return alpha_done(fresh_dir(name), 30); }
 
 // Waits until pred() or the time is up.
 template <class Pred>
