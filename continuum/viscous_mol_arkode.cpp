@@ -5,7 +5,6 @@
 
 #include "shockgas/continuum/viscous_mol.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/core/interrupt.hpp"
 #include "sundials_wrap.hpp"
 #include "viscous_mol_setup.hpp"
 
@@ -83,7 +82,6 @@ ContinuumResult solve_arkode(const InitialField& f, const ContinuumParams& p, do
   ark.check(ARKBandPrecInit(ark.get(), static_cast<sunindextype>(n), bands, bands), "ARKBandPrecInit");
   double t = 0;
   for (int k = 1; k <= kMolOutputs; ++k) {
-    throw_if_aborted();  // a safe point: between two integrations (never inside SUNDIALS)
     const double tout = t_end * k / kMolOutputs;
     ark.check(ARKStepEvolve(ark.get(), tout, y, &t, ARK_NORMAL), "ARKStepEvolve");
     require_finite_state(m, y.data(), t);

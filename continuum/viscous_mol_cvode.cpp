@@ -5,7 +5,6 @@
 
 #include "shockgas/continuum/viscous_mol.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/core/interrupt.hpp"
 #include "sundials_wrap.hpp"
 #include "viscous_mol_setup.hpp"
 
@@ -70,7 +69,6 @@ ContinuumResult solve_cvode(const InitialField& f, const ContinuumParams& p, dou
   cv.check(CVBandPrecInit(cv.get(), static_cast<sunindextype>(n), bands, bands), "CVBandPrecInit");
   double t = 0;
   for (int k = 1; k <= kMolOutputs; ++k) {
-    throw_if_aborted();  // a safe point: between two integrations (never inside SUNDIALS)
     const double tout = t_end * k / kMolOutputs;
     cv.check(CVode(cv.get(), tout, y, &t, CV_NORMAL), "CVode");
     require_finite_state(m, y.data(), t);

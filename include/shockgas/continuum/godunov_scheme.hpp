@@ -33,7 +33,6 @@
 
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/continuum/params.hpp"
-#include "shockgas/core/interrupt.hpp"
 #include "shockgas/core/progress.hpp"
 
 namespace shockgas::continuum {
@@ -218,8 +217,7 @@ struct TimeLoop {
 
 // Advances grid to loop.t_end with step(dt) -> StepSummary; returns the number of
 // steps. The last step is shortened so that t lands on t_end exactly. A
-// non-finite cell after any step throws RunError (solver, time, cell); a
-// requested abort throws Interrupted before the next step.
+// non-finite cell after any step throws RunError (solver, time, cell).
 template <class Grid, class StepFn>
 std::size_t advance(Grid& grid, const TimeLoop& loop, StepFn&& step) {
   StepSummary s = grid.summary();
@@ -227,7 +225,6 @@ std::size_t advance(Grid& grid, const TimeLoop& loop, StepFn&& step) {
   std::size_t steps = 0;
   double next_report = 0.01;
   while (t < loop.t_end) {
-    throw_if_aborted();  // each step is a safe point (core/interrupt.hpp)
     const double remaining = loop.t_end - t;
     double dt = s.max_speed > 0 ? loop.cfl * grid.dx() / s.max_speed : remaining;
     const bool last = dt >= remaining;
