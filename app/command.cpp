@@ -208,7 +208,10 @@ int run_command(int argc, char** argv) {
   const std::string unchanged =
       app.got_subcommand("run") || app.got_subcommand("merge") ? " (the output directory is as it was)" : "";
   try {
-    const InterruptHandlers handlers;  // SIGINT, SIGTERM -> request_interrupt; restored on return
+    // SIGINT, SIGTERM -> request_interrupt, restored on return; in an MPI job
+    // its session owns them (app/mpi/mpi_job.cpp) and does the same.
+    std::optional<InterruptHandlers> handlers;
+    if (!current_job()) handlers.emplace();
     return dispatch(app, args);
   } catch (const InputError& e) {
     report_for_job(std::string("shockgas: error: ") + e.what() + "\n");
