@@ -218,7 +218,8 @@ int run_command(int argc, char** argv) {
     return kExitBadInput;
   } catch (const Interrupted& e) {
     const int sig = e.signal_number();
-    report_for_job(std::string("shockgas: interrupted") + (sig ? std::string(" by SIG") + sigabbrev_np(sig) : "") +
+    report_for_job(std::string("shockgas: interrupted") +
+                   (sig ? " by signal " + std::to_string(sig) + " (SIG" + sigabbrev_np(sig) + ")" : "") +
                    unchanged + "\n");
     return sig ? 128 + sig : kExitFailure;
   } catch (const std::bad_alloc&) {

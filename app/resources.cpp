@@ -28,9 +28,9 @@ constexpr double kProcessBase = 24e6;     // the program and its libraries, resi
 constexpr double kBodyBytes = 24;         // x, v, m of one body
 constexpr double kEngineBytes = 80;       // the event engine per body while it runs (measured 78)
 // Copies of the records held at the peak (measured with threads = 1): a
-// histogram R + 3 times (the realizations' and the ensemble's, scaled and
-// written: 4 at R = 1 and 2, 4.8 at R = 3), a space-time record R + 1 times
-// (1.2 at R = 1, 2.8 at R = 2).
+// histogram 2R + 3 times (each realization's, kept and written with the
+// ensemble's, scaled and written: 5.0 at R = 1), a space-time record R + 1
+// times (1.2 at R = 1, 2.8 at R = 2).
 constexpr double kHistogramCopies = 3, kSpacetimeCopies = 1;
 constexpr double kCellResultBytes = 24;   // x, v, rho kept per cell and solver
 constexpr double kSeriesColumns = 10;     // the time series of a run (run_result.hpp)
@@ -53,7 +53,7 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   items.push_back({"particles.samples", "the time series of every realization", R * samples * kSeriesColumns * 8});
   if (p.histogram_bins > 0)
     items.push_back({"particles.histogram_bins", "the velocity histograms of every realization",
-                     (R + kHistogramCopies) * samples * d(p.histogram_bins) * 8, "particles.samples"});
+                     (2 * R + kHistogramCopies) * samples * d(p.histogram_bins) * 8, "particles.samples"});
   if (p.spacetime)
     items.push_back({"particles.spacetime", "the space-time records of every realization",
                      (R + kSpacetimeCopies) * d(p.spacetime_frames) * N * 8, "initial.N"});
