@@ -206,7 +206,7 @@ int run_command(int argc, char** argv) {
   // A run that stops early, for whatever reason, leaves its output directory
   // as it was (run_directory.hpp).
   const std::string unchanged =
-      app.got_subcommand("run") || app.got_subcommand("merge") ? " (the output directory is as it was)" : "";
+      app.got_subcommand("run") || app.got_subcommand("merge") ? " (the results in the output directory are as they were)" : "";
   try {
     // SIGINT, SIGTERM -> request_interrupt, restored on return; in an MPI job
     // its session owns them (app/mpi/mpi_job.cpp) and does the same.

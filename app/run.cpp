@@ -15,6 +15,7 @@
 #include "report_html.hpp"
 #include "resources.hpp"
 #include "run_directory.hpp"
+#include "run_target.hpp"
 #include "run_internal.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
@@ -150,10 +151,22 @@ std::string into_run_directory(const fs::path& out, const Scene& scene, const Ru
 
 std::string run_scene(const Scene& scene, const RunOptions& options) {
   const fs::path out = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
-  if (runs_in_parallel(options)) return run_parallel(scene, out, options);
   // Everything that can refuse the scene does so before any work; the resources
-  // first, before the initial condition takes its memory.
+  // first, before the initial condition takes its memory, and the output
+  // directory (a shard's is its own, partial_outputs.hpp).
   check_resources(scene, out, options.plots);
+  if (options.realizations.empty() && options.variants.empty()) {
+    const fs::path target = resolve_target(out);
+    check_target_path(target, out.string());
+    check_target_contents(target, out.string(), scene.name, options.force);
+  }
+  if (runs_in_parallel(options)) {
+    try {
+      return run_parallel(scene, out, options);
+    } catch (const InputError& e) {  // a rule checked where the work starts (the engine's own)
+      throw located(e, scene);
+    }
+  }
   std::optional<SweepPlan> sweep;
   std::optional<InitialCondition> initial;
   if (scene.has_sweep)

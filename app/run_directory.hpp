@@ -11,8 +11,9 @@
 // (`.NAME.lock`, flock) keeps two runs out of one directory; the next run into
 // it removes the staging directories that killed runs left (and, on a file
 // system without RENAME_EXCHANGE, puts back previous results that a run killed
-// half-way through its two renames had moved aside). `NAME.checkpoint/` beside
-// the target is never touched.
+// half-way through its two renames had moved aside). An interrupted
+// run's checkpoint (NAME/checkpoint.bin, checkpoint.hpp) stays until the
+// finished run replaces NAME.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "checkpoint.hpp"
 #include "manifest.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -56,6 +57,7 @@ std::optional<std::string> foreign_entry(const fs::path& dir, const std::optiona
     const fs::path relative = fs::relative(entry.path(), dir);
     if (entry.is_directory() && !entry.is_symlink()) continue;
     const bool ours = !entry.is_regular_file() || entry.is_symlink() ? false
+                      : relative == checkpoint_path("").filename() ? true  // an interrupted run's, to resume
                       : manifest ? relative == kManifestFile || manifest->find(relative.generic_string())
                                  : legacy_run_file(relative);
     if (!ours) return relative.generic_string();
@@ -113,6 +115,9 @@ void check_target_contents(const fs::path& target, const std::string& out, const
                     ", which a run did not write; a run replaces its output directory as a whole)");
   const auto theirs = scene_of_results(target);
   if (theirs == scene || force) return;
+  if (!theirs && fs::is_regular_file(checkpoint_path(target), ec) &&
+      std::distance(fs::directory_iterator(target, ec), fs::directory_iterator()) == 1)
+    return;  // only the checkpoint of an interrupted run (checkpoint.hpp)
   refuse(out, "a new or empty directory, or one that holds this scene's results (this one holds " +
                   (theirs ? "the results of scene \"" + *theirs + "\"" : std::string("results of an unknown scene")) +
                   "): give --force to replace them, or another --out");

@@ -83,7 +83,7 @@ TEST(FullDisk, ADiskThatFillsDuringTheRunLeavesThePreviousResults) {
   EXPECT_EQ(run.wait(), 1) << run.err();
   EXPECT_NE(run.err().find("H5Dwrite failed on /particles/spacetime/x (No space left on device)"), std::string::npos)
       << run.err();
-  EXPECT_NE(run.err().find("the output directory is as it was"), std::string::npos) << run.err();
+  EXPECT_NE(run.err().find("the results in the output directory are as they were"), std::string::npos) << run.err();
   EXPECT_EQ(whole_run(out, "alpha"), "");
   EXPECT_TRUE(leftovers(out).empty()) << leftovers(out).front();
 }
