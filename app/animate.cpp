@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "hdf5_file.hpp"
+#include "manifest.hpp"
 #include "plots.hpp"
 #include "report_html.hpp"
 #include "shockgas/core/error.hpp"
@@ -24,6 +25,8 @@ void animate(const std::string& dir) {
           "true: the run must record its frames (run the scene again with --set output.animation=true)");
   make_animation(dir);
   write_report_html(dir);
+  // The new files and the new report.html join the run's manifest.
+  if (const auto manifest = read_manifest(dir)) write_manifest(dir, manifest->scene);
 }
 
 }  // namespace shockgas::app

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
+#include <new>
 #include <optional>
 
 #include "animate.hpp"
@@ -15,10 +17,10 @@
 #include "shockgas/app/scene.hpp"
 #include "job.hpp"
 #include "merge.hpp"
-#include "partial_outputs.hpp"
 #include "plots.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
+#include "signals.hpp"
 #include "shockgas/studies/studies.hpp"
 #include "shockgas/studies/tail_study.hpp"
 #include "shockgas/version.hpp"
@@ -29,19 +31,11 @@ namespace {
 
 constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 
-// Ends the process by `sig` with its default action (status 128 + sig in a shell).
-[[noreturn]] void end_by_signal(int sig) {
-  std::cerr.flush();
-  std::signal(sig, SIG_DFL);
-  std::raise(sig);
-  std::_Exit(128 + sig);  // a signal whose default action does not end the process
-}
-
 struct Arguments {
   std::string scene_path, out_dir, result_path, realizations, variants, resume;
   std::vector<std::string> shards;
   std::vector<std::string> overrides;
-  bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false;
+  bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false, force = false;
   studies::StudyOptions bench;
   studies::TailStudyOptions tail;
   std::vector<double> tail_sizes;  // --N, read as numbers so that 1e7 is allowed
@@ -66,6 +60,7 @@ void add_run(CLI::App& app, Arguments& args) {
       ->excludes(out)
       ->excludes(realizations)
       ->excludes(variants);
+  run->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
 }
 
 void add_merge(CLI::App& app, Arguments& args) {
@@ -85,13 +80,8 @@ RunOptions run_options(const Arguments& args) {
   options.plots = !args.no_plots;
   options.realizations = args.realizations;
   options.variants = args.variants;
+  options.force = args.force;
   return options;
-}
-
-// SIGINT/SIGTERM remove the partial result files, except in a job of several
-// processes, whose session stops the run cooperatively instead (job.hpp).
-void guard_partial_outputs() {
-  if (current_job() == nullptr) remove_partial_outputs_on_signals();
 }
 
 // The scene of `shockgas run --resume DIR [SCENE]`, and the options of the run
@@ -111,7 +101,6 @@ Scene resumed_scene(const Arguments& args, RunOptions& options) {
 }
 
 int do_run(const Arguments& args) {
-  guard_partial_outputs();
   RunOptions options = run_options(args);
   options.checkpoint = true;
   if (args.scene_path.empty() && args.resume.empty())
@@ -156,7 +145,6 @@ int dispatch(const CLI::App& app, const Arguments& args) {
   if (app.got_subcommand("tail")) return do_tail(args);
   if (app.got_subcommand("run")) return do_run(args);
   if (app.got_subcommand("merge")) {
-    guard_partial_outputs();
     const std::string dir = merge_shards(args.shards, run_options(args));
     std::cout << "results in " << dir << "/\n";
     return kExitOk;
@@ -215,19 +203,30 @@ int run_command(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitBadInput;
   }
+  // A run that stops early, for whatever reason, leaves its output directory
+  // as it was (run_directory.hpp).
+  const std::string unchanged =
+      app.got_subcommand("run") || app.got_subcommand("merge") ? " (the results in the output directory are as they were)" : "";
   try {
+    // SIGINT, SIGTERM -> request_interrupt, restored on return; in an MPI job
+    // its session owns them (app/mpi/mpi_job.cpp) and does the same.
+    std::optional<InterruptHandlers> handlers;
+    if (!current_job()) handlers.emplace();
     return dispatch(app, args);
   } catch (const InputError& e) {
     report_for_job(std::string("shockgas: error: ") + e.what() + "\n");
     return kExitBadInput;
   } catch (const Interrupted& e) {
-    if (current_job() || e.signal_number() == 0) {
-      report_for_job(std::string("shockgas: run failed: ") + e.what() + "\n");
-      return kExitFailure;
-    }
-    end_by_signal(e.signal_number());  // the usual status of a process a signal ended
+    const int sig = e.signal_number();
+    report_for_job(std::string("shockgas: interrupted") +
+                   (sig ? " by signal " + std::to_string(sig) + " (SIG" + sigabbrev_np(sig) + ")" : "") +
+                   unchanged + "\n");
+    return sig ? 128 + sig : kExitFailure;
+  } catch (const std::bad_alloc&) {
+    report_for_job("shockgas: run failed: out of memory" + unchanged + "\n");
+    return kExitFailure;
   } catch (const std::exception& e) {
-    report_for_job(std::string("shockgas: run failed: ") + e.what() + "\n");
+    report_for_job(std::string("shockgas: run failed: ") + e.what() + unchanged + "\n");
     return kExitFailure;
   }
 }

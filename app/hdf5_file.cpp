@@ -2,23 +2,66 @@
 
 #include <hdf5.h>
 
+#include <utility>
+
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 
 namespace {
 
-// Silences HDF5's own error printing once; failures are reported by check().
-void quiet_hdf5() {
+// Once per process, before any other HDF5 call: HDF5's own error printing
+// silenced (failures are reported by check()), and no clean-up at exit: the
+// identifier of a file whose closing flush failed (a full disk) stays
+// registered, and HDF5's exit handler crashes closing it again (HDF5 1.10.8:
+// SIGSEGV in H5F__close_cb). shockgas closes every file itself (a failed close
+// is a RunError), so an exit handler has nothing to do.
+void init_hdf5() {
   static const bool done = [] {
+    H5dont_atexit();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     return true;
   }();
   (void)done;
 }
 
+// Walks HDF5's error stack, innermost entry first.
+template <class F>
+void walk_errors(F&& visit) {
+  auto cb = [](unsigned, const H5E_error2_t* e, void* data) -> herr_t {
+    (*static_cast<F*>(data))(*e);
+    return 0;
+  };
+  H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, cb, &visit);
+}
+
+// Why the last HDF5 call failed, from its error stack: the system's reason where
+// HDF5 gives one ("No space left on device"), else the innermost description.
+std::string hdf5_reason() {
+  std::string system, innermost;
+  walk_errors([&](const H5E_error2_t& e) {
+    const std::string desc = e.desc ? e.desc : "";
+    if (innermost.empty()) innermost = desc;
+    const auto at = desc.find("error message = '");
+    if (system.empty() && at != std::string::npos) {
+      const auto start = at + 17;
+      system = desc.substr(start, desc.find('\'', start) - start);
+    }
+  });
+  return system.empty() ? innermost : system;
+}
+
+bool hdf5_says_truncated() {
+  bool truncated = false;
+  walk_errors([&](const H5E_error2_t& e) { truncated |= e.min_num == H5E_TRUNCATED; });
+  return truncated;
+}
+
 std::int64_t check(std::int64_t id, const char* call, const std::string& object) {
-  if (id < 0) throw RunError(std::string("HDF5: ") + call + " failed on " + object);
+  if (id < 0) {
+    const std::string reason = hdf5_reason();
+    throw RunError(std::string("HDF5: ") + call + " failed on " + object + (reason.empty() ? "" : " (" + reason + ")"));
+  }
   return id;
 }
 
@@ -88,28 +131,43 @@ H5Handle& H5Handle::operator=(H5Handle&& o) noexcept {
   return *this;
 }
 
+std::int64_t H5Handle::release() { return std::exchange(id_, -1); }
+
 void H5Handle::reset() {
   if (id_ >= 0 && close_) close_(id_);
   id_ = -1;
 }
 
 Hdf5File Hdf5File::create(const std::string& path) {
-  quiet_hdf5();
+  init_hdf5();
   return Hdf5File(H5Handle(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "H5Fcreate",
                                  path),
-                           close_file));
+                           close_file),
+                  path, Verification::manifest);
 }
 
 Hdf5File Hdf5File::open(const std::string& path) {
-  quiet_hdf5();
+  return open(path, check_result_file(path));  // before HDF5 reads a byte of it
+}
+
+Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
+  init_hdf5();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (id < 0) throw InputError("RESULT.h5", to_text(path), "an existing shockgas result file (HDF5)");
-  return Hdf5File(H5Handle(id, close_file));
+  if (id < 0 && hdf5_says_truncated())
+    throw result_problem(path, "truncated", "shorter than the end of file its HDF5 superblock records");
+  if (id < 0) throw result_problem(path, "unreadable", "the HDF5 library refuses it: " + hdf5_reason());
+  return Hdf5File(H5Handle(id, close_file), path, verified);
+}
+
+void Hdf5File::close() {
+  const std::int64_t id = file_.release();
+  if (id >= 0) check(H5Fclose(id), "H5Fclose", path_);
 }
 
 Hdf5File Hdf5File::update(const std::string& path) {
-  quiet_hdf5();
-  return Hdf5File(H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file));
+  init_hdf5();
+  return Hdf5File(H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file),
+                  path, Verification::no_manifest);
 }
 
 H5Handle Hdf5File::ensure_group(const std::string& path) {

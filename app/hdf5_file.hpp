@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "result_check.hpp"
+
 namespace shockgas::app {
 
 // Owns one HDF5 identifier and closes it with the matching H5*close.
@@ -20,7 +22,8 @@ class H5Handle {
   H5Handle& operator=(const H5Handle&) = delete;
   ~H5Handle() { reset(); }
   std::int64_t get() const { return id_; }
-  void reset();
+  std::int64_t release();  // gives up ownership: the caller closes
+  void reset();            // closes; a failure is ignored (a destructor's close)
 
  private:
   std::int64_t id_ = -1;
@@ -40,10 +43,16 @@ class Hdf5File {
  public:
   // Creates (truncates) a file for writing.
   static Hdf5File create(const std::string& path);
-  // Opens an existing file read-only.
+  // Opens an existing result file read-only, after check_result_file()
+  // (result_check.hpp): FileProblem (exit 2) for a missing, damaged,
+  // truncated or unreadable file, before or instead of a crash inside HDF5.
   static Hdf5File open(const std::string& path);
   // Opens an existing file to add to it (RunError if it cannot be opened).
   static Hdf5File update(const std::string& path);
+  // The same for a file check_result_file() has passed with this verdict.
+  static Hdf5File open(const std::string& path, Verification checked);
+  // Whether open() checked the file against its manifest.
+  bool verified() const { return verification_ == Verification::manifest; }
 
   // Datasets; intermediate groups are created as needed. unit and description
   // become string attributes of the dataset.
@@ -66,14 +75,19 @@ class Hdf5File {
   std::vector<std::pair<std::string, std::string>> attributes(const std::string& object) const;
   std::vector<double> read(const std::string& path) const;
 
-  void close() { file_.reset(); }
+  // Closes the file (its last data flushed); RunError if that fails. Without
+  // it the destructor closes and ignores a failure (a run that failed anyway).
+  void close();
 
  private:
-  explicit Hdf5File(H5Handle file) : file_(std::move(file)) {}
+  Hdf5File(H5Handle file, std::string path, Verification v)
+      : file_(std::move(file)), path_(std::move(path)), verification_(v) {}
   H5Handle ensure_group(const std::string& path);
   void write_raw(const std::string& path, const void* data, std::int64_t type, std::vector<std::uint64_t> dims,
                  const std::string& unit, const std::string& description);
   H5Handle file_;
+  std::string path_;
+  Verification verification_;
 };
 
 }  // namespace shockgas::app

@@ -3,8 +3,10 @@
 
 #include <sstream>
 
+#include "fault.hpp"
 #include "layout_declarations.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::app {
 
@@ -177,6 +179,8 @@ std::vector<LayoutEntry> output_layout() {
 void write_part(Hdf5File& h5, const RunResults& r, Part part) {
   for (const auto& d : dataset_declarations())
     if (d.entry.part == part) {
+      fault_point("write:result.h5");
+      throw_if_aborted();
       FileEmitter out(h5, d.entry);
       d.emit(r, out);
     }

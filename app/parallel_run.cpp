@@ -115,15 +115,21 @@ std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
     c.ensemble.wall_seconds = wall[e];
     return c;
   };
-  if (scene.has_sweep) return run_sweep(scene, dir, options, source);
+  std::optional<SweepPlan> sweep;
   std::optional<InitialCondition> built;
-  if (!initial) {
+  if (scene.has_sweep) {
+    sweep = plan_sweep(scene);
+  } else if (!initial) {
     built.emplace(build_initial(scene));
     preflight(scene, *built);
     initial = &*built;
   }
-  run_single(scene, *initial, dir, options, {}, source);
-  return dir.string();
+  return into_run_directory(dir, scene, options, [&](const fs::path& staging) {
+    if (sweep)
+      run_sweep(scene, *sweep, staging, options, source);
+    else
+      run_single(scene, *initial, staging, options, {}, source);
+  });
 }
 
 }  // namespace shockgas::app

@@ -9,9 +9,8 @@
 namespace shockgas::app {
 
 // Creates dir (InputError naming --out if it cannot). The temporary files are
-// removed if the run fails or is interrupted by a thrown exception (destructor),
-// or by SIGINT, SIGTERM where the host asked for it
-// (remove_partial_outputs_on_signals). Nests (a sweep holds one per variant
+// removed if the run fails or is interrupted (Interrupted, core/interrupt.hpp,
+// unwinds through the destructor). Nests (a sweep holds one per variant
 // inside its own); runs on several threads may each hold their own.
 class PartialOutputs {
  public:
@@ -27,12 +26,5 @@ class PartialOutputs {
   std::filesystem::path dir_;
   std::string h5_tmp_, json_tmp_;
 };
-
-// For a host that leaves SIGINT and SIGTERM to shockgas (the command line):
-// handlers that remove the temporary files of every open PartialOutputs, then
-// end the process by the same signal; while a run keeps checkpoints, they ask
-// it for a checkpoint instead (checkpointer.hpp). A host with its own handlers (a Python
-// session) stops runs by an interrupt request instead (core/interrupt.hpp).
-void remove_partial_outputs_on_signals();
 
 }  // namespace shockgas::app

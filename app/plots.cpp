@@ -1,22 +1,12 @@
 #include "plots.hpp"
 
-#include <sys/wait.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
+#include "child_process.hpp"
+
 namespace shockgas::app {
-
-namespace {
-
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-}  // namespace
 
 void run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
                      const std::string& what) {
@@ -28,8 +18,7 @@ void run_plot_script(const std::string& script, const char* env_override, const 
               << " not found; run scripts/setup)\n";
     return;
   }
-  const int status = std::system((python + " " + quoted(path) + " " + quoted(dir)).c_str());
-  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const int code = run_child({python, path, dir});  // Interrupted on SIGINT, SIGTERM
   if (code == 3)
     std::cerr << "shockgas: warning: no " << what
               << " (matplotlib or h5py missing for /usr/bin/python3; run scripts/setup)\n";

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fault.hpp"
+
 namespace shockgas::app {
 
 ProgressBar::ProgressBar(bool enabled, Listener listener)
@@ -27,6 +29,7 @@ void ProgressBar::stage(const std::string& name) {
 }
 
 void ProgressBar::update(double fraction, double sim_time) {
+  fault_point("compute");
   if (!enabled_ && !listener_) return;
   std::lock_guard<std::mutex> lock(mutex_);
   if (listener_) listener_(stage_, fraction, sim_time);

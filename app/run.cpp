@@ -1,20 +1,25 @@
 // Running a scene: the initial condition built once, every part the scene asks
 // for in order (particles, continuum, comparison), each written as soon as it is
-// done, then report.md and the plots.
+// done, then summary.json, report.md, the plots and the manifest, all into the
+// staging directory that replaces the output directory at the end.
 #include "shockgas/app/run.hpp"
 
 #include <filesystem>
-#include <fstream>
 
+#include "durable_file.hpp"
+#include "manifest.hpp"
 #include "output_layout.hpp"
-#include "partial_outputs.hpp"
 #include "plots.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
 #include "report_html.hpp"
+#include "resources.hpp"
+#include "run_directory.hpp"
+#include "run_target.hpp"
 #include "run_internal.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::app {
 
@@ -110,35 +115,72 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
 
 VariantResult run_single(const Scene& scene, const InitialCondition& initial, const fs::path& dir,
                          const RunOptions& options, const PartSink& also, const EnsembleSource& source) {
-  PartialOutputs outputs(dir);
   nlohmann::ordered_json summary;
   ProgressBar progress(options.progress, options.on_progress);
   RunResults r;
   {
-    Hdf5File h5 = Hdf5File::create(outputs.h5_path());
+    Hdf5File h5 = Hdf5File::create((dir / "result.h5").string());
     r = compute_parts(scene, initial, progress, [&](const RunResults& partial, Part part) {
       write_part(h5, partial, part);
       summarize_part(summary, partial, part);
       if (also) also(partial, part);
+      throw_if_aborted();
     }, source);
     h5.close();
-    std::ofstream(dir / "report.md") << report_text(r);
   }
-  outputs.commit(summary);
+  write_file(dir / "summary.json", summary.dump(2) + "\n");
+  write_file(dir / "report.md", report_text(r));
   if (options.plots && scene.output.plots) make_plots(dir.string());
   if (options.plots && scene.output.plots && scene.output.animation) make_animation(dir.string());
   write_report_html(dir);
+  write_manifest(dir, scene.name);
   return reduce(r, std::move(summary));
 }
 
+std::string into_run_directory(const fs::path& out, const Scene& scene, const RunOptions& options,
+                               const std::function<void(const fs::path& staging)>& write) {
+  RunDirectory dir(out, scene.name, options.force);
+  try {
+    write(dir.staging());
+  } catch (const InputError& e) {  // a rule checked where the work starts (the engine's own)
+    throw located(e, scene);
+  }
+  dir.commit();
+  return out.string();
+}
+
 std::string run_scene(const Scene& scene, const RunOptions& options) {
-  const fs::path dir = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
-  if (runs_in_parallel(options)) return run_parallel(scene, dir, options);
-  if (scene.has_sweep) return run_sweep(scene, dir, options);
-  const InitialCondition initial = build_initial(scene);
-  preflight(scene, initial);
-  run_single(scene, initial, dir, options);
-  return dir.string();
+  const fs::path out = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
+  // Everything that can refuse the scene does so before any work; the resources
+  // first, before the initial condition takes its memory, and the output
+  // directory (a shard's is its own, partial_outputs.hpp).
+  check_resources(scene, out, options.plots);
+  if (options.realizations.empty() && options.variants.empty()) {
+    const fs::path target = resolve_target(out);
+    check_target_path(target, out.string());
+    check_target_contents(target, out.string(), scene.name, options.force);
+  }
+  if (runs_in_parallel(options)) {
+    try {
+      return run_parallel(scene, out, options);
+    } catch (const InputError& e) {  // a rule checked where the work starts (the engine's own)
+      throw located(e, scene);
+    }
+  }
+  std::optional<SweepPlan> sweep;
+  std::optional<InitialCondition> initial;
+  if (scene.has_sweep)
+    sweep = plan_sweep(scene);
+  else {
+    initial.emplace(build_initial(scene));
+    preflight(scene, *initial);
+  }
+  return into_run_directory(out, scene, options, [&](const fs::path& staging) {
+    if (sweep)
+      run_sweep(scene, *sweep, staging, options);
+    else
+      run_single(scene, *initial, staging, options);
+  });
 }
 
 }  // namespace shockgas::app

@@ -2,7 +2,9 @@
 // The steps of run_scene (run.cpp), shared with a sweep (run_sweep.cpp).
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "output_layout.hpp"
 #include "progress_bar.hpp"
@@ -29,15 +31,31 @@ using PartSink = std::function<void(const RunResults&, Part)>;
 RunResults compute_parts(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
                          const PartSink& sink, const EnsembleSource& source = {});
 
-// One scene (no sweep) into dir, after preflight(); each part also handed to
-// `also`, if given. Returns what a sweep keeps of it.
+// One scene (no sweep) into dir (existing and empty), after preflight():
+// result.h5, summary.json, report.md, the plots, manifest.json; each part also
+// handed to `also`, if given. Returns what a sweep keeps of it.
 VariantResult run_single(const Scene& scene, const InitialCondition& initial,
                          const std::filesystem::path& dir, const RunOptions& options,
                          const PartSink& also = {}, const EnsembleSource& source = {});
 
-// A [sweep] scene: each variant into dir/<k>-<label>/, the side-by-side table and plots into dir.
-std::string run_sweep(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options,
-                      const EnsembleSource& source = {});
+// The variants of a [sweep] scene, each valid, its initial condition built and
+// its solvers' limits checked, before any work.
+struct SweepPlan {
+  std::vector<Scene> variants;
+  std::vector<std::optional<InitialCondition>> initial;  // released as each variant finishes
+};
+SweepPlan plan_sweep(const Scene& scene);
+
+// A [sweep] scene into dir (existing and empty): each variant into
+// dir/<k>-<label>/, then the side-by-side table, plots and manifest into dir.
+void run_sweep(const Scene& scene, SweepPlan& plan, const std::filesystem::path& dir, const RunOptions& options,
+               const EnsembleSource& source = {});
+
+// Runs write(staging) into a run directory for out (run_directory.hpp: checked,
+// locked, staged) and moves it into place when write returns; returns out. An
+// InputError from write is located at the scene's key.
+std::string into_run_directory(const std::filesystem::path& out, const Scene& scene, const RunOptions& options,
+                               const std::function<void(const std::filesystem::path& staging)>& write);
 
 // A run on the processes of an MPI job, or of a slice of the realizations (a
 // shard): parallel_run.cpp.

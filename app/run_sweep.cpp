@@ -3,12 +3,12 @@
 // literature's values (report.md), the T(t) curves and scaled velocity
 // distributions of every variant in one result file and in one plot. The
 // variants' results are collected in memory as they finish.
-#include <fstream>
 #include <optional>
 #include <sstream>
 
+#include "durable_file.hpp"
+#include "manifest.hpp"
 #include "output_layout.hpp"
-#include "partial_outputs.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 #include "report_html.hpp"
@@ -51,9 +51,9 @@ std::string table_row(const VariantResult& v, const SweepParams& sweep, std::siz
   return row + " |";
 }
 
-void write_report(const fs::path& dir, const Scene& scene, const std::vector<VariantResult>& variants) {
+std::string report(const Scene& scene, const std::vector<VariantResult>& variants) {
   const auto& sweep = scene.sweep;
-  std::ofstream out(dir / "report.md");
+  std::ostringstream out;
   out << report_header(scene);
   if (!sweep.reference_key.empty()) {
     out << "| variant | " << sweep.reference_key << " (shockgas)"
@@ -64,46 +64,49 @@ void write_report(const fs::path& dir, const Scene& scene, const std::vector<Var
   }
   out << "\nEach variant's own report, result file and plots are in its directory:\n\n";
   for (const auto& v : variants) out << "- `" << v.directory << "/`: " << v.label << "\n";
+  return out.str();
 }
 
 }  // namespace
 
-std::string run_sweep(const Scene& scene, const fs::path& dir, const RunOptions& options,
-                      const EnsembleSource& source) {
-  // Every variant valid, its initial condition built and its solvers' limits
-  // checked, before any work.
-  const std::vector<Scene> variants = expand_sweep(scene);
-  std::vector<std::optional<InitialCondition>> initial;
-  for (const auto& v : variants) {
-    initial.emplace_back(build_initial(v));
-    preflight(v, *initial.back());
+SweepPlan plan_sweep(const Scene& scene) {
+  SweepPlan plan;
+  plan.variants = expand_sweep(scene);
+  for (const auto& v : plan.variants) {
+    plan.initial.emplace_back(build_initial(v));
+    preflight(v, *plan.initial.back());
   }
-  PartialOutputs outputs(dir);
+  return plan;
+}
+
+void run_sweep(const Scene& scene, SweepPlan& plan, const fs::path& dir, const RunOptions& options,
+               const EnsembleSource& source) {
+  const auto& variants = plan.variants;
   RunResults r;
   r.scene = &scene;
   for (std::size_t k = 0; k < variants.size(); ++k) {
     const std::string label = variants[k].name.substr(scene.name.size() + 1);
     const std::string sub = std::to_string(k) + "-" + slug(label);
-    VariantResult v = run_single(variants[k], *initial[k], dir / sub, options, {}, source);
-    initial[k].reset();  // its run is done
+    fs::create_directory(dir / sub);
+    VariantResult v = run_single(variants[k], *plan.initial[k], dir / sub, options, {}, source);
+    plan.initial[k].reset();  // its run is done
     v.label = label;
     v.set = scene.sweep.variants[k];
     v.directory = sub;
     r.variants.push_back(std::move(v));
   }
   ordered_json summary;
-  {
-    Hdf5File h5 = Hdf5File::create(outputs.h5_path());
-    for (Part part : {Part::provenance, Part::sweep}) {
-      write_part(h5, r, part);
-      summarize_part(summary, r, part);
-    }
+  Hdf5File h5 = Hdf5File::create((dir / "result.h5").string());
+  for (Part part : {Part::provenance, Part::sweep}) {
+    write_part(h5, r, part);
+    summarize_part(summary, r, part);
   }
-  outputs.commit(summary);
-  write_report(dir, scene, r.variants);
+  h5.close();
+  write_file(dir / "summary.json", summary.dump(2) + "\n");
+  write_file(dir / "report.md", report(scene, r.variants));
   if (options.plots && scene.output.plots) make_plots(dir.string());
   write_report_html(dir);
-  return dir.string();
+  write_manifest(dir, scene.name);
 }
 
 }  // namespace shockgas::app

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "file_problem.hpp"
 #include "frames.hpp"
 #include "output_layout.hpp"
 #include "scene_schema.hpp"
@@ -25,27 +26,43 @@ std::string table_names() {
   return list;
 }
 
-// "--set particles.r=0.5": the value is read as a TOML value; a bare word that
-// is not TOML is a string.
-void apply_override(toml::table& root, const std::string& assignment, Scene& scene) {
+// An override and where it was given: "--set particles.r=0.5", or a variant of
+// [sweep] ("scene.toml:30 (sweep variant 2: particles.r=0.5)").
+struct Override {
+  std::string assignment;
+  std::string origin;
+};
+
+std::string trimmed(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t"), last = s.find_last_not_of(" \t");
+  return first == std::string::npos ? "" : s.substr(first, last - first + 1);
+}
+
+// "particles.r=0.5" (spaces around '=' allowed): the value is read as a TOML
+// value; a bare word that is not TOML is a string.
+void apply_override(toml::table& root, const Override& o, Scene& scene) {
+  const std::string& assignment = o.assignment;
   const auto eq = assignment.find('=');
-  const std::string key = assignment.substr(0, eq);
+  const std::string key = trimmed(assignment.substr(0, eq));
   const auto dot = key.find('.');
   if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == key.size())
-    throw InputError("--set", to_text(assignment), "table.key=value, e.g. particles.r=0.5");
+    throw InputError("--set", to_text(assignment), "table.key=value, e.g. particles.r=0.5", o.origin);
   const std::string table = key.substr(0, dot), name = key.substr(dot + 1);
-  const std::string text = assignment.substr(eq + 1);
+  const std::string text = trimmed(assignment.substr(eq + 1));
   toml::table parsed;
   try {
     parsed = toml::parse("value = " + text);
   } catch (const toml::parse_error&) {
     parsed.insert_or_assign("value", text);
   }
-  if (!root.contains(table)) root.insert_or_assign(table, toml::table{});
+  if (!root.contains(table)) {
+    root.insert_or_assign(table, toml::table{});
+    scene.key_origin[table] = o.origin;
+  }
   auto* tbl = root[table].as_table();
-  if (!tbl) throw InputError(table, "(not a table)", "a table " + table_names(), "--set " + assignment);
+  if (!tbl) throw InputError(table, "(not a table)", "a table " + table_names(), o.origin);
   tbl->insert_or_assign(name, *parsed["value"].node());
-  scene.key_origin[key] = "--set " + assignment;
+  scene.key_origin[key] = o.origin;
 }
 
 void read_table(const TableSpec& table, const toml::table& tbl, const std::string& path, Scene& scene) {
@@ -65,14 +82,25 @@ void read_table(const TableSpec& table, const toml::table& tbl, const std::strin
   }
 }
 
+// A top-level name that is not one of the tables: a table of the file, a key
+// outside any table, or the table of an override.
+[[noreturn]] void refuse_table(const std::string& table, const toml::node& node, const std::string& path,
+                               const Scene& scene) {
+  const std::string allowed = "the tables " + table_names() + " (keys go inside a table)";
+  const auto set = scene.key_origin.find(table);
+  if (set != scene.key_origin.end() && node.is_table() && !node.as_table()->empty()) {
+    const auto first = node.as_table()->begin();
+    throw InputError(table + "." + std::string(first->first.str()), node_text(first->second),
+                     "a key of one of " + allowed, set->second);
+  }
+  throw InputError(table, node.is_table() ? "[" + table + "]" : node_text(node), allowed, location(path, node));
+}
+
 void read_tables(const toml::table& root, const std::string& path, Scene& scene) {
   for (const auto& [k, node] : root) {
     const std::string table(k.str());
-    const auto origin = location(path, node);
     const TableSpec* spec = find_table(table);
-    if (!spec || !node.is_table())
-      throw InputError(table, node_text(node), "the tables " + table_names() + " (keys go inside a table)",
-                       origin);
+    if (!spec || !node.is_table()) refuse_table(table, node, path, scene);
     read_table(*spec, *node.as_table(), path, scene);
   }
   scene.has_particles = root.contains("particles");
@@ -133,7 +161,17 @@ void validate_compare(const Scene& scene) {
           "particle data (not \"" + name_of(Velocities::expression) + "\") when [compare] is present");
 }
 
+// The name becomes a directory, out/<name>/: a name, not a path.
+void validate_name(const Scene& scene) {
+  const std::string& n = scene.name;
+  bool ok = !n.empty() && n.size() <= 200 && n.front() != '.';
+  for (unsigned char c : n) ok = ok && c != '/' && c != '\\' && c >= 0x20 && c != 0x7f;
+  const bool from_file = !scene.key_origin.count("scene.name");
+  require(ok, "scene.name", n, kSceneNameRule + (from_file ? " (this one is the file's name: set [scene] name)" : ""));
+}
+
 void validate_scene(const Scene& scene) {
+  validate_name(scene);
   validate(scene.initial);
   particles::validate(scene.particles);
   continuum::validate(scene.continuum);
@@ -146,22 +184,25 @@ void validate_scene(const Scene& scene) {
   check_animation(scene);
 }
 
-}  // namespace
-
-Scene parse_scene(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+Scene parse(const std::string& text, const std::string& path, const std::vector<Override>& overrides) {
   toml::table root;
   try {
     root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
-    throw InputError("scene", to_text(path), std::string("valid TOML (") + std::string(e.description()) + ")",
-                     path + ":" + std::to_string(e.source().begin.line));
+    const auto& at = e.source().begin;
+    throw FileProblem("SCENE", path + ":" + std::to_string(at.line) + ":" + std::to_string(at.column),
+                      "TOML syntax error", std::string(e.description()));
   }
   Scene scene;
   scene.path = path;
   scene.text = text;
-  scene.overrides = overrides;
-  for (const auto& o : overrides) apply_override(root, o, scene);
+  for (const auto& o : overrides) {
+    apply_override(root, o, scene);
+    scene.overrides.push_back(o.assignment);
+  }
   read_tables(root, path, scene);
+  if (!scene.has_particles && !scene.has_continuum)
+    throw FileProblem("SCENE", path, "runs nothing", "a scene needs [particles] or [continuum]");
   if (scene.name.empty()) scene.name = std::filesystem::path(path).stem().string();
   resolve_file(scene, path);
   try {
@@ -173,20 +214,34 @@ Scene parse_scene(const std::string& text, const std::string& path, const std::v
   return scene;
 }
 
+std::vector<Override> command_line(const std::vector<std::string>& overrides) {
+  std::vector<Override> out;
+  for (const auto& o : overrides) out.push_back({o, "--set " + o});
+  return out;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+  return parse(text, path, command_line(overrides));
+}
+
 std::vector<Scene> expand_sweep(const Scene& scene) {
   std::vector<Scene> variants;
+  const std::string at = scene.key_origin.count("sweep.variants") ? scene.key_origin.at("sweep.variants") : scene.path;
   for (std::size_t i = 0; i < scene.sweep.variants.size(); ++i) {
-    auto overrides = scene.overrides;
+    const std::string variant = "sweep variant " + std::to_string(i + 1) + ": " + scene.sweep.variants[i];
+    auto overrides = command_line(scene.overrides);
     for (const auto& a : split_assignments(scene.sweep.variants[i])) {
       require(a.rfind("sweep.", 0) != 0, "sweep.variants", a, "overrides of keys outside [sweep]");
-      overrides.push_back(a);
+      overrides.push_back({a, at + " (" + variant + ")"});
     }
     Scene v;
     try {
-      v = parse_scene(scene.text, scene.path, overrides);
+      v = parse(scene.text, scene.path, overrides);
     } catch (const InputError& e) {
-      throw InputError(e.key(), e.value(), e.allowed(),
-                       e.where() + " (sweep variant " + std::to_string(i + 1) + ": " + scene.sweep.variants[i] + ")");
+      if (e.where().find("(sweep variant") != std::string::npos) throw;
+      throw InputError(e.key(), e.value(), e.allowed(), e.where() + " (" + variant + ")");
     }
     v.has_sweep = false;
     const std::string label = scene.sweep.labels.empty() ? scene.sweep.variants[i] : scene.sweep.labels[i];
@@ -197,10 +252,19 @@ std::vector<Scene> expand_sweep(const Scene& scene) {
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (status.type() == std::filesystem::file_type::not_found) throw FileProblem("SCENE", path, "no such file", "");
+  if (status.type() == std::filesystem::file_type::directory)
+    throw FileProblem("SCENE", path, "a directory", "give a scene file (.toml), e.g. data/scenes/default.toml");
+  if (status.type() != std::filesystem::file_type::regular)
+    throw FileProblem("SCENE", path, "not a regular file", "give a scene file (.toml)");
   std::ifstream in(path);
-  if (!in) throw InputError("scene", to_text(path), "an existing, readable scene file (.toml)");
   std::ostringstream text;
   text << in.rdbuf();
+  if (!in) throw FileProblem("SCENE", path, "unreadable", "");
+  if (text.str().find_first_not_of(" \t\r\n") == std::string::npos)
+    throw FileProblem("SCENE", path, "empty", "a scene needs [particles] or [continuum]");
   return parse_scene(text.str(), path, overrides);
 }
 

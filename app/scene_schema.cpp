@@ -12,7 +12,7 @@ namespace {
 ParameterTable<Scene> scene_table() {
   ParameterTable<Scene> t("scene");
   t.add(&Scene::name, "name", "", "scene name; results go to out/<name>/",
-        described("any text; empty = the file's name"));
+        described(kSceneNameRule + "; empty = the file's name"));
   t.add(&Scene::description, "description", "", "what the scene shows");
   t.add(&Scene::expected_runtime, "expected_runtime", "", "wall time on a 2-core machine");
   return t;
@@ -168,9 +168,15 @@ std::string toml_text(const ParameterValue& v) {
 }
 
 std::string node_text(const toml::node& node) {
+  constexpr std::size_t kLongest = 100;  // a message names a value, it does not reprint a file
   std::ostringstream out;
-  node.visit([&](const auto& n) { out << n; });
-  return out.str();
+  if (auto x = node.value_exact<double>())
+    out << to_text(*x);
+  else
+    node.visit([&](const auto& n) { out << n; });
+  std::string text = out.str();
+  if (text.size() > kLongest) text = text.substr(0, kLongest) + "... (" + std::to_string(text.size()) + " characters)";
+  return text;
 }
 
 }  // namespace shockgas::app

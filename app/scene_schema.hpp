@@ -38,7 +38,12 @@ const TableSpec* find_table(const std::string& name);
 ParameterValue from_toml(const toml::node& node);
 std::string toml_text(const ParameterValue& value);
 
-// TOML text of a node (for error messages).
+// What [scene] name may be: it names the directory out/<name>/, so it is a
+// name, not a path.
+inline const std::string kSceneNameRule =
+    "a name, not a path: no '/', '\\' or control characters, not starting with '.', at most 200 bytes";
+
+// TOML text of a node (for error messages; a long one is cut).
 std::string node_text(const toml::node& node);
 
 }  // namespace shockgas::app

@@ -67,6 +67,12 @@ add_library(shockgas_sundials INTERFACE)
 target_include_directories(shockgas_sundials SYSTEM INTERFACE ${SUNDIALS_INCLUDE_DIR})
 target_link_libraries(shockgas_sundials INTERFACE ${SUNDIALS_LIBRARIES})
 
+# SHA-256 of the result files (app/sha256.cpp): OpenSSL's libcrypto.
+find_package(OpenSSL QUIET COMPONENTS Crypto)
+if(NOT OpenSSL_FOUND)
+  shockgas_missing("OpenSSL libcrypto" "libssl-dev")
+endif()
+
 find_package(Threads REQUIRED)
 
 if(SHOCKGAS_BUILD_TESTS)

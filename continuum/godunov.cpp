@@ -106,6 +106,7 @@ SolverInfo godunov_solver() {
   s.summary = "Burgers + continuity, first-order Godunov finite volume with the exact Riemann flux";
   s.label = s.name + " (1st order)";
   s.colour = "tab:blue";
+  s.bytes_per_cell = 60;  // peak resident memory at work, measured at 2e4-4e5 cells
   return s;
 }
 
@@ -114,6 +115,7 @@ SolverInfo godunov2_solver() {
   s.summary = "Burgers + continuity, second-order MUSCL-Hancock finite volume (continuum.limiter)";
   s.label = s.name + " (2nd order)";
   s.colour = "tab:orange";
+  s.bytes_per_cell = 60;  // peak resident memory at work, measured at 2e4-4e5 cells
   s.by_default = true;
   return s;
 }

@@ -115,6 +115,7 @@ SolverInfo hopf_cole_solver() {
   s.summary = "viscous Burgers (velocity only) by the Hopf-Cole transform: FFT, or log-domain heat kernel";
   s.label = s.name + " (viscous, exact)";
   s.colour = "tab:red";
+  s.bytes_per_cell = 75;  // peak resident memory at work, measured at 2e4-4e5 cells
   s.viscous = true;
   s.direct_in_time = true;
   s.preflight = [](const InitialField&, const ContinuumParams& p, double t_end) { check_input(p, t_end); };

@@ -62,6 +62,7 @@ SolverInfo hopf_lax_solver() {
   s.summary = "the exact inviscid limit (Hopf-Lax / Legendre transform; for particle data the sticky hull)";
   s.label = s.name + " (exact)";
   s.colour = "black";
+  s.bytes_per_cell = 620;  // peak resident memory at work, measured at 2e4-4e5 cells
   s.density = true;
   s.shocks = true;
   s.exact = true;

@@ -51,6 +51,11 @@ const ParameterTable<ContinuumParams>& parameters() {
 
 void validate(const ContinuumParams& p) {
   parameters().check(p);
+  require(!p.solvers.empty(), "continuum.solvers", std::string("[]"), "at least one registered solver");
+  for (std::size_t i = 0; i < p.solvers.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      require(p.solvers[i] != p.solvers[j], "continuum.solvers", p.solvers[i],
+              "each solver once (it writes one group of results)");
   require(p.cfl <= 1 || p.allow_unstable, "continuum.cfl", p.cfl,
           "a Courant number in (0, 1] (set continuum.allow_unstable = true to go beyond)");
 }

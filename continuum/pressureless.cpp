@@ -65,6 +65,7 @@ SolverInfo pressureless_solver() {
   s.summary = "the pressureless gas (sticky particles' continuum), first-order Godunov with delta-shocks";
   s.label = s.name + " (sticky gas, 1st order)";
   s.colour = "tab:green";
+  s.bytes_per_cell = 60;  // peak resident memory at work, measured at 2e4-4e5 cells
   s.density = true;
   s.preflight = check_input;
   s.run = solve_pressureless;

@@ -21,6 +21,14 @@ InputError::InputError(std::string key, std::string value, std::string allowed, 
       allowed_(std::move(allowed)),
       where_(std::move(where)) {}
 
+InputError::InputError(std::string key, std::string value, std::string allowed, std::string where,
+                       Message message)
+    : std::runtime_error(message.text),
+      key_(std::move(key)),
+      value_(std::move(value)),
+      allowed_(std::move(allowed)),
+      where_(std::move(where)) {}
+
 InputError InputError::located(const std::string& where) const {
   return InputError(key_, value_, allowed_, where);
 }

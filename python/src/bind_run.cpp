@@ -102,7 +102,9 @@ app::CapturedOutputs capture_single(const app::Scene& scene, const std::string& 
   } else {
     const app::RunOptions options{
         .out_dir = out_dir, .progress = false, .plots = plots, .on_progress = listener};
-    app::run_single(scene, initial, out_dir, options, app::capture_into(captured));
+    app::into_run_directory(out_dir, scene, options, [&](const std::filesystem::path& staging) {
+      app::run_single(scene, initial, staging, options, app::capture_into(captured));
+    });
   }
   return captured;
 }
@@ -117,7 +119,10 @@ app::CapturedOutputs capture_sweep(const app::Scene& scene, const std::string& o
       .progress = false,
       .plots = plots,
       .on_progress = [&relay](const std::string& stage, double f, double t) { relay.report(stage, f, t); }};
-  app::run_sweep(scene, out_dir, options);
+  app::SweepPlan plan = app::plan_sweep(scene);
+  app::into_run_directory(out_dir, scene, options, [&](const std::filesystem::path& staging) {
+    app::run_sweep(scene, plan, staging, options);
+  });
   return app::read_outputs(out_dir);
 }
 

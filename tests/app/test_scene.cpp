@@ -96,8 +96,9 @@ TEST(Scene, MissingFile) {
 
 TEST(Scene, SyntaxError) {
   const auto e = error_of("[particles]\nr = = 1\n");
-  EXPECT_EQ(e.key(), "scene");
-  EXPECT_EQ(e.where(), "bad.toml:2");
+  EXPECT_EQ(e.key(), "SCENE");
+  EXPECT_EQ(e.where(), "bad.toml:2:5");
+  EXPECT_EQ(std::string(e.what()).rfind("bad.toml:2:5: TOML syntax error: ", 0), 0u) << e.what();
 }
 
 TEST(Scene, OverrideSetsValuesReadAsToml) {

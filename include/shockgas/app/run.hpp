@@ -2,9 +2,10 @@
 // Running a scene: every part the scene asks for, then the result files.
 //
 // Output directory DIR: result.h5, summary.json (both laid out as docs/output.md
-// says), report.md, *.png. result.h5 and summary.json are written under
-// temporary names and renamed when complete, so an interrupted run never leaves
-// a file that looks whole.
+// says), report.md, *.png, manifest.json. DIR is whole or absent: the run
+// writes into a staging directory beside it and replaces DIR by it only when
+// everything is written, so a failed, interrupted or killed run leaves DIR as
+// it was (docs/output.md, "The run directory").
 #include <functional>
 #include <string>
 
@@ -30,11 +31,13 @@ struct RunOptions {
   // the fraction of the stage done in [0, 1] and the simulated time reached.
   // Called from the run's threads, one call at a time; a host's own display.
   std::function<void(const std::string& stage, double fraction, double sim_time)> on_progress;
+  bool force = false;     // replace a directory that holds another scene's results
 };
 
 // Returns the output directory. Throws InputError for input that the scene's
-// parts refuse before any work (nothing written), RunError on a failure during
-// the run (the temporary files are removed).
+// parts, the resources or the output directory refuse before any work (nothing
+// written), RunError on a failure during the run and Interrupted when an
+// interrupt was requested (core/interrupt.hpp); in both DIR is left as it was.
 std::string run_scene(const Scene& scene, const RunOptions& options);
 
 }  // namespace shockgas::app

@@ -29,6 +29,9 @@ struct SolverInfo {
   bool viscous = false;     // solves at viscosity continuum.nu
   bool exact = false;       // the exact inviscid solution: the others' L1 errors are measured against it
   bool by_default = false;  // run when a scene does not name continuum.solvers
+  // Memory at work per cell, bytes (the run's resource preflight); 0 = not
+  // measured, taken as the largest of the registered solvers'.
+  double bytes_per_cell = 0;
   // Evaluates its fields at any t directly (closed form in t, no marching): the
   // fields at several times are one evaluation each. A solver without it marches,
   // and continues from its own cell averages at each output time (series.hpp).

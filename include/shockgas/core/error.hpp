@@ -28,6 +28,14 @@ class InputError : public std::runtime_error {
   // The same error located in a file ("scene.toml:12").
   InputError located(const std::string& where) const;
 
+ protected:
+  // For an error whose message is written whole rather than composed
+  // (app/file_problem.hpp); it survives copies as InputError.
+  struct Message {
+    std::string text;
+  };
+  InputError(std::string key, std::string value, std::string allowed, std::string where, Message message);
+
  private:
   std::string key_, value_, allowed_, where_;
 };

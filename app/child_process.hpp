@@ -1,0 +1,19 @@
+#pragma once
+// A helper program run to its end, or stopped with the run: the plotting
+// script. The child runs in a process group of its own (a Ctrl-C at the
+// terminal reaches shockgas alone, which decides), dies with shockgas
+// (PR_SET_PDEATHSIG: no orphan even after a SIGKILL), and is stopped when an
+// interrupt is requested (core/interrupt.hpp): SIGTERM to its group, SIGKILL
+// after a grace time, then Interrupted is thrown.
+#include <string>
+#include <vector>
+
+namespace shockgas::app {
+
+// Runs argv (argv[0]: the program's path), inheriting stdout and stderr, and
+// returns its exit status (128 + signal if a signal ended it; 127 if it could
+// not be started). Throws Interrupted once the child is gone if an interrupt was
+// requested meanwhile. Passes the fault point "plot" at each poll (fault.hpp).
+int run_child(const std::vector<std::string>& argv);
+
+}  // namespace shockgas::app

@@ -1,0 +1,31 @@
+#pragma once
+// Files written so that a failure is reported and what is kept is on the disk:
+// every write checked, each file fsynced before its directory is moved into
+// place (run_directory.hpp).
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace shockgas::app {
+
+// Writes text to path (created or truncated), fsyncs and closes it; RunError
+// naming the file, the system's reason and the free space on a failure. Passes
+// the fault point "write:<file name>" half-way (fault.hpp).
+void write_file(const std::filesystem::path& path, const std::string& text);
+
+// fsync of every file and directory under dir, then of dir itself.
+void sync_tree(const std::filesystem::path& dir);
+// fsync of one directory (its entries: after a rename into it).
+void sync_directory(const std::filesystem::path& dir);
+
+// Bytes free for an unprivileged user on the file system holding path (or its
+// nearest existing ancestor); the largest value if unknown.
+std::uint64_t free_bytes(const std::filesystem::path& path);
+
+// "1.4 MB", "830 kB", "12 GB": a size for messages (decimal units).
+std::string size_text(double bytes);
+
+// "cannot write PATH: REASON (the file system holding it has N free)".
+std::string write_failure(const std::filesystem::path& path, const std::string& reason);
+
+}  // namespace shockgas::app

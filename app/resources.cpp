@@ -1,0 +1,286 @@
+// The resource preflight (resources.hpp): the estimate, item by item, and the
+// limits of the process.
+#include "resources.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "durable_file.hpp"
+#include "run_target.hpp"
+#include "scene_schema.hpp"
+#include "shockgas/continuum/registry.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Measured costs (tests/app/test_resources.cpp holds the total against the peak
+// resident memory of real runs):
+constexpr double kProcessBase = 24e6;     // the program and its libraries, resident (measured 18-22 MB)
+constexpr double kBodyBytes = 24;         // x, v, m of one body
+constexpr double kEngineBytes = 80;       // the event engine per body while it runs (measured 78)
+// Copies of the records held at the peak (measured with threads = 1): a
+// histogram 2R + 3 times (each realization's, kept and written with the
+// ensemble's, scaled and written: 5.0 at R = 1), a space-time record R + 1
+// times (1.2 at R = 1, 2.8 at R = 2).
+constexpr double kHistogramCopies = 3, kSpacetimeCopies = 1;
+constexpr double kCellResultBytes = 24;   // x, v, rho kept per cell and solver
+constexpr double kSeriesColumns = 10;     // the time series of a run (run_result.hpp)
+constexpr double kFileOverhead = 64e3;    // HDF5 metadata, attributes, summary.json, report.md
+constexpr double kPlotsBytes = 1.5e6;     // the PNG plots of a run
+
+double d(std::size_t n) { return static_cast<double>(n); }
+
+std::size_t concurrent_runs(const particles::ParticleParams& p) {
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  return std::min<std::size_t>(p.realizations, p.threads == 0 ? cores : p.threads);
+}
+
+// What a run of one scene (no sweep) holds at its peak.
+void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
+  const auto& p = s.particles;
+  const double N = d(s.initial.N), R = d(p.realizations), samples = d(p.samples);
+  items.push_back({"initial.N", "the particles: the initial condition, the engines at work, the final states",
+                   N * (kBodyBytes + d(concurrent_runs(p)) * (kEngineBytes + kBodyBytes) + R * kBodyBytes)});
+  items.push_back({"particles.samples", "the time series of every realization", R * samples * kSeriesColumns * 8});
+  if (p.histogram_bins > 0)
+    items.push_back({"particles.histogram_bins", "the velocity histograms of every realization",
+                     (2 * R + kHistogramCopies) * samples * d(p.histogram_bins) * 8, "particles.samples"});
+  if (p.spacetime)
+    items.push_back({"particles.spacetime", "the space-time records of every realization",
+                     (R + kSpacetimeCopies) * d(p.spacetime_frames) * N * 8, "initial.N"});
+  if (!p.snapshots.empty())
+    items.push_back({"particles.snapshots", "the snapshots of every realization",
+                     R * d(p.snapshots.size()) * N * kBodyBytes});
+}
+
+// A continuum solver at work, bytes per cell (its registration's measure); a
+// solver without one is given the largest.
+double solver_cell_bytes(const std::string& solver) {
+  double largest = 0;
+  for (const auto& info : continuum::registered_solvers()) largest = std::max(largest, info.bytes_per_cell);
+  const double own = continuum::solver_info(solver).bytes_per_cell;
+  return own > 0 ? own : largest;
+}
+
+void continuum_memory(const Scene& s, std::vector<ResourceItem>& items) {
+  const double cells = d(s.continuum.cells), solvers = d(s.continuum.solvers.size());
+  double at_work = 0;  // the solvers run one after the other
+  for (const auto& solver : s.continuum.solvers) at_work = std::max(at_work, solver_cell_bytes(solver));
+  items.push_back({"continuum.cells", "the continuum solvers: one at work, the fields of each kept",
+                   cells * (at_work + solvers * kCellResultBytes)});
+}
+
+// The frames of an animation (app/frames.hpp): the particles (at most N
+// clusters) and every solver's fields at each frame time, held and written.
+double frame_bytes(const Scene& s) {
+  if (!s.output.animation) return 0;
+  const double particles = s.has_particles ? d(s.initial.N) * kBodyBytes : 0;
+  const double fields = s.has_continuum ? d(s.continuum.cells) * d(s.continuum.solvers.size()) * kCellResultBytes : 0;
+  return d(s.output.animation_frames) * (particles + fields);
+}
+
+std::vector<ResourceItem> single_memory(const Scene& s) {
+  std::vector<ResourceItem> items;
+  if (s.has_particles) particle_memory(s, items);
+  if (s.has_continuum) continuum_memory(s, items);
+  if (s.output.animation)
+    items.push_back({"output.animation_frames", "the frames of the animation", frame_bytes(s)});
+  return items;
+}
+
+std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
+  std::vector<ResourceItem> items;
+  const auto& p = s.particles;
+  const double N = d(s.initial.N), samples = d(p.samples);
+  if (s.has_particles) {
+    items.push_back({"initial.N", "the initial and final states", 2 * N * kBodyBytes});
+    items.push_back({"particles.samples", "the time series", samples * 2 * kSeriesColumns * 8});
+    if (p.histogram_bins > 0)
+      items.push_back({"particles.histogram_bins", "the velocity histogram", samples * d(p.histogram_bins) * 8,
+                       "particles.samples"});
+    if (p.spacetime)
+      items.push_back({"particles.spacetime", "the space-time record", d(p.spacetime_frames) * N * 8, "initial.N"});
+    if (!p.snapshots.empty())
+      items.push_back({"particles.snapshots", "the snapshots", d(p.snapshots.size()) * N * kBodyBytes});
+  }
+  const double cells = d(s.continuum.cells);
+  if (s.has_continuum && s.output.fields)
+    items.push_back({"continuum.cells", "the continuum fields", cells * d(s.continuum.solvers.size()) * kCellResultBytes});
+  if (s.has_continuum && s.has_compare)
+    items.push_back({"continuum.cells", "the particles on the continuum's grid", cells * kCellResultBytes});
+  if (s.output.animation) items.push_back({"output.animation_frames", "the frames of the animation", frame_bytes(s)});
+  items.push_back({"", "metadata, summary.json, report.md", kFileOverhead});
+  if (plots && s.output.plots) items.push_back({"output.plots", "the plots", kPlotsBytes});
+  return items;
+}
+
+// A sweep's variants as scenes (their overrides applied), or the scene itself.
+std::vector<Scene> runs_of(const Scene& scene) {
+  if (!scene.has_sweep) return {scene};
+  return expand_sweep(scene);
+}
+
+std::optional<double> read_number(const fs::path& file) {
+  std::ifstream in(file);
+  std::string word;
+  if (!(in >> word) || word == "max") return std::nullopt;
+  try {
+    return std::stod(word);
+  } catch (...) {
+    return std::nullopt;
+  }
+}
+
+// "memory:/path" (v1) or "0::/path" (v2) of /proc/self/cgroup.
+std::optional<fs::path> cgroup_path(const fs::path& root, bool v2) {
+  std::ifstream in(root / "proc/self/cgroup");
+  for (std::string line; std::getline(in, line);) {
+    const auto a = line.find(':'), b = line.find(':', a + 1);
+    if (a == std::string::npos || b == std::string::npos) continue;
+    const std::string controllers = line.substr(a + 1, b - a - 1);
+    if (v2 ? line.substr(0, a) == "0" && controllers.empty()
+           : ("," + controllers + ",").find(",memory,") != std::string::npos)
+      return fs::path(line.substr(b + 1)).relative_path();
+  }
+  return std::nullopt;
+}
+
+void consider(MemoryLimit& limit, std::optional<double> bytes, const std::string& source) {
+  if (bytes && *bytes < limit.bytes) limit = {std::max(0.0, *bytes), source};
+}
+
+// limit - usage of a cgroup directory (either file missing: no limit known).
+std::optional<double> cgroup_room(const fs::path& dir, const char* limit_file, const char* usage_file) {
+  const auto limit = read_number(dir / limit_file);
+  if (!limit || *limit > 1e18) return std::nullopt;  // v1 writes "no limit" as 2^63 - 4096
+  return *limit - read_number(dir / usage_file).value_or(0);
+}
+
+std::optional<double> meminfo(const fs::path& root, const std::string& key) {
+  std::ifstream in(root / "proc/meminfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(key + ":", 0) == 0) return 1024 * std::stod(line.substr(key.size() + 1));  // in kB
+  return std::nullopt;
+}
+
+std::optional<double> rlimit_room(int resource, const fs::path& root, const std::string& in_use) {
+  struct rlimit r {};
+  if (getrlimit(resource, &r) != 0 || r.rlim_cur == RLIM_INFINITY) return std::nullopt;
+  std::ifstream in(root / "proc/self/status");
+  double used = 0;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(in_use + ":", 0) == 0) used = 1024 * std::stod(line.substr(in_use.size() + 1));
+  return static_cast<double>(r.rlim_cur) - used;
+}
+
+// The key's value as the scene gives it, for the message.
+std::string value_of(const Scene& scene, const std::string& dotted) {
+  const auto dot = dotted.find('.');
+  const TableSpec* table = dot == std::string::npos ? nullptr : find_table(dotted.substr(0, dot));
+  const KeySpec* key = table ? table->find(dotted.substr(dot + 1)) : nullptr;
+  return key ? key->get(scene).written : "(the scene)";
+}
+
+// The key a refusal names: of the keys an item grows with, the one the
+// command line or a sweep variant set (the user's change), else its own.
+std::string blamed_key(const Scene& scene, const ResourceItem& item) {
+  auto overridden = [&](const std::string& key) {
+    const auto it = scene.key_origin.find(key);
+    return !key.empty() && it != scene.key_origin.end() &&
+           (it->second.rfind("--set ", 0) == 0 || it->second.find("(sweep variant") != std::string::npos);
+  };
+  return !overridden(item.key) && overridden(item.factor) ? item.factor : item.key;
+}
+
+std::string estimate_text(const ResourceEstimate& e) {
+  const ResourceItem& big = e.largest();
+  const std::string keys = big.key + (big.factor.empty() ? "" : " x " + big.factor);
+  return "about " + size_text(e.total()) + " (" + (big.key.empty() ? "" : keys + ": ") + big.what + ", " +
+         size_text(big.bytes) + ")";
+}
+
+}  // namespace
+
+double ResourceEstimate::total() const {
+  double sum = 0;
+  for (const auto& i : items) sum += i.bytes;
+  return sum;
+}
+
+const ResourceItem& ResourceEstimate::largest() const {
+  return *std::max_element(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.bytes < b.bytes; });
+}
+
+ResourceEstimate estimate_memory(const Scene& scene) {
+  ResourceEstimate e;
+  e.items.push_back({"", "the program and its libraries", kProcessBase});
+  const auto runs = runs_of(scene);
+  std::vector<ResourceItem> biggest;
+  double biggest_total = -1, initial_conditions = 0;
+  for (const auto& run : runs) {
+    const auto items = single_memory(run);
+    double total = 0;
+    for (const auto& i : items) total += i.bytes;
+    if (total > biggest_total) biggest_total = total, biggest = items;
+    if (run.has_particles) initial_conditions += d(run.initial.N) * kBodyBytes;
+  }
+  for (auto& i : biggest) e.items.push_back(std::move(i));
+  if (runs.size() > 1)
+    e.items.push_back({"sweep.variants", "the initial conditions of every variant, built up front", initial_conditions});
+  return e;
+}
+
+ResourceEstimate estimate_disk(const Scene& scene, bool plots) {
+  ResourceEstimate e;
+  for (const auto& run : runs_of(scene))
+    for (auto& i : single_disk(run, plots)) e.items.push_back(std::move(i));
+  if (scene.has_sweep) e.items.push_back({"", "the sweep's own files", kFileOverhead + (plots ? kPlotsBytes : 0)});
+  return e;
+}
+
+MemoryLimit memory_limit(const fs::path& root) {
+  MemoryLimit limit{std::numeric_limits<double>::infinity(), "no limit known"};
+  consider(limit, meminfo(root, "MemAvailable"), "MemAvailable in /proc/meminfo");
+  const fs::path cg = root / "sys/fs/cgroup";
+  consider(limit, cgroup_room(cg, "memory.max", "memory.current"), "the cgroup's memory.max");
+  if (const auto own = cgroup_path(root, true))
+    consider(limit, cgroup_room(cg / *own, "memory.max", "memory.current"), "the cgroup's memory.max");
+  if (const auto own = cgroup_path(root, false))
+    consider(limit, cgroup_room(cg / "memory" / *own, "memory.limit_in_bytes", "memory.usage_in_bytes"),
+             "the cgroup's memory.limit_in_bytes");
+  consider(limit, cgroup_room(cg / "memory", "memory.limit_in_bytes", "memory.usage_in_bytes"),
+           "the cgroup's memory.limit_in_bytes");
+  consider(limit, rlimit_room(RLIMIT_AS, root, "VmSize"), "ulimit -v (address space)");
+  consider(limit, rlimit_room(RLIMIT_DATA, root, "VmData"), "ulimit -d (data segment)");
+  return limit;
+}
+
+void check_resources(const Scene& scene, const fs::path& out, bool plots) {
+  const ResourceEstimate memory = estimate_memory(scene);
+  const MemoryLimit limit = memory_limit();
+  if (memory.total() > limit.bytes) {
+    const std::string key = blamed_key(scene, memory.largest());
+    const auto origin = scene.key_origin.find(key);
+    throw InputError(key.empty() ? "scene" : key, value_of(scene, key),
+                     "a scene that fits in the memory available: it needs " + estimate_text(memory) + ", " +
+                         size_text(limit.bytes) + " available (" + limit.source + ")",
+                     origin != scene.key_origin.end() ? origin->second : scene.path);
+  }
+  const ResourceEstimate disk = estimate_disk(scene, plots);
+  const double free = static_cast<double>(free_bytes(resolve_target(out)));
+  if (disk.total() > free)
+    throw InputError("--out", to_text(out.string()),
+                     "a file system with room for the results: they need " + estimate_text(disk) + ", " +
+                         size_text(free) + " free");
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,88 @@
+#include "result_check.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+
+#include "durable_file.hpp"
+#include "manifest.hpp"
+#include "sha256.hpp"
+
+namespace shockgas::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The HDF5 format signature; the superblock starts at 0 or, after a user
+// block, at 512, 1024, 2048, ... bytes (HDF5 File Format Specification, II.A).
+constexpr std::array<unsigned char, 8> kSignature = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+
+bool has_hdf5_signature(const fs::path& file, std::uint64_t size) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw result_problem(file.string(), "unreadable", std::strerror(errno));
+  bool found = false;
+  for (std::uint64_t at = 0; !found && at + kSignature.size() <= size; at = at == 0 ? 512 : 2 * at) {
+    std::array<unsigned char, 8> head{};
+    found = ::pread(fd, head.data(), head.size(), static_cast<off_t>(at)) == static_cast<ssize_t>(head.size()) &&
+            head == kSignature;
+  }
+  ::close(fd);
+  return found;
+}
+
+void check_against(const ManifestEntry& e, const fs::path& file, std::uint64_t size) {
+  const std::string manifest = (file.parent_path() / kManifestFile).string();
+  if (size < e.bytes)
+    throw result_problem(file.string(), "truncated",
+                          std::to_string(size) + " of the " + std::to_string(e.bytes) + " bytes " + manifest +
+                              " recorded when the run wrote it");
+  if (size != e.bytes || sha256_of_file(file) != e.sha256)
+    throw result_problem(file.string(), "damaged",
+                          "its SHA-256 differs from the one " + manifest +
+                              " recorded when the run wrote it; run the scene again");
+}
+
+}  // namespace
+
+fs::path result_file_of(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_directory(path, ec)) return path;
+  if (fs::exists(path / "result.h5", ec)) return path / "result.h5";
+  throw result_problem(path.string(), "a directory",
+                        "give a result file, or a run directory that holds result.h5 (this one does not)");
+}
+
+Verification check_result_file(const fs::path& file) {
+  struct stat st {};
+  if (::stat(file.c_str(), &st) != 0) {
+    if (errno == ENOENT) throw result_problem(file.string(), "no such file", "");
+    throw result_problem(file.string(), "unreadable", std::strerror(errno));
+  }
+  if (S_ISDIR(st.st_mode)) return check_result_file(result_file_of(file));
+  if (!S_ISREG(st.st_mode))
+    throw result_problem(file.string(), "not a regular file", "a device, pipe or socket, not a result file");
+  const auto size = static_cast<std::uint64_t>(st.st_size);
+  const auto manifest = read_manifest(file.parent_path());
+  const ManifestEntry* entry = manifest ? manifest->find(file.filename().string()) : nullptr;
+  if (entry) {
+    check_against(*entry, file, size);
+    return Verification::manifest;
+  }
+  if (size == 0) throw result_problem(file.string(), "empty", "0 bytes: the run that wrote it did not finish");
+  if (!has_hdf5_signature(file, size))
+    throw result_problem(file.string(), "not an HDF5 file", "it does not start with the HDF5 signature");
+  return Verification::no_manifest;
+}
+
+std::string unverified_warning(const fs::path& file) {
+  return file.string() + " is not listed in a " + kManifestFile +
+         " beside it (written before shockgas recorded checksums, or copied without it): its integrity "
+         "cannot be checked";
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,126 @@
+#include "run_target.hpp"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "checkpoint.hpp"
+#include "manifest.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void refuse(const std::string& out, const std::string& allowed) {
+  throw InputError("--out", to_text(out), allowed);
+}
+
+// Whether a is b or a directory above b.
+bool contains(const fs::path& a, const fs::path& b) {
+  const auto [end_a, at_b] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
+  return end_a == a.end() || (std::next(end_a) == a.end() && end_a->empty());
+}
+
+std::vector<std::pair<std::string, fs::path>> protected_directories() {
+  std::vector<std::pair<std::string, fs::path>> dirs;
+  std::error_code ec;
+  dirs.emplace_back("the current directory", fs::current_path(ec));
+  if (const char* home = std::getenv("HOME"); home && *home) dirs.emplace_back("the home directory", home);
+  dirs.emplace_back("the source tree", SHOCKGAS_SOURCE_DIR);
+  for (auto& [what, dir] : dirs) dir = fs::weakly_canonical(dir, ec);
+  return dirs;
+}
+
+// Files an older shockgas (without manifest.json) wrote into a run directory.
+bool legacy_run_file(const fs::path& relative) {
+  static const std::vector<std::string> names = {"result.h5", "summary.json", "report.md", "report.html"};
+  static const std::vector<std::string> extensions = {".png", ".gif", ".mp4", ".svg"};
+  const std::string name = relative.filename().string();
+  if (name.find(".partial-") != std::string::npos) return true;  // killed runs of older versions
+  if (std::find(names.begin(), names.end(), name) != names.end()) return true;
+  if (std::find(extensions.begin(), extensions.end(), relative.extension().string()) != extensions.end())
+    return true;
+  return false;
+}
+
+// The first entry under dir that is not a result of a run: not listed in the
+// manifest (or, without one, not a file an older version wrote).
+std::optional<std::string> foreign_entry(const fs::path& dir, const std::optional<Manifest>& manifest) {
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    const fs::path relative = fs::relative(entry.path(), dir);
+    if (entry.is_directory() && !entry.is_symlink()) continue;
+    const bool ours = !entry.is_regular_file() || entry.is_symlink() ? false
+                      : relative == checkpoint_path("").filename() ? true  // an interrupted run's, to resume
+                      : manifest ? relative == kManifestFile || manifest->find(relative.generic_string())
+                                 : legacy_run_file(relative);
+    if (!ours) return relative.generic_string();
+  }
+  return std::nullopt;
+}
+
+std::string read_text(const fs::path& file, std::uintmax_t limit) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec) || fs::file_size(file, ec) > limit) return "";
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+fs::path resolve_target(const fs::path& out) {
+  std::error_code ec;
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(out, ec), ec);
+  return ec ? fs::absolute(out).lexically_normal() : resolved;
+}
+
+void check_target_path(const fs::path& target, const std::string& out) {
+  const std::string replaced = " (a run replaces its output directory as a whole)";
+  if (target == target.root_path()) refuse(out, "a directory other than the root directory" + replaced);
+  for (const auto& [what, dir] : protected_directories())
+    if (contains(target, dir))
+      refuse(out, "a directory that is neither " + what + " (" + dir.string() + ") nor above it" + replaced);
+  std::error_code ec;
+  const auto status = fs::symlink_status(target, ec);
+  if (status.type() == fs::file_type::not_found) return;
+  if (status.type() != fs::file_type::directory) refuse(out, "a directory (this is not one)");
+  struct stat here {}, above {};
+  if (::stat(target.c_str(), &here) == 0 && ::stat(target.parent_path().c_str(), &above) == 0 &&
+      here.st_dev != above.st_dev)
+    refuse(out, "a directory that is not a mount point (give a directory inside it)" + replaced);
+}
+
+std::optional<std::string> scene_of_results(const fs::path& dir) {
+  if (const auto manifest = read_manifest(dir)) return manifest->scene;
+  const auto summary = nlohmann::json::parse(read_text(dir / "summary.json", 64u << 20), nullptr, false);
+  if (summary.is_object() && summary.contains("scene") && summary["scene"].is_string())
+    return summary["scene"].get<std::string>();
+  return std::nullopt;
+}
+
+void check_target_contents(const fs::path& target, const std::string& out, const std::string& scene, bool force) {
+  std::error_code ec;
+  if (!fs::is_directory(target, ec) || fs::is_empty(target, ec)) return;
+  const auto manifest = read_manifest(target);
+  if (const auto foreign = foreign_entry(target, manifest))
+    refuse(out, "a new or empty directory, or one that holds only shockgas results (this one holds " + *foreign +
+                    ", which a run did not write; a run replaces its output directory as a whole)");
+  const auto theirs = scene_of_results(target);
+  if (theirs == scene || force) return;
+  if (!theirs && fs::is_regular_file(checkpoint_path(target), ec) &&
+      std::distance(fs::directory_iterator(target, ec), fs::directory_iterator()) == 1)
+    return;  // only the checkpoint of an interrupted run (checkpoint.hpp)
+  refuse(out, "a new or empty directory, or one that holds this scene's results (this one holds " +
+                  (theirs ? "the results of scene \"" + *theirs + "\"" : std::string("results of an unknown scene")) +
+                  "): give --force to replace them, or another --out");
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,30 @@
+#pragma once
+// Which directories a run may replace. A run replaces its output directory as
+// a whole (run_directory.hpp), so it refuses a directory whose loss would hurt
+// or surprise: the root, the current, home or source directory or one above
+// them, a mount point, a directory holding files shockgas did not write, and,
+// unless forced, the results of another scene. Every refusal is an InputError
+// naming --out, before any work.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace shockgas::app {
+
+// The target as the run will use it: absolute, with symbolic links resolved.
+std::filesystem::path resolve_target(const std::filesystem::path& out);
+
+// The refusals that need only the path (the root, protected directories, not a
+// directory, a mount point); out is the --out as given, for the message.
+void check_target_path(const std::filesystem::path& target, const std::string& out);
+
+// The refusals that need the contents (foreign files, another scene's results
+// without force). Called with the directory's lock held.
+void check_target_contents(const std::filesystem::path& target, const std::string& out, const std::string& scene,
+                           bool force);
+
+// The scene whose results dir holds: from its manifest.json, or the
+// summary.json of an older version; nullopt if neither names one.
+std::optional<std::string> scene_of_results(const std::filesystem::path& dir);
+
+}  // namespace shockgas::app

@@ -1,0 +1,131 @@
+// A full or read-only disk (findings: a run on a full 2 MB file system died
+// with SIGSEGV in the HDF5 library's shutdown after a failed write, leaving the
+// new report beside the old results; a read-only --out gave exit 1): each test
+// mounts a small tmpfs (skipped with a message where it cannot).
+#include <gtest/gtest.h>
+#include <sys/mount.h>
+
+#include <filesystem>
+#include <string>
+
+#include "child_run.hpp"
+#include "run_dir_checks.hpp"
+#include "two_runs.hpp"
+
+namespace shockgas::app {
+namespace {
+
+using namespace testing;
+
+// A tmpfs of `size` mounted for the test's lifetime (root, or CAP_SYS_ADMIN, needed).
+class SmallDisk {
+ public:
+  SmallDisk(const std::string& name, const std::string& size) : dir_(fresh_dir(name)) {
+    mounted_ = mount("tmpfs", dir_.c_str(), "tmpfs", 0, ("size=" + size).c_str()) == 0;
+  }
+  ~SmallDisk() {
+    if (mounted_) umount2(dir_.c_str(), MNT_DETACH);
+  }
+  bool mounted() const { return mounted_; }
+  const fs::path& dir() const { return dir_; }
+  void remount_read_only() { mount("tmpfs", dir_.c_str(), "tmpfs", MS_REMOUNT | MS_RDONLY, nullptr); }
+  // Fills the disk up to `keep` free bytes.
+  void fill(std::uintmax_t keep) {
+    const auto free = fs::space(dir_).available;
+    if (free <= keep) return;
+    std::FILE* f = std::fopen((dir_ / "filler").c_str(), "wb");
+    std::vector<char> block(1 << 16, 'x');
+    for (std::uintmax_t left = free - keep; left > 0;) {
+      const std::size_t n = std::min<std::uintmax_t>(left, block.size());
+      if (std::fwrite(block.data(), 1, n, f) != n) break;
+      left -= n;
+    }
+    std::fclose(f);
+  }
+
+ private:
+  fs::path dir_;
+  bool mounted_ = false;
+};
+
+#define REQUIRE_MOUNTED(disk) \
+  if (!(disk).mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (needs root or CAP_SYS_ADMIN)"
+
+// The finding as reported: the default scene with N = 5000 on a 2 MB tmpfs.
+TEST(FullDisk, TheDefaultSceneOnATwoMegabyteDiskEndsCleanlyAndWritesNothing) {
+  SmallDisk disk("fulldisk-default", "2m");
+  REQUIRE_MOUNTED(disk);
+  const fs::path scene = fs::path(SHOCKGAS_SOURCE_DIR) / "data/scenes/default.toml";
+  const auto [code, err] =
+      run_child({"run", scene.string(), "--set", "initial.N=5000", "--out", (disk.dir() / "D").string(), "-q"});
+  EXPECT_TRUE(code == 1 || code == 2) << "status " << code << "\n" << err;
+  EXPECT_FALSE(fs::exists(disk.dir() / "D"));
+  EXPECT_TRUE(leftovers(disk.dir() / "D").empty());
+}
+
+// The disk fills up while the run computes (it stops at its first progress
+// report, SHOCKGAS_FAULT=compute:1:stop, while the test fills the disk): the
+// write of the space-time record fails in H5Dwrite, as in the finding, and the
+// run ends with exit 1 (not SIGSEGV in the HDF5 library's exit handler) and a
+// message naming the cause; the directory keeps the previous, complete results.
+TEST(FullDisk, ADiskThatFillsDuringTheRunLeavesThePreviousResults) {
+  SmallDisk disk("fulldisk-during", "2m");
+  REQUIRE_MOUNTED(disk);
+  const TwoRuns s = alpha_done(disk.dir());
+  const fs::path& out = s.out;
+  ASSERT_EQ(whole_run(out, "alpha"), "");
+  Child run({"run", s.b.string(), "--out", out.string(), "-q", "--no-plots", "--force", "--set",
+             "particles.spacetime=true", "--set", "particles.spacetime_frames=100"},  // 640 kB of record
+            with_env({{"SHOCKGAS_FAULT", "compute:1:stop"}}));
+  ASSERT_TRUE(run.wait_stopped()) << run.err();
+  disk.fill(20000);
+  kill(run.pid(), SIGCONT);
+  EXPECT_EQ(run.wait(), 1) << run.err();
+  EXPECT_NE(run.err().find("H5Dwrite failed on /particles/spacetime/x (No space left on device)"), std::string::npos)
+      << run.err();
+  EXPECT_NE(run.err().find("the results in the output directory are as they were"), std::string::npos) << run.err();
+  EXPECT_EQ(whole_run(out, "alpha"), "");
+  EXPECT_TRUE(leftovers(out).empty()) << leftovers(out).front();
+}
+
+// Too little room before the run: refused by the preflight (exit 2), naming
+// the disk, the estimate and the room; the previous results stay.
+TEST(FullDisk, TooLittleRoomIsRefusedBeforeAnyWork) {
+  SmallDisk disk("fulldisk-before", "2m");
+  REQUIRE_MOUNTED(disk);
+  const TwoRuns s = alpha_done(disk.dir());
+  const fs::path& out = s.out;
+  disk.fill(30000);
+  const auto [code, err] = run_child({"run", s.b.string(), "--out", out.string(), "-q", "--no-plots", "--force"});
+  EXPECT_EQ(code, 2) << err;
+  EXPECT_NE(err.find("a file system with room for the results"), std::string::npos) << err;
+  EXPECT_EQ(whole_run(out, "alpha"), "");
+  EXPECT_TRUE(leftovers(out).empty());
+}
+
+TEST(FullDisk, AReadOnlyOutputDirectoryIsBadInput) {
+  SmallDisk disk("readonly", "1m");
+  REQUIRE_MOUNTED(disk);
+  write_text(disk.dir() / "alpha.toml", kSceneA);
+  fs::create_directories(disk.dir() / "sub");
+  disk.remount_read_only();
+  for (const fs::path& out : {disk.dir() / "D", disk.dir() / "sub" / "D", disk.dir() / "sub"}) {
+    const auto [code, err] =
+        run_child({"run", (disk.dir() / "alpha.toml").string(), "--out", out.string(), "-q", "--no-plots"});
+    EXPECT_EQ(code, 2) << out << "\n" << err;
+    EXPECT_NE(err.find("Read-only file system"), std::string::npos) << err;
+  }
+}
+
+TEST(FullDisk, AMountPointIsNotReplaced) {
+  SmallDisk disk("mountpoint", "1m");
+  REQUIRE_MOUNTED(disk);
+  const fs::path scene = disk.dir().parent_path() / "mountpoint-alpha.toml";
+  write_text(scene, kSceneA);
+  const auto [code, err] = run_child({"run", scene.string(), "--out", disk.dir().string(), "-q", "--no-plots"});
+  EXPECT_EQ(code, 2) << err;
+  EXPECT_NE(err.find("not a mount point"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace shockgas::app

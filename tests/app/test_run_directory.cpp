@@ -1,0 +1,207 @@
+// The run directory is whole or absent (findings: a failed run mixed old and
+// new results; another scene's results were overwritten without a word and its
+// stale plots kept; killed runs left files no run cleared): replaced as a
+// whole, refused when it holds what a run must not replace, locked, and cleared
+// of what killed runs left.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "run_dir_checks.hpp"
+#include "run_directory.hpp"
+#include "shockgas/app/command.hpp"
+
+namespace shockgas::app {
+namespace {
+
+using namespace testing;
+
+int run(std::vector<std::string> args, std::string* err = nullptr) {
+  args.insert(args.begin(), "shockgas");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  ::testing::internal::CaptureStderr();
+  const int code = run_command(static_cast<int>(argv.size()), argv.data());
+  const std::string text = ::testing::internal::GetCapturedStderr();
+  if (err) *err = text;
+  return code;
+}
+
+struct Dirs {
+  fs::path root, a, b, out;
+};
+
+Dirs setup(const std::string& name) {
+  Dirs d;
+  d.root = fresh_dir(name);
+  d.a = d.root / "alpha.toml";
+  d.b = d.root / "beta.toml";
+  write_text(d.a, kSceneA);
+  write_text(d.b, kSceneB);
+  d.out = d.root / "results";
+  return d;
+}
+
+TEST(RunDirectory, ASceneRunAgainReplacesItsResultsAsAWhole) {
+  const Dirs d = setup("rundir-again");
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 0);
+  EXPECT_EQ(whole_run(d.out, "alpha"), "");
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots", "--set", "particles.r=0.3"}), 0);
+  EXPECT_EQ(whole_run(d.out, "alpha"), "");
+  EXPECT_NE(read_text(d.out / "summary.json").find("particles.r=0.3"), std::string::npos);
+  EXPECT_TRUE(leftovers(d.out).empty()) << leftovers(d.out).front();
+}
+
+TEST(RunDirectory, AnotherScenesResultsAreRefusedUnlessForced) {
+  const Dirs d = setup("rundir-other");
+  const fs::path script = fake_plot_script(d.root, 0);
+  setenv("SHOCKGAS_PLOT_SCRIPT", script.c_str(), 1);
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q"}), 0);
+  ASSERT_TRUE(fs::exists(d.out / "alpha.png"));
+  std::string err;
+  EXPECT_EQ(run({"run", d.b.string(), "--out", d.out.string(), "-q"}, &err), 2);
+  EXPECT_NE(err.find("the results of scene \"alpha\""), std::string::npos) << err;
+  EXPECT_NE(err.find("--force"), std::string::npos) << err;
+  EXPECT_EQ(whole_run(d.out, "alpha"), "");
+  // Forced, the old results go as a whole: no stale picture of alpha beside beta's.
+  EXPECT_EQ(run({"run", d.b.string(), "--out", d.out.string(), "-q", "--force"}), 0);
+  unsetenv("SHOCKGAS_PLOT_SCRIPT");
+  EXPECT_EQ(whole_run(d.out, "beta"), "");
+  EXPECT_TRUE(fs::exists(d.out / "beta.png"));
+  EXPECT_FALSE(fs::exists(d.out / "alpha.png"));
+}
+
+TEST(RunDirectory, FilesARunDidNotWriteAreNeverReplaced) {
+  const Dirs d = setup("rundir-foreign");
+  write_text(d.out / "notes.txt", "my notes\n");
+  std::string err;
+  EXPECT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--force"}, &err), 2);
+  EXPECT_NE(err.find("notes.txt"), std::string::npos) << err;
+  EXPECT_EQ(read_text(d.out / "notes.txt"), "my notes\n");
+  // The same inside a run directory: a file its manifest does not list.
+  ASSERT_EQ(run({"run", d.a.string(), "--out", (d.root / "r2").string(), "-q", "--no-plots"}), 0);
+  write_text(d.root / "r2" / "mine.dat", "1 2 3\n");
+  EXPECT_EQ(run({"run", d.a.string(), "--out", (d.root / "r2").string(), "-q", "--no-plots"}, &err), 2);
+  EXPECT_NE(err.find("mine.dat"), std::string::npos) << err;
+}
+
+TEST(RunDirectory, TheRootHomeSourceAndCurrentDirectoriesAreRefused) {
+  const Dirs d = setup("rundir-protected");
+  const fs::path cwd = fs::current_path();
+  std::vector<std::string> refused = {".", "/", SHOCKGAS_SOURCE_DIR, cwd.parent_path().string(), "..",
+                                      std::string(SHOCKGAS_SOURCE_DIR) + "/.."};
+  if (const char* home = std::getenv("HOME")) refused.push_back(home);
+  for (const auto& out : refused) {
+    std::string err;
+    EXPECT_EQ(run({"run", d.a.string(), "--out", out, "-q", "--no-plots", "--force"}, &err), 2) << out;
+    EXPECT_NE(err.find("--out"), std::string::npos) << err;
+  }
+  EXPECT_TRUE(fs::exists(fs::path(SHOCKGAS_SOURCE_DIR) / "CMakeLists.txt"));
+}
+
+TEST(RunDirectory, AFileIsNotAnOutputDirectory) {
+  const Dirs d = setup("rundir-file");
+  write_text(d.out, "a file\n");
+  EXPECT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 2);
+  EXPECT_EQ(read_text(d.out), "a file\n");
+}
+
+TEST(RunDirectory, ALockKeepsASecondRunOut) {
+  const Dirs d = setup("rundir-lock");
+  const fs::path target = fs::weakly_canonical(d.out);
+  std::string err;
+  {
+    const DirectoryLock held(target, d.out.string());
+    EXPECT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}, &err), 2);
+    EXPECT_NE(err.find("no other run is writing"), std::string::npos) << err;
+    EXPECT_FALSE(fs::exists(d.out));
+  }
+  EXPECT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 0);
+  EXPECT_TRUE(leftovers(d.out).empty());
+}
+
+TEST(RunDirectory, WhatKilledRunsLeftIsClearedByTheNextRun) {
+  const Dirs d = setup("rundir-leftovers");
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 0);
+  write_text(d.root / ".results.tmp-4242-abcdef" / "result.h5", "half a file");
+  write_text(d.out.parent_path() / ".results.lock", "4242");  // a lock file whose holder is gone
+  std::string err;
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}, &err), 0);
+  EXPECT_NE(err.find("left by a run that was killed"), std::string::npos) << err;
+  EXPECT_TRUE(leftovers(d.out).empty()) << leftovers(d.out).front();
+  EXPECT_EQ(whole_run(d.out, "alpha"), "");
+}
+
+TEST(RunDirectory, OlderResultsWithoutAManifestAreReplacedAndTheirPartialFilesGo) {
+  const Dirs d = setup("rundir-legacy");
+  write_text(d.out / "result.h5", "old");
+  write_text(d.out / "summary.json", "{\"scene\": \"alpha\"}\n");
+  write_text(d.out / "report.md", "old report");
+  write_text(d.out / "temperature.png", "old picture");
+  write_text(d.out / "result.h5.partial-12345", "killed");
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 0);
+  EXPECT_EQ(whole_run(d.out, "alpha"), "");
+  EXPECT_FALSE(fs::exists(d.out / "temperature.png"));
+  EXPECT_FALSE(fs::exists(d.out / "result.h5.partial-12345"));
+}
+
+// On a file system without RENAME_EXCHANGE the swap takes two renames; a run
+// killed between them leaves the target missing, and the next run puts the
+// previous results back before it starts.
+TEST(RunDirectory, TwoRenamesAreRecoveredAfterAKillBetweenThem) {
+  const Dirs d = setup("rundir-tworenames");
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 0);
+  const fs::path target = fs::weakly_canonical(d.out);
+  fs::rename(target, d.root / ".results.old-777-xyzxyz");  // the first rename of a killed run
+  write_text(d.root / ".results.tmp-777-xyzxyz" / "result.h5", "complete or not");
+  EXPECT_TRUE(clear_leftovers(target).size() == 2);
+  EXPECT_EQ(whole_run(target, "alpha"), "");
+  EXPECT_TRUE(leftovers(target).empty());
+  // And the two renames themselves, to the end.
+  const fs::path staging = d.root / ".results.tmp-1-aaaaaa";
+  write_text(staging / "x.txt", "new");
+  const fs::path previous = swap_into_place(staging, target, SwapMethod::two_renames);
+  EXPECT_EQ(read_text(target / "x.txt"), "new");
+  EXPECT_EQ(whole_run(previous, "alpha"), "");
+}
+
+TEST(RunDirectory, AnInputErrorLeavesNothingAnywhere) {
+  const Dirs d = setup("rundir-nothing");
+  const fs::path out = d.root / "deep" / "er" / "results";
+  EXPECT_EQ(run({"run", d.a.string(), "--out", out.string(), "-q", "--set", "particles.r=2"}), 2);
+  EXPECT_FALSE(fs::exists(d.root / "deep"));
+}
+
+TEST(RunDirectory, ASweepIsWholeWithItsVariantsInside) {
+  const Dirs d = setup("rundir-sweep");
+  write_text(d.root / "sweep.toml", std::string(kSceneA) +
+                                        "[sweep]\nvariants = [\"particles.r=0.2\", \"particles.r=0.6\"]\n"
+                                        "labels = [\"low\", \"high\"]\n[output]\nplots = false\n");
+  ASSERT_EQ(run({"run", (d.root / "sweep.toml").string(), "--out", d.out.string(), "-q"}), 0);
+  EXPECT_EQ(whole_run(d.out, "alpha"), "");
+  EXPECT_EQ(whole_run(d.out / "0-low", "alpha/low"), "");
+  EXPECT_EQ(whole_run(d.out / "1-high", "alpha/high"), "");
+  EXPECT_NE(read_text(d.out / kManifestFile).find("1-high/result.h5"), std::string::npos);
+}
+
+// `shockgas animate DIR` adds files to a finished run: they join its manifest,
+// so the directory stays whole and the scene can run into it again.
+TEST(RunDirectory, AnimateKeepsTheManifestWhole) {
+  const Dirs d = setup("rundir-animate");
+  write_text(d.a, std::string(kSceneA) + "[output]\nplots = false\nanimation = true\nanimation_frames = 3\n");
+  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q"}), 0);
+  const fs::path script = d.root / "fake_animate.py";
+  write_text(script, "import os, sys\nopen(os.path.join(sys.argv[1], 'animation.gif'), 'w').write('gif')\n");
+  setenv("SHOCKGAS_ANIMATE_SCRIPT", script.c_str(), 1);
+  const int animated = run({"animate", d.out.string()});
+  unsetenv("SHOCKGAS_ANIMATE_SCRIPT");
+  ASSERT_EQ(animated, 0);
+  ASSERT_TRUE(fs::exists(d.out / "animation.gif"));
+  EXPECT_EQ(whole_run(d.out, "alpha"), "");
+  EXPECT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q"}), 0);
+}
+
+}  // namespace
+}  // namespace shockgas::app
