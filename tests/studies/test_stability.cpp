@@ -90,7 +90,8 @@ TEST(BenchCommon, ShockPositionErrorIsTheShiftOfTheCrossing) {
 }
 
 TEST(BenchStability, CsvWritesNonFiniteAsEmptyCell) {
-  const std::string path = testing_support::process_temp_path("shockgas_bench_csv_test-", "table.csv").string();
+  const std::string path =
+      testing_support::process_temp_path("shockgas_bench_csv_test-", "table.csv").string();
   {
     CsvWriter csv(path, {"a", "b", "c"});
     csv << 1.5 << NAN << "x, y";
