@@ -6,9 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "process_temp_path.hpp"
 #include "shockgas/app/command.hpp"
 
 namespace shockgas::app::testing_support {
+
+using shockgas::testing_support::fresh_process_directory;
+using shockgas::testing_support::process_temp_path;
 
 // Runs the command with these arguments (after the program name); its exit code.
 inline int run(std::vector<std::string> args) {
@@ -26,13 +30,10 @@ inline int run_saying(std::vector<std::string> args, std::string& said) {
   return code;
 }
 
-// An empty directory <temp>/<prefix><name of the running test>.
+// An empty directory <temp>/<prefix><pid>-<name of the running test>.
 inline std::filesystem::path fresh_test_directory(const std::string& prefix) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   (prefix + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
+  return shockgas::testing_support::fresh_process_directory(
+      prefix, ::testing::UnitTest::GetInstance()->current_test_info()->name());
 }
 
 }  // namespace shockgas::app::testing_support

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "manifest.hpp"
+#include "process_temp_path.hpp"
 #include "sha256.hpp"
 
 namespace shockgas::app::testing {
@@ -66,10 +67,7 @@ inline void write_text(const fs::path& file, const std::string& text) {
 // A fresh directory for one test, of this process alone (test binaries of
 // other builds may run at the same time).
 inline fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-" + std::to_string(getpid()) + "-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return shockgas::testing_support::fresh_process_directory("shockgas-test-", name);
 }
 
 // Two small scenes of different names (a few tenths of a second each).

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 using testing_support::run;
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-" + name);
+  const fs::path dir = testing_support::process_temp_path("shockgas-test-", name);
   fs::remove_all(dir);
   return dir;
 }

@@ -22,9 +22,7 @@ namespace fs = std::filesystem;
 using testing_support::run;
 
 fs::path scene_file(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-frames-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing_support::fresh_process_directory("shockgas-test-frames-", name);
   std::ofstream(dir / "scene.toml") << text;
   return dir / "scene.toml";
 }

@@ -33,9 +33,7 @@ using testing_support::run;
 
 // Runs `scene` (text) into a fresh directory and returns it; `options`: more of the command line.
 fs::path run_scene(const std::string& name, const std::string& scene, std::vector<std::string> options = {}) {
-  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-layout-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing_support::fresh_process_directory("shockgas-test-layout-", name);
   std::ofstream(dir / "scene.toml") << scene;
   std::vector<std::string> args = {"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(), "-q"};
   args.insert(args.end(), options.begin(), options.end());

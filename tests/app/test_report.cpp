@@ -31,9 +31,7 @@ std::string read_text(const fs::path& path) {
 // Runs `scene` with `overrides` into a fresh directory; returns the output directory.
 fs::path run_scene(const std::string& name, const std::string& scene,
                    const std::vector<std::string>& overrides) {
-  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-report-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing_support::fresh_process_directory("shockgas-test-report-", name);
   std::ofstream(dir / "scene.toml") << scene;
   std::vector<std::string> args = {"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(),
                                    "-q"};

@@ -26,9 +26,7 @@ std::string read_file(const fs::path& path) {
 }
 
 fs::path run_scene(const std::string& name, const std::string& scene) {
-  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-html-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = testing_support::fresh_process_directory("shockgas-test-html-", name);
   std::ofstream(dir / "scene.toml") << scene;
   EXPECT_EQ(run({"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(), "-q", "--no-plots"}),
             0);
@@ -72,11 +70,12 @@ TEST(ReportHtml, SweepSetsItsResultBesideTheReference) {
 
 TEST(HtmlPage, EscapesAndEmbeds) {
   EXPECT_EQ(html::escape("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
-  const fs::path file = fs::temp_directory_path() / "shockgas-test-html-bytes";
+  const fs::path file = testing_support::process_temp_path("shockgas-test-html-", "bytes");
   std::ofstream(file, std::ios::binary) << "Man";  // the base64 textbook example
   EXPECT_EQ(html::data_uri(file, "text/plain"), "data:text/plain;base64,TWFu");
   std::ofstream(file, std::ios::binary) << "Ma";
   EXPECT_EQ(html::data_uri(file, "text/plain"), "data:text/plain;base64,TWE=");
+  fs::remove(file);
 }
 
 TEST(HtmlPage, ReadsThePngTitle) {
@@ -86,13 +85,14 @@ TEST(HtmlPage, ReadsThePngTitle) {
     for (int shift : {24, 16, 8, 0}) c += static_cast<char>((data.size() >> shift) & 0xff);
     return c + type + data + std::string(4, '\0');
   };
-  const fs::path png = fs::temp_directory_path() / "shockgas-test-html.png";
+  const fs::path png = testing_support::process_temp_path("shockgas-test-html-", "title.png");
   std::ofstream(png, std::ios::binary)
       << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("tEXt", std::string("Title\0fields at t = 1", 21))
       << chunk("IEND", "");
   EXPECT_EQ(html::png_title(png).value_or("(none)"), "fields at t = 1");
   std::ofstream(png, std::ios::binary) << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("IEND", "");
   EXPECT_FALSE(html::png_title(png));
+  fs::remove(png);
 }
 
 }  // namespace

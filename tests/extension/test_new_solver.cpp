@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hdf5_file.hpp"
+#include "process_temp_path.hpp"
 #include "rusanov_solver.hpp"
 #include "shockgas/app/command.hpp"
 #include "shockgas/app/scene.hpp"
@@ -44,8 +45,13 @@ fs::path write_scene(const fs::path& dir, std::size_t cells, double cfl) {
   return path;
 }
 
+// Where run_scene(name, ...) runs: of this process alone.
+fs::path run_directory(const std::string& name) {
+  return testing_support::process_temp_path("shockgas-test-extension-", name);
+}
+
 nlohmann::json run_scene(const std::string& name, std::size_t cells) {
-  const fs::path dir = fs::temp_directory_path() / ("shockgas-test-extension-" + name);
+  const fs::path dir = run_directory(name);
   fs::remove_all(dir);
   EXPECT_EQ(run({"run", write_scene(dir, cells, 0.5).string(), "--out", (dir / "out").string(), "-q"}), 0);
   std::ifstream in(dir / "out" / "summary.json");
@@ -61,7 +67,7 @@ TEST_F(NewSolver, RunsFromASceneAndIsMeasuredAgainstTheExactSolver) {
   // 0.8 leaves room for the shock falling differently on the two grids.
   EXPECT_GT(std::log2(e256 / e512), 0.8) << e256 << " " << e512;
   EXPECT_LT(e512, 0.01);  // a few dx = 0.002 (measured 0.0029; godunov: 0.0021 at 512 cells)
-  const fs::path h5 = fs::temp_directory_path() / "shockgas-test-extension-fine" / "out" / "result.h5";
+  const fs::path h5 = run_directory("fine") / "out" / "result.h5";
   bool labelled = false;
   for (const auto& [name, value] : app::Hdf5File::open(h5.string()).attributes("/continuum/rusanov"))
     labelled |= name == "label" && value == "rusanov (1st order)";
@@ -69,7 +75,7 @@ TEST_F(NewSolver, RunsFromASceneAndIsMeasuredAgainstTheExactSolver) {
 }
 
 TEST_F(NewSolver, ItsOwnLimitsAreCheckedBeforeAnyWork) {
-  const fs::path dir = fs::temp_directory_path() / "shockgas-test-extension-limits";
+  const fs::path dir = run_directory("limits");
   fs::remove_all(dir);
   const fs::path out = dir / "out";
   // The scene is valid (every built-in rule passes); rusanov's preflight refuses it: exit 2, nothing written.

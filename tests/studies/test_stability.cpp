@@ -8,6 +8,7 @@
 #include <string>
 
 #include "common.hpp"
+#include "process_temp_path.hpp"
 #include "stability.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/core/error.hpp"
@@ -89,7 +90,8 @@ TEST(BenchCommon, ShockPositionErrorIsTheShiftOfTheCrossing) {
 }
 
 TEST(BenchStability, CsvWritesNonFiniteAsEmptyCell) {
-  const std::string path = (std::filesystem::temp_directory_path() / "shockgas_bench_csv_test.csv").string();
+  const std::string path =
+      testing_support::process_temp_path("shockgas_bench_csv_test-", "table.csv").string();
   {
     CsvWriter csv(path, {"a", "b", "c"});
     csv << 1.5 << NAN << "x, y";
