@@ -2,14 +2,20 @@
 # a run killed with SIGKILL after its first checkpoint, and one stopped by
 # SIGTERM (which writes a checkpoint and exits with 143), each resumed and
 # compared with the uninterrupted run bit for bit (tools/compare_runs.cpp); a
-# sweep killed and resumed the same way.
+# sweep killed and resumed the same way; and a shard (realizations 1:5) stopped
+# by either signal, resumed, and compared with the same shard run uninterrupted.
 # The checkpoint file's refusals are tested in app/test_checkpoint.cpp.
 set(checkpoint_dir ${CMAKE_CURRENT_SOURCE_DIR}/checkpoint)
 foreach(signal KILL TERM)
   add_test(NAME checkpoint.resumed_after_${signal}
            COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
                    ${checkpoint_dir}/ensemble.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/${signal} ${signal})
-  set_tests_properties(checkpoint.resumed_after_${signal} PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
+  add_test(NAME checkpoint.shard_resumed_after_${signal}
+           COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
+                   ${checkpoint_dir}/ensemble.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/shard-${signal} ${signal}
+                   --realizations 1:5)
+  set_tests_properties(checkpoint.resumed_after_${signal} checkpoint.shard_resumed_after_${signal}
+                       PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
 endforeach()
 add_test(NAME checkpoint.sweep_resumed_after_KILL
          COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>

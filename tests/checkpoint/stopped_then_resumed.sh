@@ -3,19 +3,21 @@
 # one more and exits with status 128 + 15), then `shockgas run --resume`, equals the
 # uninterrupted run bit for bit (compare_runs); the resumed run says how many
 # realizations it kept, and removes the checkpoint once the result is written.
-# usage: stopped_then_resumed.sh SHOCKGAS COMPARE_RUNS SCENE OUT SIGNAL
+# ARGS... (optional) go to both runs, e.g. `--realizations 1:5` for a shard.
+# usage: stopped_then_resumed.sh SHOCKGAS COMPARE_RUNS SCENE OUT SIGNAL [ARGS...]
 set -eu
 shockgas=$1 compare=$2 scene=$3 out=$4 signal=$5
+shift 5
 fail() { echo "$*"; exit 1; }
 rm -rf "$out"
 mkdir -p "$out"
 # Checkpoints every 0.06 s (as soon as a realization finished), the interval
 # recorded with the scene's overrides by both runs.
 every="output.checkpoint_minutes=0.001"
-"$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every
+"$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every "$@"
 
 # The stopped run: the signal once its first checkpoint is written.
-"$shockgas" run "$scene" --out "$out/stopped" --quiet --no-plots --set $every 2> "$out/stopped.stderr" &
+"$shockgas" run "$scene" --out "$out/stopped" --quiet --no-plots --set $every "$@" 2> "$out/stopped.stderr" &
 pid=$!
 waited=0
 until [ -f "$out/stopped/checkpoint.bin" ]; do
