@@ -55,6 +55,7 @@ class ByteReader {
   }
   void raw(void* p, std::size_t n) {
     if (n > in_.size() - at_) throw RunError(what_ + ": truncated");
+    if (n == 0) return;  // p may be an empty vector's null data()
     std::memcpy(p, in_.data() + at_, n);
     at_ += n;
   }
