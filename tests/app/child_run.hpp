@@ -18,6 +18,8 @@
 #include <thread>
 #include <vector>
 
+#include "process_temp_path.hpp"
+
 namespace shockgas::app::testing {
 
 inline std::string shockgas_binary() {
@@ -52,8 +54,7 @@ inline Options in_own_group() {
 class Child {
  public:
   Child(std::vector<std::string> args, const Options& o = {}) {
-    err_ = std::filesystem::temp_directory_path() / ("shockgas-child-" + std::to_string(getpid()) + "-" +
-                                                     std::to_string(counter()++) + ".err");
+    err_ = shockgas::testing_support::process_temp_path("shockgas-child-", std::to_string(counter()++) + ".err");
     args.insert(args.begin(), shockgas_binary());
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
