@@ -1,5 +1,7 @@
 #include "checkpointer.hpp"
 
+#include "fault.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <iostream>
@@ -86,6 +88,7 @@ void Checkpointer::save() {
   write_checkpoint(dir_, checkpoint_);
   saved_ = checkpoint_.records.size();
   last_save_ = Clock::now();
+  fault_point("checkpoint");
 }
 
 }  // namespace shockgas::app

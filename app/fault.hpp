@@ -11,8 +11,9 @@
 // The points: "compute" (each progress report of a computation), "write:result.h5"
 // (each dataset), "write:<file>" (half-way through each text file, e.g.
 // "write:summary.json"), "plot" (each poll while the plotting process runs),
-// "swap" (the finished directory about to replace the previous one) and
-// "swapped" (replaced, the previous contents not yet removed).
+// "swap" (the finished directory about to replace the previous one),
+// "swapped" (replaced, the previous contents not yet removed) and "checkpoint"
+// (a checkpoint written in full).
 #include <string_view>
 
 namespace shockgas::app {
