@@ -8,13 +8,14 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
 #include "durable_file.hpp"
 #include "run_target.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/continuum/registry.hpp"
+#include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::app {
 
@@ -39,9 +40,9 @@ constexpr double kPlotsBytes = 1.5e6;     // the PNG plots of a run
 
 double d(std::size_t n) { return static_cast<double>(n); }
 
+// The realizations that run at once: the ensemble's own split of the threads.
 std::size_t concurrent_runs(const particles::ParticleParams& p) {
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  return std::min<std::size_t>(p.realizations, p.threads == 0 ? cores : p.threads);
+  return particles::split_threads(p.threads == 0 ? usable_cores() : p.threads, p.realizations).runs;
 }
 
 // What a run of one scene (no sweep) holds at its peak.

@@ -1,14 +1,12 @@
 // Ensembles of realizations: run on worker threads, combined in index order so
 // that the result does not depend on the number of threads.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <mutex>
-#include <thread>
 
 #include "shockgas/core/cores.hpp"
+#include "shockgas/core/index_pool.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/simulate.hpp"
 
@@ -82,31 +80,15 @@ std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams&
   ParticleParams each = p;
   each.threads = split.per_run;
   std::vector<RunResult> runs(R);
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  auto worker = [&] {
-    for (std::size_t k = next++; k < R; k = next++) {
-      try {
-        if (interrupt_requested() != InterruptMode::none) {
-          throw_if_aborted();
-          runs[k] = not_started();
-          continue;
-        }
-        runs[k] = run_realization(ic, k, each, progress.for_run(k));
-        if (ProgressCallback cb = progress.for_run(k)) cb(1.0, p.t_end);
-      } catch (...) {
-        std::lock_guard lock(error_mutex);
-        if (!error) error = std::current_exception();
-        next = R;
-      }
+  run_indices(R, split.runs, [&](std::size_t k) {
+    if (interrupt_requested() != InterruptMode::none) {
+      throw_if_aborted();
+      runs[k] = not_started();
+      return;
     }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t i = 1; i < split.runs; ++i) pool.emplace_back(worker);
-  worker();
-  for (std::thread& th : pool) th.join();
-  if (error) std::rethrow_exception(error);
+    runs[k] = run_realization(ic, k, each, progress.for_run(k));
+    if (ProgressCallback cb = progress.for_run(k)) cb(1.0, p.t_end);
+  });
   return runs;
 }
 

@@ -3,16 +3,15 @@
 #include "shockgas/studies/tail_study.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <ctime>
-#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <mutex>
-#include <thread>
 
+#include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/index_pool.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/core/sticky_hull.hpp"
@@ -130,35 +129,17 @@ TailEnsemble run_size(std::size_t N, const TailStudyOptions& o) {
   ip.N = N;
   ip.seed = o.seed;
   TailEnsemble ensemble(o.realizations, kJackknifeGroups);
-  std::atomic<std::size_t> next{0};
   std::size_t done = 0;
-  std::exception_ptr error;
   std::mutex mutex;
-  auto worker = [&] {
-    for (std::size_t k = next++; k < o.realizations; k = next++) {
-      try {
-        throw_if_aborted();  // between realizations: nothing is half written
-        const double start = thread_cpu_seconds();
-        TailRealization run = o.r == 0 ? hull_realization(ip, k, o) : engine_realization(ip, k, o);
-        run.cpu_seconds = thread_cpu_seconds() - start;
-        std::lock_guard lock(mutex);
-        ensemble.add(k, std::move(run));
-        if (o.progress)
-          std::cerr << "tail: N = " << N << ": " << ++done << "/" << o.realizations << " realizations\n";
-      } catch (...) {
-        std::lock_guard lock(mutex);
-        if (!error) error = std::current_exception();
-        next = o.realizations;
-      }
-    }
-  };
-  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min(o.realizations, o.threads == 0 ? cores : o.threads);
-  std::vector<std::thread> pool;
-  for (std::size_t i = 1; i < threads; ++i) pool.emplace_back(worker);
-  worker();
-  for (std::thread& th : pool) th.join();
-  if (error) std::rethrow_exception(error);
+  run_indices(o.realizations, o.threads == 0 ? usable_cores() : o.threads, [&](std::size_t k) {
+    throw_if_aborted();  // between realizations: nothing is half written
+    const double start = thread_cpu_seconds();
+    TailRealization run = o.r == 0 ? hull_realization(ip, k, o) : engine_realization(ip, k, o);
+    run.cpu_seconds = thread_cpu_seconds() - start;
+    std::lock_guard lock(mutex);
+    ensemble.add(k, std::move(run));
+    if (o.progress) std::cerr << "tail: N = " << N << ": " << ++done << "/" << o.realizations << " realizations\n";
+  });
   return ensemble;
 }
 
