@@ -32,14 +32,25 @@ launch() {  # RANKS ARGS...: shockgas as one process or as a job of RANKS ranks 
 }
 "$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every
 
-launch "$stop_ranks" run "$scene" --out "$out/stopped" --quiet --no-plots --set $every 2> "$out/stopped.stderr" &
+# The stopped job: rank 0 stops itself (SIGSTOP, app/fault.hpp) right after its
+# first checkpoint is written, so the signal comes after that checkpoint and
+# before the job's end however loaded the machine; then it continues to meet it.
+(export SHOCKGAS_FAULT=checkpoint:stop; launch "$stop_ranks" run "$scene" --out "$out/stopped" --quiet --no-plots \
+  --set $every) 2> "$out/stopped.stderr" &
 launcher=$!
+rank_0() {  # the process of rank 0: the launcher's child whose environment says so, or the one process
+  if [ "$stop_ranks" = 1 ]; then echo $launcher; return; fi
+  for pid in $(pgrep -P $launcher); do
+    if tr '\0' '\n' < /proc/$pid/environ 2> /dev/null | grep -qx "OMPI_COMM_WORLD_RANK=0"; then echo $pid; fi
+  done
+}
 waited=0
-until [ -f "$out/stopped/checkpoint.bin" ]; do
+until root=$(rank_0) && [ -n "$root" ] && ps -o stat= -p $root | grep -q '^T'; do
   sleep 0.05; waited=$((waited + 1))
-  [ $waited -lt 1200 ] || { kill "$launcher"; fail "no checkpoint within 60 s"; }
+  [ $waited -lt 1200 ] || { kill $launcher; fail "rank 0 did not reach its first checkpoint within 60 s"; }
 done
 kill -s "$signal" $launcher
+kill -s CONT $root 2> /dev/null || true  # gone already when its launcher was killed
 status=0
 wait $launcher || status=$?
 # The ranks end with their launcher (Open MPI's daemon connection is lost with a
