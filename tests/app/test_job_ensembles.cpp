@@ -44,7 +44,7 @@ class FakeJob : public Job {
     inbox_.push_back({1, tag, std::move(bytes)});
   }
   std::vector<std::pair<int, int>> sent;  // (destination, tag)
-  std::string items_sent;                  // what kItems dealt rank 1
+  std::string items_sent;                 // what kItems dealt rank 1
 
  protected:
   void end_all(int) override { FAIL() << "the job was ended"; }
@@ -60,7 +60,7 @@ std::string doubles(std::vector<double> d) {
 
 Scene scene_of(std::size_t realizations) {
   return parse_scene("[initial]\nN = 200\n[particles]\nr = 0.5\nt_end = 10\nsamples = 6\nrealizations = " +
-                      std::to_string(realizations) + "\n",
+                         std::to_string(realizations) + "\n",
                      "test.toml");
 }
 
@@ -77,6 +77,19 @@ RealizationRecord record_of(const EnsemblePlan& plan, const WorkItem& w) {
   return r;
 }
 
+// The records rank 0 returned are every realization once, in index order, and
+// reduce to the ensemble one process computes, bit for bit.
+void expect_the_ensemble_of_one_process(const EnsemblePlan& plan, const ComputedRecords& got) {
+  const std::uint64_t n = plan.realizations(0);
+  ASSERT_EQ(got.records.size(), n);
+  for (std::uint64_t k = 0; k < n; ++k) EXPECT_EQ(got.records[k].index, k);
+  const auto gathered = reduce_ensemble_records(got.records, n);
+  const auto alone = particles::run_ensemble(plan.initial(0), plan.scene(0).particles);
+  ASSERT_EQ(gathered.T.mean.size(), alone.T.mean.size());
+  EXPECT_EQ(std::memcmp(gathered.T.mean.data(), alone.T.mean.data(), alone.T.mean.size() * sizeof(double)),
+            0);
+}
+
 TEST(JobEnsembles, RankZeroGathersTheRecordsOfRankOne) {
   const auto plan = plan_of(4);
   FakeJob job;
@@ -84,13 +97,7 @@ TEST(JobEnsembles, RankZeroGathersTheRecordsOfRankOne) {
     job.from_rank_1(kRecord, encode(record_of(*plan, w)));
   ProgressBar quiet(false);
   const ComputedRecords got = compute_records(&job, plan, 1, quiet);
-  ASSERT_EQ(got.records.size(), 4u);
-  for (std::uint64_t k = 0; k < 4; ++k) EXPECT_EQ(got.records[k].index, k);
-  const auto gathered = reduce_ensemble_records(got.records, 4);
-  const auto alone = particles::run_ensemble(plan->initial(0), plan->scene(0).particles);
-  ASSERT_EQ(gathered.T.mean.size(), alone.T.mean.size());
-  EXPECT_EQ(std::memcmp(gathered.T.mean.data(), alone.T.mean.data(), alone.T.mean.size() * sizeof(double)),
-            0);
+  expect_the_ensemble_of_one_process(*plan, got);
   EXPECT_NE(std::find(job.sent.begin(), job.sent.end(), std::pair{1, int{kDone}}), job.sent.end());
   EXPECT_EQ(job.items_sent, doubles({0, 1, 0, 3}));  // rank 1 was dealt realizations 1 and 3
 }
@@ -153,7 +160,8 @@ class JobCheckpoints : public ::testing::Test {
     clear_interrupt();
     std::filesystem::remove_all(dir_);
   }
-  std::unique_ptr<Checkpointer> checkpointer(std::size_t realizations, std::vector<RealizationRecord> kept = {}) {
+  std::unique_ptr<Checkpointer> checkpointer(std::size_t realizations,
+                                             std::vector<RealizationRecord> kept = {}) {
     return std::make_unique<Checkpointer>(dir_, scene_of(realizations), "", "", std::move(kept));
   }
   std::vector<std::uint64_t> saved_indices() const {
@@ -176,7 +184,8 @@ TEST_F(JobCheckpoints, AnInterruptedJobSavesWhatRankZeroGathered) {
   request_interrupt(InterruptMode::checkpoint, 15);
   ProgressBar quiet(false);
   EXPECT_THROW(compute_records(&job, plan, 1, quiet, checkpoints.get()), CheckpointTaken);
-  const auto saved = saved_indices();  // rank 0's own 0 and 2 too if they finished before the request was seen
+  const auto saved =
+      saved_indices();  // rank 0's own 0 and 2 too if they finished before the request was seen
   EXPECT_TRUE(std::count(saved.begin(), saved.end(), 1u)) << "rank 1's record not saved";
   EXPECT_FALSE(std::count(saved.begin(), saved.end(), 3u)) << "the realization stopped was saved";
   EXPECT_NE(std::find(job.sent.begin(), job.sent.end(), std::pair{1, int{kStop}}), job.sent.end());
@@ -197,7 +206,8 @@ TEST_F(JobCheckpoints, ALostRankIsNamedAfterTheCheckpointIsSaved) {
     FAIL() << "the job did not fail";
   } catch (const RunError& e) {
     const std::string said = e.what();
-    EXPECT_EQ(said.substr(0, said.find(';')), "rank 1 stopped while running realization 3 (killed, or its node was lost)");
+    EXPECT_EQ(said.substr(0, said.find(';')),
+              "rank 1 stopped while running realization 3 (killed, or its node was lost)");
     EXPECT_NE(said.find("; checkpoint written: "), std::string::npos) << said;
   }
   const auto saved = saved_indices();
@@ -216,13 +226,7 @@ TEST_F(JobCheckpoints, AResumedJobRunsOnlyWhatTheCheckpointLacks) {
   ProgressBar quiet(false);
   const ComputedRecords got = compute_records(&job, plan, 1, quiet, checkpoints.get());
   EXPECT_EQ(job.items_sent, doubles({0, 4}));
-  ASSERT_EQ(got.records.size(), 5u);
-  for (std::uint64_t k = 0; k < 5; ++k) EXPECT_EQ(got.records[k].index, k);
-  const auto gathered = reduce_ensemble_records(got.records, 5);
-  const auto alone = particles::run_ensemble(plan->initial(0), plan->scene(0).particles);
-  ASSERT_EQ(gathered.T.mean.size(), alone.T.mean.size());
-  EXPECT_EQ(std::memcmp(gathered.T.mean.data(), alone.T.mean.data(), alone.T.mean.size() * sizeof(double)),
-            0);
+  expect_the_ensemble_of_one_process(*plan, got);
 }
 
 }  // namespace
