@@ -253,7 +253,7 @@ class Gatherer {
   ProgressBar& progress_;
   Checkpointer* checkpoints_;
   std::vector<Peer> peers_;
-  std::size_t expected_ = 0;  // records still to come from the ranks
+  std::size_t expected_ = 0;  // records this job computes: the plan's, less those the checkpoint keeps
   std::vector<RealizationRecord> records_;
   std::unique_ptr<RealizationPool> pool_;
   std::optional<Clock::time_point> signalled_;  // when a rank first reported a signal

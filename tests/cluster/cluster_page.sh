@@ -49,14 +49,30 @@ case $case in
     ;;
   preempt)
     script preemptible.sbatch
-    sbatch preemptible.sbatch > first.out 2>&1 &
+    # The job's rank 0 stops itself (SIGSTOP, app/fault.hpp) right after its first
+    # checkpoint, so that the signal comes before the job's end however fast.
+    SHOCKGAS_FAULT=checkpoint:stop sbatch preemptible.sbatch > first.out 2>&1 &
     job=$!
+    stopped() {  # a stopped task of the job step: a child of the step's mpirun
+      for srun in $(cat slurm/srun.pids 2> /dev/null); do
+        for pid in $(pgrep -P "$(pgrep -P $srun)"); do
+          if ps -o stat= -p $pid | grep -q '^T'; then echo $pid; fi
+        done
+      done
+    }
     waited=0
-    until [ -f results/fig4/checkpoint.bin ]; do
+    until root=$(stopped) && [ -n "$root" ]; do
       sleep 0.05; waited=$((waited + 1))
       [ $waited -lt 1200 ] || { kill $job; logs; fail "no checkpoint within 60 s"; }
     done
-    kill -s TERM $(cat slurm/srun.pids)  # the time limit's SIGTERM (--signal) to the job step
+    kill -s TERM $(cat slurm/srun.pids)  # the time limit's SIGTERM (--signal) to the job step's tasks
+    term_pending() { [ $(($(printf '%d' 0x$(awk '/^ShdPnd/ {print $2}' /proc/$root/status)) & (1 << 14))) -ne 0 ]; }
+    waited=0
+    until term_pending; do
+      sleep 0.05; waited=$((waited + 1))
+      [ $waited -lt 200 ] || fail "rank 0 got no SIGTERM within 10 s"
+    done
+    kill -s CONT $root
     wait $job && { logs; fail "the stopped job succeeded: make the stand-in longer"; }
     [ -f results/fig4/checkpoint.bin ] && [ ! -f results/fig4/result.h5 ] || { logs; fail "no checkpoint kept"; }
     [ -s slurm/requeued ] || { logs; fail "the stopped job did not go back to the queue"; }

@@ -5,8 +5,8 @@
 #   STOP_RANKS: the ranks of the stopped job (1: one process, without mpirun);
 #   SIGNAL: TERM to the launcher (mpirun forwards it to the ranks; rank 0 writes
 #     one more checkpoint and says so in one message, and the job fails) or
-#     KILL to the launcher (the job ends without a word; the periodic checkpoint
-#     is what is left);
+#     KILL to the launcher and every rank (a lost node: the job ends without a
+#     word; the periodic checkpoint is what is left);
 #   RESUME_RANKS: the resumed jobs, each from a copy of the stopped directory
 #     (1: `shockgas run --resume` without mpirun).
 # Every resumed job says how many realizations it kept and removes the
@@ -49,12 +49,18 @@ until root=$(rank_0) && [ -n "$root" ] && ps -o stat= -p $root | grep -q '^T'; d
   sleep 0.05; waited=$((waited + 1))
   [ $waited -lt 1200 ] || { kill $launcher; fail "rank 0 did not reach its first checkpoint within 60 s"; }
 done
-kill -s "$signal" $launcher
-kill -s CONT $root 2> /dev/null || true  # gone already when its launcher was killed
+if [ "$signal" = KILL ]; then
+  kill -s KILL $launcher $(pgrep -P $launcher)  # the whole job at once, as a lost node or `scancel -s KILL`
+else
+  # mpirun continues the ranks at once and forwards the signal a second later
+  # (the scene lasts longer than that); when the signal went to rank 0 itself it
+  # is pending while rank 0 is stopped.
+  kill -s "$signal" $launcher
+  kill -s CONT $root
+fi
 status=0
 wait $launcher || status=$?
-# The ranks end with their launcher (Open MPI's daemon connection is lost with a
-# killed mpirun); none may go on writing into the directory.
+# None may go on writing into the directory.
 waited=0
 while pgrep -f "$out/stopped" > /dev/null; do
   sleep 0.1; waited=$((waited + 1))
