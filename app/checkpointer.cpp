@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <iostream>
 
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
@@ -75,11 +74,10 @@ void Checkpointer::poll() {
   if (request != InterruptMode::checkpoint) throw Interrupted(signal);
   save();
   const std::size_t n = checkpoint_.records.size();
-  std::cerr << "\nshockgas: checkpoint written: " << n
-            << (n == 1 ? " realization finished is" : " realizations finished are") << " kept in "
-            << checkpoint_path(dir_).string() << "; continue with: shockgas run --resume " << dir_.string()
-            << "\n";
-  throw Interrupted(signal);
+  throw CheckpointTaken(signal, "checkpoint written: " + std::to_string(n) +
+                                    (n == 1 ? " realization finished is" : " realizations finished are") +
+                                    " kept in " + checkpoint_path(dir_).string() +
+                                    "; continue with: shockgas run --resume " + dir_.string());
 }
 
 std::vector<RealizationRecord> Checkpointer::take_records() { return std::exchange(checkpoint_.records, {}); }

@@ -15,8 +15,20 @@
 
 #include "checkpoint.hpp"
 #include "ensemble_plan.hpp"
+#include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::app {
+
+// Interrupted, a checkpoint having been saved: note() says what it keeps and
+// how to continue, for the one message the run ends with.
+class CheckpointTaken : public Interrupted {
+ public:
+  CheckpointTaken(int signal_number, std::string note) : Interrupted(signal_number), note_(std::move(note)) {}
+  const std::string& note() const { return note_; }
+
+ private:
+  std::string note_;
+};
 
 class Checkpointer {
  public:
@@ -36,10 +48,10 @@ class Checkpointer {
   // Records just finished.
   void add(std::vector<RealizationRecord> finished);
   // Between polls of the computation: saves when the interval has passed and a
-  // realization finished since the last save; on a
-  // pending interrupt request saves (a checkpoint request) and throws
-  // Interrupted, having turned the request into an abort so that the running
-  // realizations stop.
+  // realization finished since the last save; on a pending interrupt request
+  // saves and throws CheckpointTaken (a checkpoint request) or throws
+  // Interrupted (an abort), having turned the request into an abort so that the
+  // running realizations stop.
   void poll();
   // Every record, kept and new (the checkpoint is left on disk until the result is written).
   std::vector<RealizationRecord> take_records();

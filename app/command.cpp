@@ -12,6 +12,7 @@
 
 #include "animate.hpp"
 #include "checkpoint.hpp"
+#include "checkpointer.hpp"
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
@@ -218,9 +219,10 @@ int run_command(int argc, char** argv) {
     return kExitBadInput;
   } catch (const Interrupted& e) {
     const int sig = e.signal_number();
+    const auto* checkpoint = dynamic_cast<const CheckpointTaken*>(&e);
     report_for_job(std::string("shockgas: interrupted") +
                    (sig ? " by signal " + std::to_string(sig) + " (SIG" + sigabbrev_np(sig) + ")" : "") +
-                   unchanged + "\n");
+                   (checkpoint ? "; " + checkpoint->note() : unchanged) + "\n");
     return sig ? 128 + sig : kExitFailure;
   } catch (const std::bad_alloc&) {
     report_for_job("shockgas: run failed: out of memory" + unchanged + "\n");

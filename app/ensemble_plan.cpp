@@ -71,11 +71,12 @@ const InitialCondition& EnsemblePlan::initial(std::size_t e) const {
   return *parts_[e].initial;
 }
 
-std::vector<WorkItem> EnsemblePlan::share(int rank, int ranks) const {
+std::vector<WorkItem> EnsemblePlan::share(int rank, int ranks) const { return deal(items_, rank, ranks); }
+
+std::vector<WorkItem> deal(const std::vector<WorkItem>& items, int rank, int ranks) {
   std::vector<WorkItem> mine;
-  for (std::size_t i = static_cast<std::size_t>(rank); i < items_.size();
-       i += static_cast<std::size_t>(ranks))
-    mine.push_back(items_[i]);
+  for (std::size_t i = static_cast<std::size_t>(rank); i < items.size(); i += static_cast<std::size_t>(ranks))
+    mine.push_back(items[i]);
   return mine;
 }
 

@@ -51,7 +51,7 @@ class EnsemblePlan {
   // The items computed here, realization-major (0 of every ensemble, then 1, ...)
   // so that a deal spreads the variants too.
   const std::vector<WorkItem>& items() const { return items_; }
-  // Rank `rank`'s items of a job of `ranks`: every ranks-th item from the rank-th.
+  // Rank `rank`'s items of a job of `ranks`: deal(items(), rank, ranks).
   std::vector<WorkItem> share(int rank, int ranks) const;
   // "realization 3" or "realization 3 of variant 'r = 0.5'", for messages.
   std::string describe(const WorkItem& item) const;
@@ -67,6 +67,10 @@ class EnsemblePlan {
   bool sweep_ = false;
   std::string scene_name_;
 };
+
+// Rank `rank`'s items of `items` dealt out to `ranks` ranks: every ranks-th
+// item from the rank-th.
+std::vector<WorkItem> deal(const std::vector<WorkItem>& items, int rank, int ranks);
 
 // Ensemble e from the records of all its realizations (any order, each index
 // 0..R_e-1 once): particles::reduce_ensemble on them in index order. RunError

@@ -81,28 +81,44 @@ ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::siz
   return out;
 }
 
-// Rank 0: its own share on its threads, the others' records as they come.
+// Rank 0: deals the items still to run out to the ranks, runs its own share on
+// its threads and gathers the others' records as they come; with checkpoints,
+// every record passes through them (a resumed job runs only what they lack).
 class Gatherer {
  public:
-  Gatherer(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads, ProgressBar& progress)
-      : job_(job), plan_(*plan), progress_(progress), peers_(static_cast<std::size_t>(job.size())) {
-    for (int j = 0; j < job.size(); ++j) peers_[j].items = plan->share(j, job.size()).size();
-    for (auto& p : peers_) p.heard = Clock::now();
-    pool_ = std::make_unique<RealizationPool>(plan, plan->share(0, job.size()), threads, true);
+  Gatherer(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads, ProgressBar& progress,
+           Checkpointer* checkpoints)
+      : job_(job),
+        plan_(*plan),
+        progress_(progress),
+        checkpoints_(checkpoints),
+        peers_(static_cast<std::size_t>(job.size())) {
+    const std::vector<WorkItem> remaining = checkpoints ? checkpoints->remaining(*plan) : plan->items();
+    expected_ = remaining.size();
+    for (int j = 0; j < job.size(); ++j) {
+      std::vector<WorkItem> share = deal(remaining, j, job.size());
+      peers_[j].items = share.size();
+      peers_[j].heard = Clock::now();
+      if (j == 0)
+        pool_ = std::make_unique<RealizationPool>(plan, std::move(share), threads, true);
+      else
+        job.send(j, kItems, pack_items({}, share));
+    }
   }
 
   std::vector<RealizationRecord> gather() {
     Clock::time_point beat = Clock::now();
     while (true) {
       while (auto m = job_.receive()) handle(*m);
-      for (auto& r : pool_->take_finished()) records_.push_back(std::move(r)), ++peers_[0].received;
+      take_own_finished();
       // An interruption first: the engine stops inside a window on it, and the
       // realization it stopped is not a failure of its own.
       if (interrupt_requested() != InterruptMode::none) stop_on_interrupt();
       if (auto f = pool_->failure()) fail(0, f->item, f->message);
       check_signalled();
       check_silence();
-      if (records_.size() == plan_.items().size()) break;
+      keep_records();
+      if (received() == expected_) break;
       progress_.update(fraction(), pool_->sim_time());
       if (seconds_since(beat) > kBeatSeconds) {
         job_.send(1, kProgress,
@@ -112,7 +128,7 @@ class Gatherer {
       std::this_thread::sleep_for(kPoll);
     }
     for (int j = 1; j < job_.size(); ++j) job_.send(j, kDone, {});
-    return std::move(records_);
+    return checkpoints_ ? checkpoints_->take_records() : std::move(records_);
   }
 
  private:
@@ -125,6 +141,23 @@ class Gatherer {
     int signal = 0;  // the signal it reported
     bool working() const { return received < items; }
   };
+
+  void take_own_finished() {
+    for (auto& r : pool_->take_finished()) records_.push_back(std::move(r)), ++peers_[0].received;
+  }
+
+  std::size_t received() const {
+    std::size_t n = 0;
+    for (const Peer& p : peers_) n += p.received;
+    return n;
+  }
+
+  // The records gathered go to the checkpoints, which save them when due.
+  void keep_records() {
+    if (!checkpoints_) return;
+    checkpoints_->add(std::exchange(records_, {}));
+    checkpoints_->poll();
+  }
 
   void handle(const JobMessage& m) {
     Peer& p = peers_[m.source];
@@ -164,7 +197,9 @@ class Gatherer {
   }
 
   // A signal reached rank 0: every rank still working must answer; those that
-  // cannot were killed with their node or by hand, and the launcher is ending the rest.
+  // cannot were killed with their node or by hand, and the launcher is ending
+  // the rest. With checkpoints, what was gathered is saved first (poll() saves
+  // on the request and throws Interrupted), then a rank that did not answer is named.
   [[noreturn]] void stop_on_interrupt() {
     for (int j = 1; j < job_.size(); ++j) job_.send(j, kStop, {});
     const Clock::time_point asked = Clock::now();
@@ -173,8 +208,19 @@ class Gatherer {
         if (m->tag == kInterrupted || m->tag == kRecord) handle(*m);
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    for (int j = 1; j < job_.size(); ++j)
-      if (peers_[j].working() && !peers_[j].answered) lost(j, "stopped");
+    take_own_finished();
+    int silent = 0;
+    for (int j = job_.size() - 1; j >= 1; --j)
+      if (peers_[j].working() && !peers_[j].answered) silent = j;
+    if (checkpoints_) {
+      try {
+        keep_records();
+      } catch (const CheckpointTaken& c) {
+        if (silent) lost(silent, "stopped", "; " + c.note());
+        throw;
+      }
+    }
+    if (silent) lost(silent, "stopped");
     throw Interrupted(interrupt_signal());
   }
 
@@ -190,44 +236,49 @@ class Gatherer {
         lost(j, "has not answered for " + std::to_string(static_cast<int>(kSilenceSeconds)) + " s");
   }
 
-  [[noreturn]] void lost(int rank, const std::string& what) {
+  [[noreturn]] void lost(int rank, const std::string& what, const std::string& note = "") {
     throw RunError("rank " + std::to_string(rank) + " " + what + " " + describe(plan_, peers_[rank].running) +
-                   " (killed, or its node was lost); the job stops, no result is written");
+                   " (killed, or its node was lost); the job stops, no result is written" + note);
   }
 
   double fraction() const {
     double done = pool_->fraction() * static_cast<double>(peers_[0].items);
     for (std::size_t j = 1; j < peers_.size(); ++j)
       done += (peers_[j].working() ? peers_[j].fraction : 1.0) * static_cast<double>(peers_[j].items);
-    return plan_.items().empty() ? 1.0 : done / static_cast<double>(plan_.items().size());
+    return expected_ == 0 ? 1.0 : done / static_cast<double>(expected_);
   }
 
   Job& job_;
   const EnsemblePlan& plan_;
   ProgressBar& progress_;
+  Checkpointer* checkpoints_;
   std::vector<Peer> peers_;
+  std::size_t expected_ = 0;  // records this job computes: the plan's, less those the checkpoint keeps
   std::vector<RealizationRecord> records_;
   std::unique_ptr<RealizationPool> pool_;
   std::optional<Clock::time_point> signalled_;  // when a rank first reported a signal
 };
 
-// Ranks 1..K-1: their share, each record sent as it finishes.
+// Ranks 1..K-1: the share rank 0 deals them, each record sent as it finishes.
 class Worker {
  public:
   Worker(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads)
-      : job_(job), plan_(*plan), pool_(plan, plan->share(job.rank(), job.size()), threads, true) {}
+      : job_(job), plan_(std::move(plan)), threads_(threads) {}
 
   void serve() {
     Clock::time_point beat{};
     bool done = false;
     while (true) {
-      for (auto& r : pool_.take_finished()) job_.send(0, kRecord, encode(r));
+      if (pool_)
+        for (auto& r : pool_->take_finished()) job_.send(0, kRecord, encode(r));
       if (interrupt_requested() != InterruptMode::none) answer(interrupt_signal());  // before failure(): as on rank 0
-      if (auto f = pool_.failure()) {
+      if (auto f = pool_ ? pool_->failure() : std::nullopt) {
         job_.send(0, kFailed, pack_items({}, {f->item}) + f->message);
         wait_to_be_ended();
       }
       while (auto m = job_.receive()) {
+        if (m->tag == kItems)
+          pool_ = std::make_unique<RealizationPool>(plan_, unpack_items(unpack(m->bytes), 0), threads_, true);
         if (m->tag == kDone) done = true;
         if (m->tag == kStop) answer(0);
         if (m->tag == kProgress)
@@ -236,7 +287,7 @@ class Worker {
       if (done) return;
       check_root();
       if (seconds_since(beat) > kBeatSeconds) {
-        job_.send(0, kProgress, pack_items({pool_.fraction(), pool_.sim_time()}, pool_.running()));
+        job_.send(0, kProgress, pack_items({fraction(), pool_ ? pool_->sim_time() : 0.0}, running()));
         beat = Clock::now();
       }
       std::this_thread::sleep_for(kPoll);
@@ -244,8 +295,11 @@ class Worker {
   }
 
  private:
+  double fraction() const { return pool_ ? pool_->fraction() : 0.0; }
+  std::vector<WorkItem> running() const { return pool_ ? pool_->running() : std::vector<WorkItem>{}; }
+
   [[noreturn]] void answer(int signal) {
-    job_.send(0, kInterrupted, pack_items({static_cast<double>(signal)}, pool_.running()));
+    job_.send(0, kInterrupted, pack_items({static_cast<double>(signal)}, running()));
     wait_to_be_ended();
   }
 
@@ -265,14 +319,15 @@ class Worker {
   void check_root() {
     if (job_.rank() != 1 || seconds_since(root_heard_) < kSilenceSeconds) return;
     std::cerr << "shockgas: run failed: rank 0 has not answered for " << static_cast<int>(kSilenceSeconds)
-              << " s " << describe(plan_, root_running_)
+              << " s " << describe(*plan_, root_running_)
               << " (killed, or its node was lost); the job stops, no result is written\n";
     job_.abort(1);
   }
 
   Job& job_;
-  const EnsemblePlan& plan_;
-  RealizationPool pool_;
+  std::shared_ptr<const EnsemblePlan> plan_;
+  std::size_t threads_;
+  std::unique_ptr<RealizationPool> pool_;  // once rank 0 has dealt the items (kItems)
   std::vector<WorkItem> root_running_;
   Clock::time_point root_heard_ = Clock::now();
 };
@@ -294,7 +349,7 @@ ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> pl
     Worker(*job, std::move(plan), threads).serve();
     return out;
   }
-  out.records = Gatherer(*job, std::move(plan), threads, progress).gather();
+  out.records = Gatherer(*job, std::move(plan), threads, progress, checkpoints).gather();
   sort_in_plan_order(out.records);
   out.wall_seconds = seconds_since(start);
   return out;

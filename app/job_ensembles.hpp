@@ -1,6 +1,6 @@
 #pragma once
 // The realizations of a plan computed by every process of a job, each on its
-// threads: the work items are dealt out to the ranks (EnsemblePlan::share),
+// threads: rank 0 deals the work items out to the ranks (deal(), kItems),
 // every finished realization is sent to rank 0 as a record, and rank 0 returns
 // them all. Nothing is reduced here and no floating-point number is combined on
 // the way: rank 0 reduces each ensemble in index order afterwards, with the
@@ -14,7 +14,8 @@
 //    kAnswerSeconds and names those that do not, with the realizations they
 //    were running; a rank silent for kSilenceSeconds is named the same way
 //    (a launcher that lets the others run on);
-//  * SIGTERM or SIGINT to every rank (a scheduler's pre-emption): Interrupted.
+//  * SIGTERM or SIGINT to every rank (a scheduler's pre-emption): Interrupted,
+//    rank 0 having saved the records gathered so far when it keeps checkpoints.
 // Rank 1 names rank 0 if rank 0 falls silent. Rank 0 writes nothing before it
 // holds every record, so a failed job leaves no result.
 #include <memory>
@@ -37,6 +38,7 @@ enum JobTag : int {
   kInterrupted = 4,  // -> 0: a signal (0: an answer to kStop), then the items running
   kStop = 5,         // 0 -> all: the job is ending, answer with kInterrupted
   kDone = 6,         // 0 -> all: every record arrived
+  kItems = 7,        // 0 -> each at the start: the items it runs
 };
 
 inline constexpr double kAnswerSeconds = 0.5;  // well inside Open MPI's 1 s from SIGTERM to SIGKILL
@@ -51,8 +53,10 @@ struct ComputedRecords {
 
 // With job == nullptr: this process alone (a shard without MPI). `threads`: of
 // each process. Rethrows a realization's own error when running alone.
-// checkpoints: when running alone, the records it keeps are not run again and
-// every record passes through it (checkpointer.hpp); nullptr for none.
+// checkpoints (this process alone, or rank 0 of a job; checkpointer.hpp): the
+// records it keeps are not run again, and every record passes through it, so
+// that it saves them every output.checkpoint_minutes and on a signal; nullptr
+// for none (and on the other ranks).
 ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
                                 ProgressBar& progress, Checkpointer* checkpoints = nullptr);
 

@@ -57,9 +57,7 @@ bool runs_in_parallel(const RunOptions& options) {
          keeps_checkpoints(options);
 }
 
-bool keeps_checkpoints(const RunOptions& options) {
-  return (options.checkpoint || options.resume) && !current_job();
-}
+bool keeps_checkpoints(const RunOptions& options) { return options.checkpoint || options.resume; }
 
 std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptions& options) {
   std::optional<Slice> realizations, variants;
@@ -74,12 +72,12 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
       shard && options.out_dir.empty() ? fs::path("out") / shard_name(scene, options) : dir;
   ComputedRecords computed;
   {
-    std::unique_ptr<Checkpointer> checkpoints;
-    if (keeps_checkpoints(options))
+    std::unique_ptr<Checkpointer> checkpoints;  // rank 0 keeps a job's (job_ensembles.hpp)
+    if (keeps_checkpoints(options) && speaks_for_job())
       checkpoints = std::make_unique<Checkpointer>(
           where, scene, options.realizations, options.variants,
           options.resume ? read_checkpoint(where).records : std::vector<RealizationRecord>{});
-    if (options.resume)
+    if (checkpoints && options.resume)
       std::cerr << "shockgas: resuming " << where.string() << ": " << checkpoints->kept() << " of "
                 << plan->items().size() << " realizations kept from the checkpoint\n";
     ProgressBar progress(options.progress && speaks_for_job());

@@ -12,6 +12,7 @@
 #include <list>
 #include <thread>
 
+#include "../checkpointer.hpp"
 #include "../job.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
@@ -27,7 +28,11 @@ bool started_by_launcher() {
   return false;
 }
 
-extern "C" void interrupt_job(int sig) { request_interrupt(InterruptMode::abort, sig); }
+// Rank 0 of a job that keeps checkpoints saves one and stops (checkpointer.hpp);
+// the other ranks, and a job without, stop at once.
+extern "C" void interrupt_job(int sig) {
+  request_interrupt(signals_take_checkpoints() ? InterruptMode::checkpoint : InterruptMode::abort, sig);
+}
 
 // A message on its way out: its bytes stay alive until MPI is done with them.
 struct Outgoing {
