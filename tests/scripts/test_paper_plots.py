@@ -24,6 +24,7 @@ def run(script, *args):
 def test_fig1_picture_from_the_kept_runs(tmp_path):
     run("plot_fig1_runs.py", os.path.join(RUNS, "fig1"), "--out", str(tmp_path))
     assert os.path.getsize(tmp_path / "fig1-paper-size.png") > 10000
+    assert os.path.getsize(tmp_path / "fig1-rpos-paper-size.png") > 10000  # r = 0.5, 0.9, 0.99 are kept
 
 
 def test_tail_pictures_from_the_kept_runs(tmp_path):
