@@ -9,7 +9,11 @@ For every directory under RUN_DIR that holds a summary.json of a particle run
   summary.json   as written by the run;
   T.csv          t, T (ensemble mean), T_stderr, and one column per
                  realization when there are at most 100 of them;
-  histogram.csv  t, z, density (ensemble mean), when the run kept a histogram.
+  histogram.csv  t, z, density (ensemble mean), when the run kept a histogram,
+                 its standard error over realizations (density_stderr) when the run
+                 kept every realization's histogram, and exact: the exact
+                 mass-weighted law of the sticky gas averaged over the bin, when
+                 the run wrote it.
 Leaves out the states (realization 0's final state is megabytes at N = 10^6).
 """
 import argparse
@@ -50,12 +54,22 @@ def write_histogram(h5, path):
         return
     z, t = h5["particles/histogram/z"][:], h5["particles/histogram/t"][:]
     density = h5["particles/histogram/density"][:]
+    columns = {}
+    if "particles/realizations/histogram_density" in h5:
+        rows = h5["particles/realizations/histogram_density"][:]
+        if rows.shape[0] >= 2:
+            per = rows.reshape(rows.shape[0], len(t), len(z))
+            columns["density_stderr"] = lambda i, j: per[:, i, j].std(ddof=1) / np.sqrt(per.shape[0])
+    if "particles/histogram/exact" in h5:
+        exact = h5["particles/histogram/exact"][:]
+        columns["exact"] = lambda i, j: exact[j]
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["t", "z", "density"])
+        w.writerow(["t", "z", "density"] + list(columns))
         for i, ti in enumerate(t):
             for j, zj in enumerate(z):
-                w.writerow([repr(float(ti)), repr(float(zj)), repr(float(density[i, j]))])
+                row = [ti, zj, density[i, j]] + [value(i, j) for value in columns.values()]
+                w.writerow([repr(float(x)) for x in row])
 
 
 def main():

@@ -4,11 +4,15 @@
     scripts/plot_fig1_runs.py data/paper-runs/fig1 --out docs/img/paper
 
 Reads each run's T.csv and summary.json (scripts/collect_paper_run.py) and draws
-fig1-paper-size.png:
+two pictures, each of two panels:
   left   T t^(2/3) against t, with the standard error over realizations, and the
-         exact continuum value 0.17571 (4D)^(2/3) = 0.2129 (D = 1/3);
+         exact continuum value of the sticky gas 0.17571 (4D)^(2/3) = 0.2129 (D = 1/3);
   right  the exponent of T(t) fitted on each decade [t, 10 t], with its jackknife
          error over realizations (analysis.T_exponent_windows), and -2/3.
+fig1-paper-size.png       r = 0: the event engine and the exact hull;
+fig1-rpos-paper-size.png  r = 0, 0.5, 0.9, 0.99 by the event engine, the same ten
+                          initial states (drawn when those runs are kept).
+A run that is not kept is left out of its picture.
 """
 import argparse
 import csv
@@ -22,10 +26,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 EXACT_T_T23 = 0.2128531785  # compare/cluster_velocity_law.hpp, D = 1/3
-RUNS = [  # directory, legend, colour
+R0_RUNS = [  # directory, legend, colour
     ("hull-r0-R1000", "exact hull, 1000 x N = 10^6", "C0"),
     ("hull-r0-R10", "exact hull, 10 x N = 10^6 (realizations 0-9)", "C1"),
     ("r0", "event engine r = 0, 10 x N = 10^6 (same 10)", "C3"),
+]
+RESTITUTION_RUNS = [
+    ("r0", "r = 0", "C3"),
+    ("events-r0.5-R10", "r = 0.5", "C2"),
+    ("events-r0.9-R10", "r = 0.9", "C0"),
+    ("events-r0.99-R10", "r = 0.99", "C4"),
 ]
 
 
@@ -43,16 +53,13 @@ def summary(path):
     return s
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("root")
-    ap.add_argument("--out", default=".")
-    a = ap.parse_args()
+def draw(root, runs, title, path, log_y=False):
+    kept = [(name, label, colour) for name, label, colour in runs if os.path.isdir(os.path.join(root, name))]
+    if len(kept) < 2:
+        return
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4))
-    for k, (name, label, colour) in enumerate(RUNS):
-        d = os.path.join(a.root, name)
-        if not os.path.isdir(d):
-            continue
+    for k, (name, label, colour) in enumerate(kept):
+        d = os.path.join(root, name)
         series = [(t, T, e) for t, T, e in read_T(os.path.join(d, "T.csv")) if t >= 10]
         scale = [t ** (2.0 / 3.0) for t, _, _ in series]
         left.errorbar([t for t, _, _ in series], [T * s for (_, T, _), s in zip(series, scale)],
@@ -60,15 +67,17 @@ def main():
                       color=colour, label=label)
         windows = [w for w in summary(os.path.join(d, "summary.json"))["analysis"]["T_exponent_windows"]
                    if abs(w["t_max"] / w["t_min"] - 10) < 1e-6]
-        shift = 1 + 0.06 * (k - 1)
+        shift = 1 + 0.06 * (k - (len(kept) - 1) / 2)
         right.errorbar([math.sqrt(w["t_min"] * w["t_max"]) * shift for w in windows],
                        [w["exponent"] for w in windows], yerr=[w["jackknife_error"] for w in windows],
                        fmt="o", ms=4, capsize=2, color=colour, label=label)
-    left.axhline(EXACT_T_T23, color="k", ls="--", lw=1, label="exact continuum law: 0.2129")
+    left.axhline(EXACT_T_T23, color="k", ls="--", lw=1, label="exact continuum law (r = 0): 0.2129")
     left.set_xscale("log")
+    if log_y:
+        left.set_yscale("log")
     left.set_xlabel("t")
     left.set_ylabel("T t^(2/3)")
-    left.set_title("r = 0: T t^(2/3), error over realizations")
+    left.set_title(title + ": T t^(2/3), error over realizations")
     left.legend(fontsize=7)
     right.axhline(-2.0 / 3.0, color="k", ls="--", lw=1, label="-2/3")
     right.set_xscale("log")
@@ -77,8 +86,19 @@ def main():
     right.set_title("exponent per decade, jackknife error over realizations")
     right.legend(fontsize=7)
     fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("root")
+    ap.add_argument("--out", default=".")
+    a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
-    fig.savefig(os.path.join(a.out, "fig1-paper-size.png"), dpi=110)
+    draw(a.root, R0_RUNS, "r = 0", os.path.join(a.out, "fig1-paper-size.png"))
+    draw(a.root, RESTITUTION_RUNS, "10 x N = 10^6", os.path.join(a.out, "fig1-rpos-paper-size.png"),
+         log_y=True)
 
 
 if __name__ == "__main__":

@@ -24,6 +24,7 @@ def run(script, *args):
 def test_fig1_picture_from_the_kept_runs(tmp_path):
     run("plot_fig1_runs.py", os.path.join(RUNS, "fig1"), "--out", str(tmp_path))
     assert os.path.getsize(tmp_path / "fig1-paper-size.png") > 10000
+    assert os.path.getsize(tmp_path / "fig1-rpos-paper-size.png") > 10000  # r = 0.5, 0.9, 0.99 are kept
 
 
 def test_tail_pictures_from_the_kept_runs(tmp_path):
@@ -55,3 +56,55 @@ def test_tail_exact_law_is_black_dashed_and_axes_are_labelled(tmp_path, capture)
         exact = [l for l in ax.get_lines() if l.get_label().startswith("exact")]
         assert exact, "no exact law drawn"
         assert exact[0].get_color() == "k" and exact[0].get_linestyle() == "--"
+
+
+def test_fig2_picture_from_the_kept_runs(tmp_path):
+    run("plot_fig2_runs.py", os.path.join(RUNS, "fig2"), "--out", str(tmp_path))
+    assert os.path.getsize(tmp_path / "fig2-paper-size.png") > 10000
+
+
+def test_fig4_picture_from_kept_histograms(tmp_path):
+    """A kept run as collect_paper_run.py writes it: a normal Phi with the exact column."""
+    import csv
+    import json
+    import math
+
+    for r in (0.0, 0.5):
+        d = tmp_path / "runs" / ("events-r%g-R50" % r)
+        d.mkdir(parents=True)
+        (d / "summary.json").write_text(json.dumps({"initial": {"N": 100000},
+                                                    "particles": {"r": r, "realizations": 50}}))
+        with open(d / "histogram.csv", "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["t", "z", "density", "density_stderr", "exact"])
+            for t in (1e2, 1e3, 1e4):
+                for k in range(80):
+                    z = -3.95 + 0.1 * k
+                    p = math.exp(-z * z / 0.426) / math.sqrt(math.pi * 0.426)
+                    w.writerow([t, z, p * (1 + 0.01 * r), 0.01 * p, p])
+    run("plot_fig4_runs.py", str(tmp_path / "runs"), "--out", str(tmp_path))
+    assert os.path.getsize(tmp_path / "fig4-paper-size.png") > 10000
+
+
+def test_table_exponents_and_interpolation_are_exact_on_a_power_law():
+    import paper_tables
+    import plot_fig2_runs
+
+    rows = [(10 ** (k / 10), 0.2129 * 10 ** (-2 * k / 30), 0.0) for k in range(0, 61)]  # T = 0.2129 t^(-2/3)
+    for lo in (1e2, 1e3, 1e4, 1e5):
+        assert abs(paper_tables.decade_slope(rows, lo) + 2 / 3) < 1e-12
+    assert paper_tables.decade_slope(rows, 1e6) is None  # the samples end at 10^6
+    series = [(t, T) for t, T, _ in rows]
+    assert abs(plot_fig2_runs.interpolate(series, 3000.0) / (0.2129 * 3000.0 ** (-2 / 3)) - 1) < 1e-12
+    assert plot_fig2_runs.interpolate(series, 2e6) is None
+
+
+def test_tables_from_the_kept_runs(capsys):
+    import paper_tables
+
+    sys.argv = ["paper_tables.py", RUNS]
+    paper_tables.main()
+    out = capsys.readouterr().out
+    assert "`d1e-2-sticky-R5` | delta = 0.01, sticky below it | 1e+06 × 5, 1e+06" in out
+    assert "`hull-r0-R40` | exact sticky gas r = 0, the same initial state | 1e+06 × 40" in out
+    assert "`hull-r0-R1000` | 0 | 1000 × 1e+06 | -0.6671 ± 0.0002" in out
