@@ -3,6 +3,7 @@
 // plan reaches a sample time, its bodies (in cache: it just ran) are measured at
 // that time as stretch_observables.hpp says. Used by WindowScheduler, which
 // combines the parts of all domains in domain order.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -37,12 +38,18 @@ class DomainSampler {
     if (spec_.clusters) {
       ClusterScan scan(spec_);
       PeriodWrap wrap(spec_.L);
-      std::size_t previous = d.head;
-      for_each(d, [&](std::size_t i) {
-        const double x = e_.body_[i].at(t);
-        scan.add(spec_.ring ? wrap(x) : x, e_.body_[i].v, i, i < previous);
-        previous = i;
-      });
+      if constexpr (Linked) {
+        std::size_t previous = d.head;
+        for_each(d, [&](std::size_t i) {
+          const double x = e_.body_[i].at(t);
+          scan.add(spec_.ring ? wrap(x) : x, e_.body_[i].v, i, i < previous);
+          previous = i;
+        });
+      } else {
+        for_ranges(d, [&](std::size_t lo, std::size_t hi) {
+          scan_range(lo, hi, t, lo == 0 && lo != d.head, scan, wrap);
+        });
+      }
       p.clusters = scan.part();
       if (out_of_order(p.clusters, spec_)) sorted = sorted_of(d, t, p.clusters);
     }
@@ -101,6 +108,19 @@ class DomainSampler {
       for (; i < hi; ++i) s0 += sq(i);
     });
     p.spread = m * ((s0 + s1) + (s2 + s3));
+  }
+  // The cluster scan of bodies lo .. hi - 1 (equal masses), in runs: positions
+  // at t wrapped together, then the pairs. closes: body lo closes the chain.
+  void scan_range(std::size_t lo, std::size_t hi, double t, bool closes, ClusterScan& scan,
+                  PeriodWrap& wrap) const {
+    constexpr std::size_t run = 256;
+    std::array<double, run> x, w, v;
+    for (std::size_t b = lo; b < hi; b += run) {
+      const std::size_t n = std::min(run, hi - b);
+      for (std::size_t k = 0; k < n; ++k) x[k] = e_.body_[b + k].at(t), v[k] = e_.body_[b + k].v;
+      if (spec_.ring) wrap.wrap_all(x.data(), w.data(), n);
+      scan.add_run(spec_.ring ? w.data() : x.data(), v.data(), n, b, closes && b == lo);
+    }
   }
   // f(lo, hi) for the index ranges of d's bodies (equal masses): one, or two
   // where the domain wraps past the last body of a ring.

@@ -35,6 +35,10 @@
 
 #include "shockgas/particles/cluster_finder.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace shockgas::particles::detail {
 
 // What a sample measures, as the recorder asks (clusters: count them).
@@ -77,6 +81,40 @@ class ClusterScan {
       p_.first_w = w, p_.first_v = v, p_.first_index = index, started_ = true;
     }
     p_.last_w = w, p_.last_v = v, p_.last_index = index;
+  }
+  // add() for n consecutive bodies of indices index .. index + n - 1 (n >= 1),
+  // of which only the first may close: the pairs inside without branches, two
+  // at a time (the same numbers as add(): (w + 0) - w_left is w - w_left).
+  void add_run(const double* w, const double* v, std::size_t n, std::size_t index, bool closes) {
+    add(w[0], v[0], index, closes);
+    std::size_t joined = 0, drops = 0, k = 1;
+#if defined(__SSE2__)
+    const __m128d L = _mm_set1_pd(L_), max_gap = _mm_set1_pd(criteria_.max_gap);
+    const __m128d max_dv = _mm_set1_pd(criteria_.max_dv), sign = _mm_set1_pd(-0.0);
+    __m128i joined2 = _mm_setzero_si128(), drops2 = _mm_setzero_si128();  // minus the masks: counts
+    for (; k + 2 <= n; k += 2) {
+      const __m128d wr = _mm_loadu_pd(w + k), wl = _mm_loadu_pd(w + k - 1);
+      const __m128d drop = _mm_cmplt_pd(wr, wl);
+      const __m128d gap = _mm_sub_pd(_mm_add_pd(wr, _mm_and_pd(drop, L)), wl);
+      const __m128d dv = _mm_andnot_pd(sign, _mm_sub_pd(_mm_loadu_pd(v + k), _mm_loadu_pd(v + k - 1)));
+      const __m128d join = _mm_and_pd(_mm_cmplt_pd(gap, max_gap), _mm_cmplt_pd(dv, max_dv));
+      joined2 = _mm_sub_epi64(joined2, _mm_castpd_si128(join));
+      drops2 = _mm_sub_epi64(drops2, _mm_castpd_si128(drop));
+    }
+    alignas(16) std::array<std::uint64_t, 4> lanes;
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes.data()), joined2);
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes.data() + 2), drops2);
+    joined = lanes[0] + lanes[1], drops = lanes[2] + lanes[3];
+#endif
+    for (; k < n; ++k) {
+      const bool drop = w[k] < w[k - 1];
+      joined += criteria_.joins((w[k] + (drop ? L_ : 0.0)) - w[k - 1], v[k] - v[k - 1]);
+      drops += drop;
+    }
+    p_.joined += joined, p_.drops += drops;
+    if (drops > 0) [[unlikely]]
+      for (std::size_t j = 1; j < n; ++j) p_.max_drop = std::max(p_.max_drop, w[j - 1] - w[j]);
+    p_.last_w = w[n - 1], p_.last_v = v[n - 1], p_.last_index = index + n - 1;
   }
   const ClusterPart& part() const { return p_; }
 

@@ -13,8 +13,14 @@
 // collisions per body at the last plan's rate. Each domain (the bodies between
 // two cuts) has a tournament tree of its own over its pair slots, small enough
 // for a core's caches; the trees live as long as the plan. run_until(t) runs
-// every domain to min(t, T_w) (a sub-window: samples and snapshots end one, the
-// domains and their trees stay); at T_w the next plan cuts elsewhere.
+// every domain to min(t, T_w) (a sub-window: snapshots and whole-state samples
+// end one, the domains and their trees stay); at T_w the next plan cuts
+// elsewhere. run_sampled runs through many sample times in one sub-window: each
+// domain stops at each of them to measure its part of the sample
+// (domain_sampler.hpp) while its bodies are in cache, and goes on; the parts are
+// combined in domain order after the sub-window. So a short run does not stream
+// the whole state in again for every sample, neither for its collisions nor for
+// its observables.
 //
 // Exactness. The contact times are computed by the same function from the same
 // states as in the global queue, so a domain sees the same collisions in the same
@@ -27,7 +33,8 @@
 // so that their serial chains overlap in the core. Nothing the schedule decides
 // depends on the team: the cuts and horizons are functions of the state; each
 // domain keeps its own collision counts and dissipated energy, added to the
-// engine's in domain order at the end of every sub-window; a collision limit is
+// engine's in domain order at the end of every sub-window (and of every sample
+// taken in parts: the same sums in the same order); a collision limit is
 // checked there, on the exact total; a rounding stall is reported for the first
 // stalled domain in domain order after the sub-window ends.
 //

@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
 #include "chain_fixtures.hpp"
 #include "chain_observables.hpp"
+#include "ring_wrap.hpp"
 #include "stretch_observables.hpp"
 
 namespace shockgas::particles::detail {
@@ -101,6 +103,32 @@ void expect_same_moments(const Chain& c, const SampleMoments& m) {
   EXPECT_NEAR(m.momentum / m.mass, mean, 2 * (n + 4) * eps * momentum_scale / mass);
   const double d = 2 * (n + 4) * eps * momentum_scale / mass;
   EXPECT_NEAR(m.T, T, 2 * (n + 4) * eps * T + 2 * d * d);
+}
+
+// wrap_all takes one period for a whole run of positions: each result must be
+// wrap_into's to the bit, for runs inside one period, across a boundary, at
+// exact multiples of L and far from the first period.
+TEST(PeriodWrap, WrapAllEqualsWrapIntoToTheBit) {
+  Rng rng(43);
+  for (double L : {1.0, 3000.0, 1e7, 0.1 * 3}) {
+    PeriodWrap wrap(L);
+    std::vector<double> x(257), w(257);
+    for (int run = 0; run < 2000; ++run) {
+      const std::size_t n = 1 + static_cast<std::size_t>(256 * rng.uniform());
+      const double k = std::floor(rng.uniform(run % 7 == 0 ? -3000.0 : -3.0, 3.0));
+      double at = (k + rng.uniform()) * L;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double u = rng.uniform();
+        at += rng.uniform(0.0, u < 0.9 ? 1e-3 : 0.2) * L;
+        x[i] = u < 0.95 ? at : std::nextafter(std::round(at / L) * L, u < 0.975 ? -1e300 : 1e300);
+      }
+      wrap.wrap_all(x.data(), w.data(), n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double want = wrap_into(x[i], L);
+        ASSERT_EQ(std::memcmp(&w[i], &want, sizeof want), 0) << "x = " << x[i] << ", L = " << L;
+      }
+    }
+  }
 }
 
 TEST(StretchObservables, OrderedChainsCountAsTheWholeChainHoweverCut) {
