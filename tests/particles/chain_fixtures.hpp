@@ -107,4 +107,16 @@ inline Chain random_chain(Rng& rng, std::size_t bodies, double delta, bool ring)
   return c;
 }
 
+// A rounding-sized drop of the positions (as rounding leaves touching bodies):
+// body k put just left of its left neighbour, with its velocity; across: k = 0
+// against the last body (ring), else a random body inside. Returns the left one.
+inline std::size_t misorder(Chain& c, bool across, Rng& rng) {
+  const std::size_t n = c.x.size();
+  const std::size_t k = across ? 0 : 1 + static_cast<std::size_t>(static_cast<double>(n - 2) * rng.uniform());
+  const std::size_t left = across ? n - 1 : k - 1;
+  c.x[k] = c.x[left] - (across ? c.L : 0.0) - 1e-9 * c.L;
+  c.v[k] = c.v[left];
+  return left;
+}
+
 }  // namespace shockgas::particles::detail::testing

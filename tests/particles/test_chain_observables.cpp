@@ -177,10 +177,8 @@ TEST(ChainObservables, MisorderedChainsFallBackToTheSortedCopy) {
       Chain c = random_chain(rng, 300, 0.02, ring);
       // A rounding-sized drop inside the chain, or (ring) across its ends.
       const bool across = ring && trial % 2 == 1;
-      const std::size_t k = across ? 0 : 1 + static_cast<std::size_t>(298 * rng.uniform());
-      const std::size_t left = across ? c.x.size() - 1 : k - 1;
-      c.x[k] = c.x[left] - (across ? c.L : 0.0) - 1e-9 * c.L;
-      c.v[k] = c.v[left];
+      const std::size_t left = misorder(c, across, rng);
+      const std::size_t k = across ? 0 : left + 1;
       ClusterCounter counter(c.L, ring, default_cluster_criteria(0.02, 1.0));
       view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); }, Fields::all);
       if (!ring || ref_wrap(c.x[k], c.L) < ref_wrap(c.x[left], c.L)) {

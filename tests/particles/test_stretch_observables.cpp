@@ -165,11 +165,7 @@ TEST(StretchObservables, MisorderedStretchesCountAsTheSortedCopy) {
     for (int trial = 0; trial < 40; ++trial) {
       SCOPED_TRACE(std::string(ring ? "ring" : "line") + ", trial " + std::to_string(trial));
       Chain c = random_chain(rng, 300, 0.02, ring);
-      const bool across = ring && trial % 2 == 1;
-      const std::size_t k = across ? 0 : 1 + static_cast<std::size_t>(298 * rng.uniform());
-      const std::size_t left = across ? c.x.size() - 1 : k - 1;
-      c.x[k] = c.x[left] - (across ? c.L : 0.0) - 1e-9 * c.L;
-      c.v[k] = c.v[left];
+      const std::size_t left = misorder(c, ring && trial % 2 == 1, rng);
       const ClusterCriteria criteria = default_cluster_criteria(0.02, 1.0);
       const std::size_t expected = find_clusters(ref_sorted(c, ring), ring ? c.L : 0.0, criteria).size();
       std::size_t start = ring ? static_cast<std::size_t>(300 * rng.uniform()) : 0;
