@@ -40,6 +40,8 @@ template <bool Linked>
 class WindowPlanner;
 template <bool Linked>
 class DomainStepper;
+template <bool Linked>
+class DomainSampler;
 
 // Why run_until returned. stall: delta > 0 (or r = 0, 1), where no collapse is
 // possible, but time stopped advancing anyway (see run_until).
@@ -151,6 +153,7 @@ class EventEngine {
   friend class WindowScheduler<Linked>;
   friend class WindowPlanner<Linked>;
   friend class DomainStepper<Linked>;
+  friend class DomainSampler<Linked>;
   struct Body {
     double x;                                              // position at local time t [length], unrolled
     double v;                                              // velocity [length/time]

@@ -71,24 +71,49 @@ void Recorder::sample(double t, const ChainView& s, const Counters& c, std::size
   if (p_.clusters) counter.emplace(L_, ring_, criteria_);
   const ChainMoments moments = chain_moments(s, counter ? &*counter : nullptr);
   const HistogramSpec spec{p_.histogram_bins, p_.histogram_zmax, std::cbrt(t)};
-  std::vector<double> row;
-  const double T = chain_temperature(s, moments, spec, spec.bins > 0 ? &row : nullptr);
+  std::vector<double> density;
+  const double T = chain_temperature(s, moments, spec, spec.bins > 0 ? &density : nullptr);
   const double clusters = counter ? static_cast<double>(count_clusters(s, *counter)) : 0.0;
+  record(t, {T, moments.mean(), static_cast<double>(s.size()), clusters}, c, copies, density);
+}
+
+std::vector<double> Recorder::samples_in_parts() const {
+  std::vector<double> t;
+  if (p_.histogram_bins > 0) return t;
+  double other = done;
+  if (next_snapshot_ < snapshots_.size()) other = snapshots_[next_snapshot_];
+  if (next_frame_ < frames_.size()) other = std::min(other, frames_[next_frame_]);
+  for (std::size_t k = next_sample_; k < samples_.size() && samples_[k] < other; ++k)
+    if (t.empty() || samples_[k] > t.back()) t.push_back(samples_[k]);
+  return t;
+}
+
+void Recorder::observe_sample(double t, const SampleMoments& moments, std::size_t clusters,
+                              const Counters& c) {
+  std::size_t copies = 0;
+  for (; next_sample_ < samples_.size() && samples_[next_sample_] <= t; ++next_sample_) ++copies;
+  const Row row{moments.T, moments.momentum / moments.mass, static_cast<double>(moments.bodies),
+                static_cast<double>(clusters)};
+  record(t, row, c, copies, {});
+}
+
+void Recorder::record(double t, const Row& row, const Counters& c, std::size_t copies,
+                      const std::vector<double>& density) {
   TimeSeries& ts = out_.series;
   for (std::size_t k = 0; k < copies; ++k) {
     ts.t.push_back(t);
-    ts.T.push_back(T);
-    ts.mean_v.push_back(moments.mean());
-    ts.n_bodies.push_back(static_cast<double>(s.size()));
-    if (counter) ts.n_clusters.push_back(clusters);
+    ts.T.push_back(row.T);
+    ts.mean_v.push_back(row.mean_v);
+    ts.n_bodies.push_back(row.bodies);
+    if (p_.clusters) ts.n_clusters.push_back(row.clusters);
     ts.collisions.push_back(static_cast<double>(c.all));
     ts.inelastic.push_back(static_cast<double>(c.inelastic));
     ts.elastic.push_back(static_cast<double>(c.elastic));
     ts.merges.push_back(static_cast<double>(c.merges));
     ts.dissipated.push_back(c.dissipated);
-    if (spec.bins == 0) continue;
+    if (p_.histogram_bins == 0) continue;
     out_.histogram.t.push_back(t);
-    out_.histogram.density.insert(out_.histogram.density.end(), row.begin(), row.end());
+    out_.histogram.density.insert(out_.histogram.density.end(), density.begin(), density.end());
   }
 }
 

@@ -15,6 +15,7 @@
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
 #include "shockgas/particles/state_sink.hpp"
+#include "stretch_observables.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -41,11 +42,26 @@ class Recorder {
   double next_stop() const;
   // Observes every record due at t = next_stop(); each observable only if asked.
   void observe(double t, const ChainView& s, const Counters& c);
+  // The sample times from the next stop on that a model may measure in parts
+  // (stretch_observables.hpp) and hand over by observe_sample: those before any
+  // other record (snapshot, frame), without duplicates; none when a histogram is
+  // asked for (it bins about the mean of the whole state).
+  std::vector<double> samples_in_parts() const;
+  // What those parts measure.
+  SampleSpec sample_spec() const { return {p_.clusters, criteria_, L_, ring_}; }
+  // Records the samples due at t from their combined parts.
+  void observe_sample(double t, const SampleMoments& moments, std::size_t clusters, const Counters& c);
   // Moves the records out, with the final state at stop.time and how the run ended.
   RunResult finish(const ChainView& final_state, const RunStop& stop, const Counters& c);
 
  private:
   void sample(double t, const ChainView& s, const Counters& c, std::size_t copies);
+  // The row of every sample due at t (copies of them), histogram row if any.
+  struct Row {
+    double T = 0, mean_v = 0, bodies = 0, clusters = 0;
+  };
+  void record(double t, const Row& row, const Counters& c, std::size_t copies,
+              const std::vector<double>& density);
   std::size_t count_clusters(const ChainView& s, ClusterCounter& counter) const;
   void snapshot(double t, const ChainView& s, std::size_t copies);
   void frame(double t, const ChainView& s);

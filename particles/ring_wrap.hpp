@@ -1,8 +1,14 @@
 #pragma once
 // Ring positions wrapped into one period (private to particles/): the recorder's
 // rule, and the same rule without a division per body for streamed chains.
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace shockgas::particles::detail {
 
@@ -25,6 +31,34 @@ class PeriodWrap {
     if (!(x >= lo_ && x < hi_)) enter(x);
     const double w = x - L_ * k_;
     return w >= L_ || w < 0 ? 0.0 : w;
+  }
+
+  // w[k] = operator()(x[k]) for k < n: the expression of x[0]'s period for all,
+  // two at a time, unless one lies outside it (then one by one).
+  void wrap_all(const double* x, double* w, std::size_t n) {
+    if (!(x[0] >= lo_ && x[0] < hi_)) enter(x[0]);
+    const double shift = L_ * k_;
+    std::size_t k = 0;
+    bool inside = true;
+#if defined(__SSE2__)
+    const __m128d lo = _mm_set1_pd(lo_), hi = _mm_set1_pd(hi_), s = _mm_set1_pd(shift), L = _mm_set1_pd(L_);
+    __m128d all = _mm_castsi128_pd(_mm_set1_epi64x(-1));
+    for (; k + 2 <= n; k += 2) {
+      const __m128d xk = _mm_loadu_pd(x + k);
+      all = _mm_and_pd(all, _mm_and_pd(_mm_cmpge_pd(xk, lo), _mm_cmplt_pd(xk, hi)));
+      const __m128d wk = _mm_sub_pd(xk, s);
+      const __m128d off = _mm_or_pd(_mm_cmpge_pd(wk, L), _mm_cmplt_pd(wk, _mm_setzero_pd()));
+      _mm_storeu_pd(w + k, _mm_andnot_pd(off, wk));
+    }
+    inside = _mm_movemask_pd(all) == 3;
+#endif
+    for (; k < n; ++k) {
+      inside &= x[k] >= lo_ && x[k] < hi_;
+      const double wk = x[k] - shift;
+      w[k] = wk >= L_ || wk < 0 ? 0.0 : wk;
+    }
+    if (!inside)
+      for (k = 0; k < n; ++k) w[k] = (*this)(x[k]);
   }
 
  private:

@@ -136,6 +136,20 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
   detail::RunWatch watch{p, progress};
   RunStop stop;
   for (double t = recorder.next_stop(); t != detail::Recorder::done; t = recorder.next_stop()) {
+    if (scheduler && !scheduler->on_global_queue()) {
+      // Samples measured per domain on the way, as long as the windows run.
+      const std::vector<double> times = recorder.samples_in_parts();
+      if (!times.empty()) {
+        detail::SampleBatch batch(times, recorder.sample_spec(),
+                                  [&](double ts, const detail::SampleMoments& m, std::size_t clusters) {
+                                    recorder.observe_sample(ts, m, clusters, counters(engine));
+                                  });
+        const detail::EngineStop s = scheduler->run_sampled(times.back(), watch, batch);
+        stop = stop_of(s, engine.now(), engine.last_position(), watch.reason);
+        if (s != detail::EngineStop::reached) break;
+        continue;
+      }
+    }
     const detail::EngineStop s = scheduler ? scheduler->run_until(t, watch) : engine.run_until(t, watch);
     stop = stop_of(s, engine.now(), engine.last_position(), watch.reason);
     if (s != detail::EngineStop::reached) break;

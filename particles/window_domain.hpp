@@ -33,6 +33,8 @@ struct alignas(128) Domain {
   bool stalled = false;
   std::array<std::uint64_t, 3> count{};  // by CollisionKind, since the last settle
   double dissipated = 0;                 // since the last settle
+  double limit = 0;                      // runs to this time (inclusive): the sub-window's end or a sample
+  std::size_t sample = 0;                // samples of the sub-window it has measured
 };
 
 // A domain whose collisions stopped advancing time (EventEngine::frozen_limit in

@@ -13,8 +13,14 @@
 // collisions per body at the last plan's rate. Each domain (the bodies between
 // two cuts) has a tournament tree of its own over its pair slots, small enough
 // for a core's caches; the trees live as long as the plan. run_until(t) runs
-// every domain to min(t, T_w) (a sub-window: samples and snapshots end one, the
-// domains and their trees stay); at T_w the next plan cuts elsewhere.
+// every domain to min(t, T_w) (a sub-window: snapshots and whole-state samples
+// end one, the domains and their trees stay); at T_w the next plan cuts
+// elsewhere. run_sampled runs through many sample times in one sub-window: each
+// domain stops at each of them to measure its part of the sample
+// (domain_sampler.hpp) while its bodies are in cache, and goes on; the parts are
+// combined in domain order after the sub-window. So a short run does not stream
+// the whole state in again for every sample, neither for its collisions nor for
+// its observables.
 //
 // Exactness. The contact times are computed by the same function from the same
 // states as in the global queue, so a domain sees the same collisions in the same
@@ -27,7 +33,8 @@
 // so that their serial chains overlap in the core. Nothing the schedule decides
 // depends on the team: the cuts and horizons are functions of the state; each
 // domain keeps its own collision counts and dissipated energy, added to the
-// engine's in domain order at the end of every sub-window; a collision limit is
+// engine's in domain order at the end of every sub-window (and of every sample
+// taken in parts: the same sums in the same order); a collision limit is
 // checked there, on the exact total; a rounding stall is reported for the first
 // stalled domain in domain order after the sub-window ends.
 //
@@ -39,10 +46,12 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "domain_prefetcher.hpp"
+#include "domain_sampler.hpp"
 #include "event_engine.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "thread_team.hpp"
@@ -50,41 +59,6 @@
 #include "window_plan.hpp"
 
 namespace shockgas::particles::detail {
-
-// Every collision of this rule is a merge: r = 0, and sub-threshold ones merge too.
-inline bool merges_only(const CollisionRule& rule) {
-  return rule.r == 0.0 && (rule.delta == 0.0 || rule.sticky_subthreshold);
-}
-
-// Why time windows are not exact for n bodies under this rule ("" when they are),
-// and what they would need. They are exact when every collision keeps the
-// velocities in their range (equal masses without merges, or merges only) and no
-// inelastic collapse must be detected.
-inline std::string window_obstacle(std::size_t n, bool equal_masses, const CollisionRule& rule) {
-  if (rule.collapse_possible())
-    return "inelastic collapse is possible (delta = 0, 0 < r < 1): detecting it needs the global time "
-           "order; windows would need a collapse test per domain";
-  if (n < WindowPlanner<false>::min_domains * WindowPlanner<false>::min_domain_bodies)
-    return "fewer than 1024 bodies: too few to split";
-  if (merges_only(rule) || (equal_masses && !rule.can_merge())) return "";
-  const char* need =
-      "; windows would need a bound on how far a velocity can leave its range in a window (or cuts checked "
-      "after each window, with a rollback)";
-  if (rule.r == 0.0)
-    return std::string(
-               "r = 0 with elastic sub-threshold bounces: a bounce between clusters of unequal mass can "
-               "throw the lighter one out of the velocity range, so the window bound does not hold") +
-           need;
-  if (rule.can_merge())
-    return std::string(
-               "sticky sub-threshold with r > 0: merged bodies of unequal mass bounce inelastically, which "
-               "can leave the velocity range, so the window bound does not hold") +
-           need;
-  return std::string(
-             "unequal masses with bounces: a bounce of a light body off a heavy one can leave the velocity "
-             "range, so the window bound does not hold") +
-         need;
-}
 
 template <bool Linked>
 class WindowScheduler {
@@ -99,6 +73,32 @@ class WindowScheduler {
   // As Engine::run_until: processes every collision at time <= t_stop.
   template <class Watch>
   EngineStop run_until(double t_stop, Watch& watch) {
+    if (const std::optional<EngineStop> s = run_windows(t_stop, watch, nullptr)) return *s;
+    return e_.run_until(t_stop, watch);
+  }
+
+  // Runs to the last time of the batch, and each domain measures its part of
+  // every sample of the batch when it reaches the sample's time; the batch gets
+  // the parts in domain order, with the engine's counts at that time. Returns
+  // early, with samples pending, when the run leaves the windows for the global
+  // queue (then they must be taken from the state there).
+  template <class Watch>
+  EngineStop run_sampled(double t_stop, Watch& watch, SampleBatch& batch) {
+    return run_windows(t_stop, watch, &batch).value_or(EngineStop::reached);
+  }
+
+  bool on_global_queue() const { return global_; }
+  // Why the run left the windows for the global queue ("" while it has not).
+  const std::string& why_global() const { return why_global_; }
+  std::size_t threads() const { return team_.size(); }
+
+ private:
+  std::size_t n() const { return e_.n_; }
+
+  // Sub-windows up to t_stop (and the batch's samples on the way); nullopt when
+  // the run continues on the global queue.
+  template <class Watch>
+  std::optional<EngineStop> run_windows(double t_stop, Watch& watch, SampleBatch* batch) {
     while (!global_) {
       if (!planned_ && !start_plan()) break;
       const bool to_stop = t_stop <= horizon_;  // then collisions at exactly t_stop are included
@@ -106,7 +106,9 @@ class WindowScheduler {
       bool halt = false;
       const std::uint64_t before = e_.count_[3];
       const double from = e_.now_;
-      run_domains(end, to_stop, watch, halt);
+      if (batch) batch->open(end, to_stop, domains_.size(), team_.size());
+      run_domains(end, to_stop, watch, halt, batch);
+      if (batch) deliver_samples(*batch);
       settle();
       if (end > from) last_rate_ = static_cast<double>(e_.count_[3] - before) / (end - from);
       if (const Domain* d = first_stalled()) {
@@ -119,16 +121,8 @@ class WindowScheduler {
       if (halt || !watch(e_.now_, e_.count_[3])) return EngineStop::halted;
       if (to_stop) return EngineStop::reached;
     }
-    return e_.run_until(t_stop, watch);
+    return std::nullopt;
   }
-
-  bool on_global_queue() const { return global_; }
-  // Why the run left the windows for the global queue ("" while it has not).
-  const std::string& why_global() const { return why_global_; }
-  std::size_t threads() const { return team_.size(); }
-
- private:
-  std::size_t n() const { return e_.n_; }
 
   // Cuts the chain at now(); false when no cut can open (then the run goes on
   // on the global queue).
@@ -242,12 +236,25 @@ class WindowScheduler {
   // The domains' counts and energy into the engine's, in domain order.
   void settle() {
     for (Domain& d : domains_) {
-      for (int k = 0; k < 3; ++k) e_.count_[k] += d.count[k], e_.count_[3] += d.count[k];
-      e_.dissipated_ += d.dissipated;
-      if constexpr (Linked) e_.alive_ -= d.count[2];
+      add_counts(d.count, d.dissipated);
       d.count = {};
       d.dissipated = 0;
     }
+  }
+  void add_counts(const std::array<std::uint64_t, 3>& count, double dissipated) {
+    for (int k = 0; k < 3; ++k) e_.count_[k] += count[k], e_.count_[3] += count[k];
+    e_.dissipated_ += dissipated;
+    if constexpr (Linked) e_.alive_ -= count[2];
+  }
+  // The sub-window's samples in time order: the collisions up to each into the
+  // engine's counts (in domain order, as settle), then the sample to the batch.
+  void deliver_samples(SampleBatch& batch) {
+    for (std::size_t k = 0; k < batch.count(); ++k) {
+      for (std::size_t d = 0; d < domains_.size(); ++d)
+        add_counts(batch.part(d, k).count, batch.part(d, k).dissipated);
+      batch.deliver(k);
+    }
+    batch.close();
   }
   const Domain* first_stalled() const {
     for (const Domain& d : domains_)
@@ -256,20 +263,35 @@ class WindowScheduler {
   }
 
   // Every domain to `end` (inclusive: collisions at exactly end too), on the
-  // team. Member 0 tells the watch about the time every so many steps; halt is
-  // set when the watch asks to stop (the sub-window finishes first). On an abort
-  // request (core/interrupt.hpp) every member throws Interrupted within
+  // team, each stopping on the way at the batch's samples of the sub-window to
+  // take its part. Member 0 tells the watch about the time every so many steps;
+  // halt is set when the watch asks to stop (the sub-window finishes first). On
+  // an abort request (core/interrupt.hpp) every member throws Interrupted within
   // check_every / 2 rounds of its own; the team rethrows it.
   template <class Watch>
-  void run_domains(double end, bool inclusive, Watch& watch, bool& halt) {
+  void run_domains(double end, bool inclusive, Watch& watch, bool& halt, SampleBatch* batch) {
     const double limit = inclusive ? end : std::nextafter(end, -std::numeric_limits<double>::infinity());
+    const std::size_t samples = batch ? batch->count() : 0;
+    for (Domain& d : domains_) d.sample = 0, d.limit = samples > 0 ? batch->time(0) : limit;
+    std::optional<DomainSampler<Linked>> sampler;
+    if (samples > 0) sampler.emplace(e_, batch->spec());
+    // Takes the parts of the samples domain d has reached; whether it has a
+    // collision before its next limit.
+    auto ready = [&](Domain& d, std::size_t member) {
+      for (;;) {
+        if (d.stalled) return false;
+        if (!d.empty && d.tree.top_time() <= d.limit) return true;
+        if (d.sample == samples) return false;
+        batch->take(*sampler, d, static_cast<std::size_t>(&d - domains_.data()), d.sample, member);
+        d.limit = ++d.sample < samples ? batch->time(d.sample) : limit;
+      }
+    };
     const std::size_t lines = prefetch_lines(end);
     std::atomic<std::size_t> next{0};
     team_.run([&](std::size_t member) {
       auto claim = [&]() -> Domain* {
         for (std::size_t d = next++; d < domains_.size(); d = next++)
-          if (!domains_[d].empty && !domains_[d].stalled && domains_[d].tree.top_time() <= limit)
-            return &domains_[d];
+          if (ready(domains_[d], member)) return &domains_[d];
         return nullptr;
       };
       // The domain after the running ones is claimed early, and its memory loaded
@@ -283,19 +305,19 @@ class WindowScheduler {
         return d;
       };
       // Two domains at once, a step of each per round (step() is false when a
-      // domain is done or stalled).
+      // domain reached its limit or stalled).
       std::array<Domain*, 2> s{};
       s[0] = take(), s[1] = take();
       for (std::uint64_t round = 1; s[0] || s[1]; ++round) {
         if (s[0] && s[1]) [[likely]] {
-          const bool a = stepper_.step(*s[0], limit), b = stepper_.step(*s[1], limit);
+          const bool a = stepper_.step(*s[0], s[0]->limit), b = stepper_.step(*s[1], s[1]->limit);
           if (!a) [[unlikely]]
-            s[0] = take();
+            if (!ready(*s[0], member)) s[0] = take();
           if (!b) [[unlikely]]
-            s[1] = take();
+            if (!ready(*s[1], member)) s[1] = take();
         } else {
           Domain*& one = s[0] ? s[0] : s[1];
-          if (!stepper_.step(*one, limit)) one = take();
+          if (!stepper_.step(*one, one->limit) && !ready(*one, member)) one = take();
         }
         prefetch.advance(lines);
         if (round % (Engine::check_every / 2) == 0) [[unlikely]] {

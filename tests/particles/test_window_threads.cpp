@@ -4,6 +4,7 @@
 // result.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 
 #include "shockgas/core/initial_condition.hpp"
@@ -27,7 +28,9 @@ InitialParams gas(std::size_t n) {
   return ip;
 }
 
-ParticleParams params(const Case& c, std::size_t threads) {
+// bins > 0: a histogram, so the samples sweep the whole state; 0: the domains
+// measure their parts of each sample (stretch_observables.hpp).
+ParticleParams params(const Case& c, std::size_t threads, std::size_t bins = 20) {
   ParticleParams p;
   p.r = c.r;
   p.delta = c.delta;
@@ -35,7 +38,7 @@ ParticleParams params(const Case& c, std::size_t threads) {
   p.geometry = c.geometry;
   p.t_end = c.t_end;
   p.samples = 15;  // every sample ends a sub-window
-  p.histogram_bins = 20;
+  p.histogram_bins = bins;
   p.threads = threads;
   return p;
 }
@@ -57,17 +60,44 @@ void expect_identical(const RunResult& a, const RunResult& b) {
 
 void expect_same_on_1_2_3_threads(const Case& c) {
   const std::size_t n = 20000;
-  const RunResult one = simulate(gas(n), 0, params(c, 1));
-  ASSERT_EQ(one.schedule.order, "windows") << one.schedule.why_global;
-  ASSERT_EQ(one.stop.reason, StopReason::completed);
-  ASSERT_GT(one.collisions, n / 2);  // many windows (merges: at most n - 1), and sub-windows at the samples
-  for (std::size_t threads : {2u, 3u}) {
-    SCOPED_TRACE(std::to_string(threads) + " threads");
-    const RunResult more = simulate(gas(n), 0, params(c, threads));
-    EXPECT_EQ(more.schedule.threads, threads);
-    EXPECT_EQ(more.schedule.order, "windows");
-    expect_identical(one, more);
+  for (std::size_t bins : {20u, 0u}) {
+    SCOPED_TRACE(bins > 0 ? "samples of the whole state" : "samples in parts");
+    const RunResult one = simulate(gas(n), 0, params(c, 1, bins));
+    ASSERT_EQ(one.schedule.order, "windows") << one.schedule.why_global;
+    ASSERT_EQ(one.stop.reason, StopReason::completed);
+    ASSERT_GT(one.collisions, n / 2);  // many windows (merges: at most n - 1), and sub-windows at the samples
+    for (std::size_t threads : {2u, 3u}) {
+      SCOPED_TRACE(std::to_string(threads) + " threads");
+      const RunResult more = simulate(gas(n), 0, params(c, threads, bins));
+      EXPECT_EQ(more.schedule.threads, threads);
+      EXPECT_EQ(more.schedule.order, "windows");
+      expect_identical(one, more);
+    }
   }
+}
+
+// The samples measured in parts by the domains against the same samples swept
+// over the whole state (a histogram asks for those): the same collisions,
+// counts, energy and clusters to the bit; T and the mean velocity are the same
+// sums in another order, equal to 2 (N + 4) eps (Higham, Accuracy and
+// Stability, 4.2), relative to T and to the velocities' scale (1).
+void expect_parts_equal_whole_state(const Case& c) {
+  const std::size_t n = 20000;
+  const RunResult whole = simulate(gas(n), 0, params(c, 1, 20));
+  const RunResult parts = simulate(gas(n), 0, params(c, 1, 0));
+  ASSERT_EQ(parts.schedule.order, "windows") << parts.schedule.why_global;
+  ASSERT_EQ(parts.series.size(), whole.series.size());
+  for (auto column :
+       {&TimeSeries::t, &TimeSeries::n_bodies, &TimeSeries::n_clusters, &TimeSeries::collisions,
+        &TimeSeries::inelastic, &TimeSeries::elastic, &TimeSeries::merges, &TimeSeries::dissipated})
+    EXPECT_EQ(parts.series.*column, whole.series.*column);
+  const double rounding = 2 * (static_cast<double>(n) + 4) * std::numeric_limits<double>::epsilon();
+  for (std::size_t k = 0; k < whole.series.size(); ++k) {
+    EXPECT_NEAR(parts.series.T[k], whole.series.T[k], rounding * whole.series.T[k]) << "sample " << k;
+    EXPECT_NEAR(parts.series.mean_v[k], whole.series.mean_v[k], rounding) << "sample " << k;
+  }
+  for (auto column : {&Bodies::x, &Bodies::v, &Bodies::m})
+    EXPECT_EQ(parts.final_state.*column, whole.final_state.*column);
 }
 
 TEST(WindowThreads, RingInelasticSameOnAnyNumberOfThreads) {
@@ -87,6 +117,19 @@ TEST(WindowThreads, RingStickySameOnAnyNumberOfThreads) {
 }
 TEST(WindowThreads, LineStickySameOnAnyNumberOfThreads) {
   expect_same_on_1_2_3_threads({Geometry::line, 0.0, 0.0, Subthreshold::elastic, 300.0});
+}
+
+TEST(WindowThreads, SamplesInPartsEqualTheWholeStateOnARing) {
+  expect_parts_equal_whole_state({Geometry::ring, 0.9, 1e-2, Subthreshold::elastic, 200.0});
+}
+TEST(WindowThreads, SamplesInPartsEqualTheWholeStateOnALine) {
+  expect_parts_equal_whole_state({Geometry::line, 0.9, 1e-2, Subthreshold::elastic, 200.0});
+}
+TEST(WindowThreads, SamplesInPartsEqualTheWholeStateForStickyMerges) {
+  expect_parts_equal_whole_state({Geometry::ring, 0.0, 1e-2, Subthreshold::sticky, 200.0});
+}
+TEST(WindowThreads, SamplesInPartsEqualTheWholeStateForElasticGas) {
+  expect_parts_equal_whole_state({Geometry::line, 1.0, 0.0, Subthreshold::elastic, 50.0});
 }
 
 TEST(WindowThreads, CollisionLimitStopsAtTheSamePlaceOnAnyNumberOfThreads) {
