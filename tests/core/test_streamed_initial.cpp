@@ -27,9 +27,12 @@ InitialParams gas(Positions positions, Velocities velocities) {
 Bodies drawn(const InitialCondition& initial, std::uint64_t k) {
   InitialStream s = stream_realization(initial, k);
   Bodies b;
-  read_in_chunks(s, [&](const double* x, const double* v, const double* m, std::size_t count) {
-    for (std::size_t i = 0; i < count; ++i) b.push_back(x[i], v[i], m[i]);
-  }, 999);
+  read_in_chunks(
+      s,
+      [&](const double* x, const double* v, const double* m, std::size_t count) {
+        for (std::size_t i = 0; i < count; ++i) b.push_back(x[i], v[i], m[i]);
+      },
+      999);
   return b;
 }
 
@@ -72,7 +75,9 @@ TEST(StreamedInitial, HullFromChunksEqualsHullFromBodies) {
   for (bool ring : {false, true})
     for (double t : {0.0, 3.0, 300.0}) {
       InitialStream s(p, 1);
-      const StickyHull::Chunks read = [&](std::size_t n, double* x, double* v, double* m) { s.next(n, x, v, m); };
+      const StickyHull::Chunks read = [&](std::size_t n, double* x, double* v, double* m) {
+        s.next(n, x, v, m);
+      };
       const StickyHull chunked = ring ? StickyHull::ring(p.N, read, L, t) : StickyHull::line(p.N, read, t);
       const StickyHull from_bodies = ring ? StickyHull::ring(whole, L, t) : StickyHull::line(whole, t);
       const auto a = chunked.clusters(), b = from_bodies.clusters();

@@ -57,7 +57,8 @@ void expect_same_run(const RunResult& a, const RunResult& b) {
   EXPECT_EQ(a.final_state.v, b.final_state.v);
   EXPECT_EQ(a.final_state.m, b.final_state.m);
   ASSERT_EQ(a.snapshots.size(), b.snapshots.size());
-  for (std::size_t k = 0; k < a.snapshots.size(); ++k) EXPECT_EQ(a.snapshots[k].bodies.x, b.snapshots[k].bodies.x);
+  for (std::size_t k = 0; k < a.snapshots.size(); ++k)
+    EXPECT_EQ(a.snapshots[k].bodies.x, b.snapshots[k].bodies.x);
 }
 
 TEST(StreamedRuns, EngineAndHullGiveTheHeldBodiesResults) {
