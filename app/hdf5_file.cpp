@@ -182,8 +182,8 @@ H5Handle Hdf5File::ensure_group(const std::string& path) {
                   close_group);
 }
 
-void Hdf5File::write_raw(const std::string& path, const void* data, std::int64_t type,
-                         std::vector<std::uint64_t> dims, const std::string& unit, const std::string& description) {
+H5Handle Hdf5File::create_dataset(const std::string& path, std::int64_t type, std::vector<std::uint64_t> dims,
+                                  const std::string& unit, const std::string& description) {
   std::vector<hsize_t> hdims(dims.begin(), dims.end());
   H5Handle space(check(H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr), "H5Screate_simple",
                        path),
@@ -193,11 +193,44 @@ void Hdf5File::write_raw(const std::string& path, const void* data, std::int64_t
   H5Handle set(check(H5Dcreate2(file_.get(), path.c_str(), type, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
                      "H5Dcreate2", path),
                close_dataset);
-  std::size_t count = 1;
-  for (auto d : dims) count *= d;
-  if (count > 0) check(H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", path);
   write_string_attribute(set.get(), "unit", unit);
   if (!description.empty()) write_string_attribute(set.get(), "description", description);
+  return set;
+}
+
+void Hdf5File::write_raw(const std::string& path, const void* data, std::int64_t type,
+                         std::vector<std::uint64_t> dims, const std::string& unit, const std::string& description) {
+  std::size_t count = 1;
+  for (auto d : dims) count *= d;
+  H5Handle set = create_dataset(path, type, std::move(dims), unit, description);
+  if (count > 0) check(H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", path);
+}
+
+Hdf5File::Writer Hdf5File::start(const std::string& path, std::size_t size, const std::string& unit,
+                                 const std::string& description) {
+  return Writer(create_dataset(path, H5T_NATIVE_DOUBLE, {size}, unit, description), path, size);
+}
+
+// Each piece a hyperslab of the file's dataset, written from the caller's memory.
+void Hdf5File::Writer::append(const double* data, std::size_t count) {
+  if (count == 0) return;
+  if (written_ + count > size_) throw RunError("HDF5: more values than " + path_ + " holds");
+  const hsize_t offset = written_, n = count;
+  H5Handle file_space(check(H5Dget_space(set_.get()), "H5Dget_space", path_), close_space);
+  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &n, nullptr),
+        "H5Sselect_hyperslab", path_);
+  H5Handle memory(check(H5Screate_simple(1, &n, nullptr), "H5Screate_simple", path_), close_space);
+  check(H5Dwrite(set_.get(), H5T_NATIVE_DOUBLE, memory.get(), file_space.get(), H5P_DEFAULT, data), "H5Dwrite",
+        path_);
+  written_ += count;
+}
+
+void Hdf5File::Writer::finish() {
+  if (written_ != size_)
+    throw RunError("HDF5: " + path_ + " got " + std::to_string(written_) + " of its " + std::to_string(size_) +
+                   " values");
+  const std::int64_t id = set_.release();
+  check(H5Dclose(id), "H5Dclose", path_);
 }
 
 void Hdf5File::write(const std::string& path, const std::vector<double>& data, const std::string& unit,

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "result_check.hpp"
@@ -64,6 +65,24 @@ class Hdf5File {
   void write_matrix(const std::string& path, const std::vector<double>& data, std::size_t rows,
                     std::size_t cols, const std::string& unit, const std::string& description);
 
+  // A 1-D float64 dataset of `size` values written in pieces, in order, never
+  // held whole: append() each piece, then finish() (RunError unless exactly
+  // `size` values were given). The same dataset as write() of them all.
+  class Writer {
+   public:
+    void append(const double* data, std::size_t count);
+    void finish();
+
+   private:
+    friend class Hdf5File;
+    Writer(H5Handle set, std::string path, std::size_t size)
+        : set_(std::move(set)), path_(std::move(path)), size_(size) {}
+    H5Handle set_;
+    std::string path_;
+    std::size_t size_, written_ = 0;
+  };
+  Writer start(const std::string& path, std::size_t size, const std::string& unit, const std::string& description);
+
   // Attributes on a group or dataset ("/" for the file); the group is created if missing.
   void set_attribute(const std::string& object, const std::string& name, const std::string& value);
   void set_attribute(const std::string& object, const std::string& name, double value);
@@ -85,6 +104,8 @@ class Hdf5File {
   H5Handle ensure_group(const std::string& path);
   void write_raw(const std::string& path, const void* data, std::int64_t type, std::vector<std::uint64_t> dims,
                  const std::string& unit, const std::string& description);
+  H5Handle create_dataset(const std::string& path, std::int64_t type, std::vector<std::uint64_t> dims,
+                          const std::string& unit, const std::string& description);
   H5Handle file_;
   std::string path_;
   Verification verification_;

@@ -4,6 +4,7 @@
 
 #include "layout_declarations.hpp"
 #include "shockgas/continuum/field.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app::layout {
@@ -211,9 +212,16 @@ std::vector<Declaration> provenance_datasets() {
 
 std::vector<Declaration> particle_datasets() {
   const Part p = Part::initial;
-  auto initial = [](std::vector<double> Bodies::*data) {
-    return [data](const RunResults& r, Emitter& out) {
-      if (r.scene->has_particles && r.initial) out.values(r.initial->bodies().*data);
+  // A column of realization 0's bodies (0: x, 1: v, 2: m), drawn in chunks.
+  auto initial = [](int column) {
+    return [column](const RunResults& r, Emitter& out) {
+      if (!r.scene->has_particles || !r.initial) return;
+      InitialStream bodies = stream_realization(*r.initial, 0);
+      out.pieces(bodies.size(), [&](const Emitter::PutPiece& put) {
+        read_in_chunks(bodies, [&](const double* x, const double* v, const double* m, std::size_t count) {
+          put(column == 0 ? x : column == 1 ? v : m, count);
+        });
+      });
     };
   };
   // The continuum's initial cell averages (continuum::cell_averages), when a solver runs.
@@ -231,10 +239,9 @@ std::vector<Declaration> particle_datasets() {
     };
   };
   std::vector<Declaration> d = {
-      dataset(p, "/initial/x", "length", "initial positions (realization 0)", bodies, initial(&Bodies::x)),
-      dataset(p, "/initial/v", "length/time", "initial velocities (realization 0)", bodies,
-              initial(&Bodies::v)),
-      dataset(p, "/initial/m", "mass", "initial masses (realization 0)", bodies, initial(&Bodies::m)),
+      dataset(p, "/initial/x", "length", "initial positions (realization 0)", bodies, initial(0)),
+      dataset(p, "/initial/v", "length/time", "initial velocities (realization 0)", bodies, initial(1)),
+      dataset(p, "/initial/m", "mass", "initial masses (realization 0)", bodies, initial(2)),
       dataset(p, "/initial/cells/x", "length", "cell centres of the continuum's grid", cells,
               initial_cells(Cells::centres)),
       dataset(p, "/initial/cells/v", "length/time",

@@ -27,6 +27,14 @@ std::string fill_path(const std::string& path, const std::vector<std::string>& a
   return out;
 }
 
+void Emitter::pieces(std::size_t size, const std::function<void(const PutPiece&)>& put,
+                     const std::vector<std::string>& at) {
+  std::vector<double> data;
+  data.reserve(size);
+  put([&](const double* p, std::size_t count) { data.insert(data.end(), p, p + count); });
+  values(data, at);
+}
+
 namespace {
 
 class FileEmitter : public Emitter {
@@ -34,6 +42,12 @@ class FileEmitter : public Emitter {
   FileEmitter(Hdf5File& h5, const LayoutEntry& e) : h5_(h5), e_(e) {}
   void values(const std::vector<double>& data, const std::vector<std::string>& at) override {
     h5_.write(fill_path(e_.path, at), data, e_.unit, e_.description);
+  }
+  void pieces(std::size_t size, const std::function<void(const PutPiece&)>& put,
+              const std::vector<std::string>& at) override {
+    Hdf5File::Writer w = h5_.start(fill_path(e_.path, at), size, e_.unit, e_.description);
+    put([&](const double* p, std::size_t count) { w.append(p, count); });
+    w.finish();
   }
   void matrix(const std::vector<double>& data, std::size_t rows, std::size_t cols,
               const std::vector<std::string>& at) override {

@@ -40,6 +40,13 @@ class Emitter {
  public:
   virtual ~Emitter() = default;
   virtual void values(const std::vector<double>& data, const std::vector<std::string>& at = {}) = 0;
+  // A 1-D dataset of `size` values handed over in pieces, in order, without a
+  // whole copy where the receiver can take them so (the file): put(put_piece)
+  // calls put_piece(data, count) until all `size` are given. Else collected
+  // and handed to values().
+  using PutPiece = std::function<void(const double* data, std::size_t count)>;
+  virtual void pieces(std::size_t size, const std::function<void(const PutPiece&)>& put,
+                      const std::vector<std::string>& at = {});
   virtual void matrix(const std::vector<double>& data, std::size_t rows, std::size_t cols,
                       const std::vector<std::string>& at = {}) = 0;
   virtual void text(const std::string& value, const std::vector<std::string>& at = {}) = 0;

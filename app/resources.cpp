@@ -15,6 +15,7 @@
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::app {
@@ -49,8 +50,10 @@ std::size_t concurrent_runs(const particles::ParticleParams& p) {
 void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   const auto& p = s.particles;
   const double N = d(s.initial.N), R = d(p.realizations), samples = d(p.samples);
+  // Realization 0's bodies are held only for a continuum, or when they cannot be drawn in chunks (run.cpp).
+  const double initial = s.has_continuum || !InitialStream::streamable(s.initial) ? kBodyBytes : 0;
   items.push_back({"initial.N", "the particles: the initial condition, the engines at work, the final states",
-                   N * (kBodyBytes + d(concurrent_runs(p)) * (kEngineBytes + kBodyBytes) + R * kBodyBytes)});
+                   N * (initial + d(concurrent_runs(p)) * (kEngineBytes + kBodyBytes) + R * kBodyBytes)});
   items.push_back({"particles.samples", "the time series of every realization", R * samples * kSeriesColumns * 8});
   if (p.histogram_bins > 0)
     items.push_back({"particles.histogram_bins", "the velocity histograms of every realization",

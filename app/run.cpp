@@ -58,9 +58,12 @@ VariantResult reduce(const RunResults& r, nlohmann::ordered_json summary) {
 
 }  // namespace
 
+// Only the continuum needs realization 0's bodies whole (its deposit); the
+// particles and the writers draw them in chunks.
 InitialCondition build_initial(const Scene& scene) {
+  using Keep = InitialCondition::Keep;
   try {
-    return InitialCondition(scene.initial);
+    return InitialCondition(scene.initial, scene.has_continuum ? Keep::bodies : Keep::stream);
   } catch (const InputError& e) {
     throw located(e, scene);
   }
@@ -74,7 +77,7 @@ void preflight(const Scene& scene, const InitialCondition& initial) {
   try {
     if (scene.has_particles && scene.particles.solver == particles::ParticleSolver::events &&
         scene.particles.schedule == particles::Schedule::windows)
-      particles::check_schedule(initial.bodies(), scene.particles);
+      particles::check_schedule(initial, scene.particles);
     if (!scene.has_continuum) return;
     for (const auto& name : scene.continuum.solvers)
       continuum::preflight(name, initial.field(), scene.continuum, scene.continuum_t_end());

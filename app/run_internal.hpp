@@ -14,6 +14,8 @@
 namespace shockgas::app {
 
 // The scene's initial condition; an InputError located at the scene's key.
+// Realization 0's bodies are held only where a continuum needs them (or they
+// cannot be drawn on the fly); the particles and the writers draw them in chunks.
 InitialCondition build_initial(const Scene& scene);
 
 // Each continuum solver's own limits (its registered preflight) and a requested

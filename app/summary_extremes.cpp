@@ -20,7 +20,9 @@ std::optional<particles::Cluster> heaviest_cluster(const RunResults& r) {
   const auto criteria =
       compare::snapshot_params(s.compare, s.particles.r, s.particles.delta, spacing, end.stop.time).clusters;
   const bool ring = s.particles.geometry == particles::Geometry::ring;
-  return compare::heaviest_cluster(end.final_state, ring ? r.initial->length() : 0.0, criteria);
+  // Streamed: the clusters are not collected (40 bytes each, up to one per body).
+  return compare::heaviest_cluster(particles::BodiesReader(end.final_state), ring ? r.initial->length() : 0.0,
+                                   criteria);
 }
 
 Emit cluster(double particles::Cluster::*field) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "layout_declarations.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/version.hpp"
@@ -63,7 +64,7 @@ std::vector<Declaration> provenance_and_initial() {
           initial([](const InitialCondition& c) { return c.params().seed; })),
       key(i, "initial.temperature", "length^2/time^2", "temperature of realization 0", "when particles run",
           [](const RunResults& r, Emitter& out) {
-            if (r.initial && r.scene->has_particles) out.json(temperature(r.initial->bodies()));
+            if (r.initial && r.scene->has_particles) out.json(initial_temperature(*r.initial, 0));
           }),
   };
 }

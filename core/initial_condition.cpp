@@ -115,16 +115,26 @@ Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization) {
   return b;
 }
 
-InitialCondition::InitialCondition(const InitialParams& p) : params_(p) {
+InitialCondition::InitialCondition(const InitialParams& p, Keep keep)
+    : params_(p), held_(keep == Keep::bodies || !InitialStream::streamable(p)) {
   validate(p);
+  if (!held_) {
+    field_.length = domain_length(p);
+    return;
+  }
   field_ = make_initial_field(p, 0);
   if (!field_.from_bodies()) expression_bodies_ = make_initial_bodies(p, 0);
+}
+
+const Bodies& InitialCondition::bodies() const {
+  if (!held_) throw RunError("the initial condition does not hold realization 0: read it with stream_realization");
+  return field_.from_bodies() ? field_.bodies : expression_bodies_;
 }
 
 bool InitialCondition::depends_on_realization() const { return InitialStream::streamable(params_); }
 
 Bodies InitialCondition::realization(std::uint64_t k) const {
-  return k == 0 || !depends_on_realization() ? bodies() : make_initial_bodies(params_, k);
+  return held_ && (k == 0 || !depends_on_realization()) ? bodies() : make_initial_bodies(params_, k);
 }
 
 InitialField make_initial_field(const InitialParams& p, std::uint64_t realization) {

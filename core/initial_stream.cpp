@@ -54,8 +54,30 @@ void InitialStream::next(std::size_t count, double* x, double* v, double* m) {
 }
 
 InitialStream stream_realization(const InitialCondition& initial, std::uint64_t k) {
-  if (k == 0 || !initial.depends_on_realization()) return InitialStream(initial.bodies());
+  if (initial.holds_bodies() && (k == 0 || !initial.depends_on_realization()))
+    return InitialStream(initial.bodies());
   return InitialStream(initial.params(), k);
+}
+
+// Two passes, as temperature(): the mass and momentum, then m (v - mean)^2.
+double initial_temperature(const InitialCondition& initial, std::uint64_t k) {
+  double mass = 0, momentum = 0;
+  InitialStream first = stream_realization(initial, k);
+  read_in_chunks(first, [&](const double*, const double* v, const double* m, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) mass += m[i];
+    for (std::size_t i = 0; i < count; ++i) momentum += m[i] * v[i];
+  });
+  if (mass <= 0) return 0;
+  const double mean = momentum / mass;
+  double s = 0;
+  InitialStream second = stream_realization(initial, k);
+  read_in_chunks(second, [&](const double*, const double* v, const double* m, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const double dv = v[i] - mean;
+      s += m[i] * dv * dv;
+    }
+  });
+  return s / mass;
 }
 
 }  // namespace shockgas

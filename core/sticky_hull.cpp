@@ -72,8 +72,6 @@ void check_arguments(BodiesView b, double t) {
           "at most 2^32 - 1 bodies");
 }
 
-enum class Built { ok, unequal_masses, bad_input };
-
 }  // namespace
 
 StickyHull::StickyHull(std::size_t n, double L, double t, bool masses)
@@ -156,36 +154,39 @@ struct Stack {
 
 }  // namespace
 
-// One pass over the bodies, room made per block of 4096. Validity is folded into
-// it (branch-free) and judged at the end: x_i >= x_{i-1} for all i and finite
-// ends make every x finite. Unequal masses: false, and the caller starts again.
-template <bool Masses>
-bool StickyHull::build(BodiesView initial) {
-  const double* x = initial.x.data();
-  const double* v = initial.v.data();
-  const double* m = initial.m.data();
+// One pass over the bodies, room made per block of 4096 (block(begin, count):
+// the bodies [begin, begin + count)). Validity is folded into it (branch-free)
+// and judged at the end: x_i >= x_{i-1} for all i and finite ends make every x
+// finite. Unequal masses without Masses: stops, and the caller starts again.
+template <bool Masses, class Block>
+StickyHull::Built StickyHull::build(Block&& block) {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  const double m0 = m0_ = n_ > 0 ? m[0] : 1.0;
-  bool valid = m0 > 0 && m0 < inf;
-  double previous = -inf;
+  bool valid = true;
+  double previous = -inf, first = 0;
   Stack<Masses> stack{c0_.get(), v_.get(), m_.get(), count_.get(), t_, n_};
-  constexpr std::size_t block = 4096;
-  for (std::size_t begin = 0; begin < n_; begin += block) {
-    const std::size_t end = std::min(n_, begin + block);
+  constexpr std::size_t size = 4096;
+  for (std::size_t begin = 0; begin < n_; begin += size) {
+    const std::size_t end = std::min(n_, begin + size);
+    const BlockPointers b = block(begin, end - begin);
+    if (begin == 0) {
+      m0_ = b.m[0], first = b.x[0];
+      valid = m0_ > 0 && m0_ < inf;
+    }
     stack.reserve(end - begin);
-    for (std::size_t i = begin; i < end; ++i) {
-      if (!Masses && m[i] != m0) return false;
-      valid &= (x[i] >= previous) & (std::abs(v[i]) < inf);
-      if constexpr (Masses) valid &= (m[i] > 0) & (m[i] < inf);
-      previous = x[i];
-      stack.push(x[i], v[i], Masses ? m[i] : 1.0, 1);
+    for (std::size_t j = 0; j < end - begin; ++j) {
+      if (!Masses && b.m[j] != m0_) return Built::unequal_masses;
+      valid &= (b.x[j] >= previous) & (std::abs(b.v[j]) < inf);
+      if constexpr (Masses) valid &= (b.m[j] > 0) & (b.m[j] < inf);
+      previous = b.x[j];
+      stack.push(b.x[j], b.v[j], Masses ? b.m[j] : 1.0, 1);
     }
   }
-  if (n_ > 0) valid &= x[0] > -inf && x[n_ - 1] < inf && (L_ == 0 || (x[0] >= 0 && x[n_ - 1] < L_));
-  if (!valid) check_bodies(initial, L_);
+  if (n_ == 0) m0_ = 1.0;
+  if (n_ > 0) valid &= first > -inf && previous < inf && (L_ == 0 || (first >= 0 && previous < L_));
+  if (!valid) return Built::bad_input;
   end_ = stack.top;
   if (L_ > 0) close_ring();
-  return true;
+  return Built::ok;
 }
 
 template <bool Masses>
@@ -237,11 +238,43 @@ StickyHull StickyHull::ring(BodiesView initial, double L, double t) {
 
 StickyHull StickyHull::make(BodiesView initial, double L, double t) {
   check_arguments(initial, t);
+  auto block = [&](std::size_t begin, std::size_t) {
+    return BlockPointers{initial.x.data() + begin, initial.v.data() + begin, initial.m.data() + begin};
+  };
   StickyHull h(initial.size(), L, t, false);
-  if (!h.build<false>(initial)) {
+  Built built = h.build<false>(block);
+  if (built == Built::unequal_masses) {
     h = StickyHull(initial.size(), L, t, true);
-    h.build<true>(initial);
+    built = h.build<true>(block);
   }
+  if (built == Built::bad_input) check_bodies(initial, L);
+  return h;
+}
+
+StickyHull StickyHull::line(std::size_t n, const Chunks& read, double t) { return make(n, read, 0.0, t); }
+
+StickyHull StickyHull::ring(std::size_t n, const Chunks& read, double L, double t) {
+  require_above("L", L, 0.0);
+  return make(n, read, L, t);
+}
+
+// The bodies pass once, through a buffer of one block; their masses must agree
+// (a second pass with masses would need them again).
+StickyHull StickyHull::make(std::size_t n, const Chunks& read, double L, double t) {
+  require_in_range("t", t, 0.0, std::numeric_limits<double>::max());
+  require(n <= std::numeric_limits<std::uint32_t>::max(), "bodies", n, "at most 2^32 - 1 bodies");
+  std::vector<double> x(std::min<std::size_t>(n, 4096)), v(x.size()), m(x.size());
+  auto block = [&](std::size_t, std::size_t count) {
+    read(count, x.data(), v.data(), m.data());
+    return BlockPointers{x.data(), v.data(), m.data()};
+  };
+  StickyHull h(n, L, t, false);
+  const Built built = h.build<false>(block);
+  if (built == Built::unequal_masses)
+    throw InputError("bodies.m", "unequal masses", "bodies of one mass when they are read in chunks");
+  if (built == Built::bad_input)
+    throw InputError("bodies", std::to_string(n) + " bodies",
+                     "positions sorted and finite (ring: in [0, L)), velocities finite, masses > 0");
   return h;
 }
 

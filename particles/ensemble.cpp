@@ -112,7 +112,7 @@ ThreadSplit split_threads(std::size_t threads, std::size_t realizations) {
 
 EnsembleResult run_ensemble(const InitialParams& ip, const ParticleParams& p,
                             const ProgressCallback& progress) {
-  return run_ensemble(InitialCondition(ip), p, progress);
+  return run_ensemble(InitialCondition(ip, InitialCondition::Keep::stream), p, progress);
 }
 
 EnsembleResult run_ensemble(const InitialCondition& ic, const ParticleParams& p,

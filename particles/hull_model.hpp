@@ -5,6 +5,7 @@
 // at the first stop, then advanced from its own clusters (they only merge), one
 // pass over the clusters per stop. Private to particles/.
 #include "shockgas/core/bodies.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
 #include "shockgas/particles/state_sink.hpp"
@@ -16,6 +17,10 @@ namespace shockgas::particles::detail {
 // the snapshots and the final state go to it. Interruption is polled between
 // stops: each stop is a safe point.
 RunResult simulate_hull(const Bodies& initial, double L, bool ring, const ParticleParams& p,
+                        const StateSink* sink = nullptr);
+// The same from bodies of one mass drawn in chunks, never held whole (the
+// hull keeps its clusters only: 20 bytes each).
+RunResult simulate_hull(InitialStream& initial, double L, bool ring, const ParticleParams& p,
                         const StateSink* sink = nullptr);
 
 }  // namespace shockgas::particles::detail

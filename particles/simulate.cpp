@@ -193,6 +193,12 @@ void check_schedule(const Bodies& initial, const ParticleParams& p) {
   check_schedule(initial.size(), equal_masses(initial), p);
 }
 
+// Bodies drawn on the fly have unit masses.
+void check_schedule(const InitialCondition& initial, const ParticleParams& p) {
+  if (initial.holds_bodies()) return check_schedule(initial.bodies(), p);
+  check_schedule(initial.params().N, true, p);
+}
+
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& p, const ProgressCallback& progress,
                    const StateSink* sink) {
   check_params(initial.size(), p);
@@ -205,23 +211,18 @@ RunResult simulate(const Bodies& initial, double L, const ParticleParams& p, con
 
 RunResult simulate(const InitialCondition& initial, std::uint64_t realization, const ParticleParams& p,
                    const ProgressCallback& progress, const StateSink* sink) {
-  if (realization == 0 || !initial.depends_on_realization())
+  if (initial.holds_bodies() && (realization == 0 || !initial.depends_on_realization()))
     return simulate(initial.bodies(), initial.length(), p, progress, sink);
-  if (p.solver == ParticleSolver::hull)
-    return simulate(initial.realization(realization), initial.length(), p, progress, sink);
   check_params(initial.params().N, p);
   InitialStream stream = stream_realization(initial, realization);
+  if (p.solver == ParticleSolver::hull)
+    return detail::simulate_hull(stream, initial.length(), p.geometry == Geometry::ring, p, sink);
   return run_stream(stream, initial.length(), nullptr, p, progress, sink);
 }
 
 RunResult simulate(const InitialParams& initial, std::uint64_t realization, const ParticleParams& p,
                    const ProgressCallback& progress, const StateSink* sink) {
-  if (!InitialStream::streamable(initial) || p.solver == ParticleSolver::hull)
-    return simulate(InitialCondition(initial), realization, p, progress, sink);
-  validate(initial);
-  check_params(initial.N, p);
-  InitialStream stream(initial, realization);
-  return run_stream(stream, domain_length(initial), nullptr, p, progress, sink);
+  return simulate(InitialCondition(initial, InitialCondition::Keep::stream), realization, p, progress, sink);
 }
 
 }  // namespace shockgas::particles

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
 
@@ -137,6 +139,66 @@ TEST(ClusterFinder, RejectsBadInput) {
   outside.push_back(11.0, 0, 1);
   EXPECT_THROW(find_clusters(outside, 10.0, ClusterCriteria{}), InputError);
   EXPECT_THROW(find_clusters(Bodies{}, -1.0, ClusterCriteria{}), InputError);
+}
+
+// A whole state read in chunks of 7, as a sink reads a model's state.
+class ChunkedBodies final : public StateReader {
+ public:
+  explicit ChunkedBodies(const Bodies& b) : b_(b) {}
+  std::size_t size() const override { return b_.size(); }
+  void read(const Chunk& chunk) const override {
+    for (std::size_t i = 0; i < b_.size(); i += 7)
+      chunk(&b_.x[i], &b_.v[i], &b_.m[i], std::min<std::size_t>(7, b_.size() - i));
+  }
+
+ private:
+  const Bodies& b_;
+};
+
+std::vector<Cluster> streamed(const Bodies& b, double L, const ClusterCriteria& c) {
+  std::vector<Cluster> out;
+  visit_clusters(ChunkedBodies(b), L, c, [&](const Cluster& k) { out.push_back(k); });
+  return out;
+}
+
+void expect_same_clusters(const std::vector<Cluster>& a, const std::vector<Cluster>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].first, b[k].first);
+    EXPECT_EQ(a[k].count, b[k].count);
+    EXPECT_EQ(a[k].x, b[k].x);  // bit for bit: the same sums in the same order
+    EXPECT_EQ(a[k].v, b[k].v);
+    EXPECT_EQ(a[k].m, b[k].m);
+  }
+}
+
+// Clumps of co-moving bodies, some across the wrap, on a ring of length 100.
+Bodies clumpy_state(std::uint64_t seed, bool across_wrap) {
+  Rng rng(seed);
+  Bodies b;
+  double x = across_wrap ? 0.05 : 1.0;
+  while (x < 99.5) {
+    const double v = rng.uniform(-1.0, 1.0);
+    for (int j = 0, n = 1 + static_cast<int>(rng.uniform(0.0, 5.0)); j < n && x < 99.9; ++j, x += 0.1)
+      b.push_back(x, v + rng.uniform(-0.005, 0.005), rng.uniform(0.5, 2.0));
+    x += rng.uniform(0.6, 3.0);
+  }
+  if (across_wrap) b.push_back(99.95, b.v.front(), 1.0);  // joins body 0 across x = L
+  return b;
+}
+
+TEST(ClusterFinder, StreamedClustersAreFindClustersToTheBit) {
+  const ClusterCriteria c{0.5, 0.02};
+  for (std::uint64_t seed = 1; seed <= 20; ++seed)
+    for (bool wrap : {false, true}) {
+      const Bodies b = clumpy_state(seed, wrap);
+      expect_same_clusters(streamed(b, 100.0, c), find_clusters(b, 100.0, c));
+      expect_same_clusters(streamed(b, 0.0, c), find_clusters(b, 0.0, c));
+    }
+  Bodies linked;  // a fully linked ring is one cluster from body 0
+  for (int i = 0; i < 10; ++i) linked.push_back(0.1 * i, 0.0, 1.0);
+  expect_same_clusters(streamed(linked, 1.0, c), find_clusters(linked, 1.0, c));
+  EXPECT_TRUE(streamed(Bodies{}, 1.0, c).empty());
 }
 
 }  // namespace

@@ -24,5 +24,8 @@ std::optional<continuum::Shock> heaviest_shock(const continuum::ContinuumResult&
 // length L, 0 on a line). None for an empty state.
 std::optional<particles::Cluster> heaviest_cluster(const Bodies& state, double L,
                                                    const particles::ClusterCriteria& criteria);
+// The same from a state read in chunks (particles::visit_clusters), never held whole.
+std::optional<particles::Cluster> heaviest_cluster(const particles::StateReader& state, double L,
+                                                   const particles::ClusterCriteria& criteria);
 
 }  // namespace shockgas::compare

@@ -72,14 +72,23 @@ InitialField make_initial_field(const InitialParams& p, std::uint64_t realizatio
 // realizations are drawn on demand (their seeds depend on their index only).
 class InitialCondition {
  public:
+  // What it keeps of realization 0's particles: the bodies, or (Keep::stream,
+  // where they can be drawn on the fly: InitialStream::streamable) nothing,
+  // every reader drawing them in chunks (stream_realization) instead of a
+  // whole copy of 24 bytes per particle.
+  enum class Keep { bodies, stream };
+
   // Validates p (InputError naming the key) and builds realization 0.
-  explicit InitialCondition(const InitialParams& p);
+  explicit InitialCondition(const InitialParams& p, Keep keep = Keep::bodies);
 
   const InitialParams& params() const { return params_; }
   double length() const { return field_.length; }
   // Realization 0 as point masses (for expressions: the lattice of N bodies of
-  // make_initial_bodies). Sorted, positions in [0, length).
-  const Bodies& bodies() const { return field_.from_bodies() ? field_.bodies : expression_bodies_; }
+  // make_initial_bodies). Sorted, positions in [0, length). RunError when they
+  // are not held (holds_bodies()).
+  const Bodies& bodies() const;
+  // Whether bodies() holds realization 0; if not, field().bodies is empty too.
+  bool holds_bodies() const { return held_; }
   // Realization k >= 1 (k = 0: a copy of bodies()). Data from a file or from
   // expressions do not depend on k. To read one without a whole copy:
   // stream_realization (core/initial_stream.hpp).
@@ -93,6 +102,7 @@ class InitialCondition {
   InitialParams params_;
   InitialField field_;
   Bodies expression_bodies_;
+  bool held_ = true;
 };
 
 // Checks every key of p (throws InputError naming the key): the declared rules,

@@ -47,9 +47,26 @@ class InitialStream {
   std::vector<double> positions_;  // random positions, sorted; empty on a lattice
 };
 
+// Reads the rest of `stream` through a buffer of `chunk` bodies: f(x, v, m, count)
+// for each chunk, in order.
+template <class F>
+void read_in_chunks(InitialStream& stream, F&& f, std::size_t chunk = 4096) {
+  std::vector<double> x(chunk), v(chunk), m(chunk);
+  while (stream.remaining() > 0) {
+    const std::size_t count = stream.remaining() < chunk ? stream.remaining() : chunk;
+    stream.next(count, x.data(), v.data(), m.data());
+    f(x.data(), v.data(), m.data(), count);
+  }
+}
+
+// Mass-weighted temperature <v^2> - <v>^2 of realization k, as
+// temperature(make_initial_bodies(...)) bit for bit (the same sums in the same
+// order), without a whole copy.
+double initial_temperature(const InitialCondition& initial, std::uint64_t k);
+
 // Realization k of `initial` a chunk at a time without a whole copy: read from
-// initial.bodies() where that is realization k (k = 0, or data that do not
-// depend on k), else drawn on the fly.
+// initial.bodies() where it holds them and they are realization k (k = 0, or
+// data that do not depend on k), else drawn on the fly.
 InitialStream stream_realization(const InitialCondition& initial, std::uint64_t k);
 
 }  // namespace shockgas

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -46,6 +47,12 @@ class StickyHull {
   static StickyHull line(BodiesView initial, double t);
   // The same on a ring of length L > 0 (positions in [0, L)).
   static StickyHull ring(BodiesView initial, double L, double t);
+  // The same from n bodies of one mass read a chunk at a time, never held
+  // whole: read(count, x, v, m) writes the next count of them. InputError as
+  // above, and for unequal masses.
+  using Chunks = std::function<void(std::size_t count, double* x, double* v, double* m)>;
+  static StickyHull line(std::size_t n, const Chunks& read, double t);
+  static StickyHull ring(std::size_t n, const Chunks& read, double L, double t);
 
   // The clusters at time t >= time(). Throws InputError for t < time().
   void advance(double t);
@@ -88,8 +95,13 @@ class StickyHull {
  private:
   StickyHull(std::size_t n, double L, double t, bool masses);
   static StickyHull make(BodiesView initial, double L, double t);  // L = 0: line
-  template <bool Masses>
-  bool build(BodiesView initial);
+  static StickyHull make(std::size_t n, const Chunks& read, double L, double t);
+  enum class Built { ok, unequal_masses, bad_input };
+  struct BlockPointers {
+    const double *x, *v, *m;
+  };
+  template <bool Masses, class Block>
+  Built build(Block&& block);
   template <bool Masses>
   void pool_runs();
   void close_ring();

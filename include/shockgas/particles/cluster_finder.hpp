@@ -18,9 +18,11 @@
 // r > 0 with a threshold delta: see default_cluster_criteria().
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "shockgas/core/bodies.hpp"
+#include "shockgas/particles/state_sink.hpp"
 
 namespace shockgas::particles {
 
@@ -47,6 +49,13 @@ struct Cluster {
 // L: ring length [length]; 0 = open line (no wrap). Throws InputError if L < 0,
 // a criterion is negative or not finite, or b is not sorted / not inside [0, L).
 std::vector<Cluster> find_clusters(const Bodies& b, double L, const ClusterCriteria& c);
+
+// The clusters of find_clusters(state, L, c), bit for bit and in the same
+// order, handed to visit one at a time from a state read in chunks (three
+// reads on a ring, one on a line), never held whole. The state must be what
+// find_clusters accepts (sorted; ring: in [0, L)); the criteria are checked.
+void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c,
+                    const std::function<void(const Cluster&)>& visit);
 
 // Default criteria for a gas with sub-threshold velocity delta and mean initial
 // spacing a = L / N, at time t (the sticky regime, t_stick << t < t_valid ~ delta^-3):

@@ -39,9 +39,10 @@ RunResult simulate(const Bodies& initial, double L, const ParticleParams& params
 
 // Realization `realization` of a scene's initial condition, as
 // simulate(make_initial_bodies(initial.params(), realization), initial.length(), ...),
-// bit for bit, without a whole copy of the bodies: realization 0 (and data that
-// do not depend on the realization: a file, expressions) is read from
-// initial.bodies(), the others are drawn in chunks as the engine loads them.
+// bit for bit, without a whole copy of the bodies: bodies the initial condition
+// holds (realization 0, data that do not depend on the realization: a file,
+// expressions) are read from initial.bodies(), the others are drawn in chunks
+// as the engine (or the hull) loads them.
 RunResult simulate(const InitialCondition& initial, std::uint64_t realization, const ParticleParams& params,
                    const ProgressCallback& progress = {}, const StateSink* sink = nullptr);
 // The same from the parameters; where the bodies can be drawn in chunks
@@ -53,6 +54,8 @@ RunResult simulate(const InitialParams& initial, std::uint64_t realization, cons
 // these bodies (windows need every collision to keep the velocities in their
 // range and no inelastic collapse).
 void check_schedule(const Bodies& initial, const ParticleParams& params);
+// The same for realization 0 of an initial condition, held or drawn.
+void check_schedule(const InitialCondition& initial, const ParticleParams& params);
 
 // Mean and standard error (sample standard deviation / sqrt(count)) over the
 // realizations that reached each sample.

@@ -2,8 +2,11 @@
 // Where the states a run writes (snapshots, the final state) go as they are
 // reached, in chunks, instead of as whole copies in RunResult: a file writer
 // streams them (simulate.hpp).
+#include <algorithm>
 #include <cstddef>
 #include <functional>
+
+#include "shockgas/core/bodies.hpp"
 
 namespace shockgas::particles {
 
@@ -18,6 +21,20 @@ class StateReader {
 
  protected:
   ~StateReader() = default;
+};
+
+// Bodies held whole, read as a state: chunks of up to 4096 bodies in place.
+class BodiesReader final : public StateReader {
+ public:
+  explicit BodiesReader(const Bodies& bodies) : b_(bodies) {}
+  std::size_t size() const override { return b_.size(); }
+  void read(const Chunk& chunk) const override {
+    for (std::size_t i = 0; i < b_.size(); i += 4096)
+      chunk(b_.x.data() + i, b_.v.data() + i, b_.m.data() + i, std::min<std::size_t>(4096, b_.size() - i));
+  }
+
+ private:
+  const Bodies& b_;
 };
 
 // The receiver of a run's states; RunResult's final_state and snapshots then

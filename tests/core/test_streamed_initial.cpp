@@ -1,0 +1,105 @@
+// An initial condition that keeps nothing of realization 0 (Keep::stream):
+// every reader draws the same bodies in chunks, and what is computed from them
+// is the same to the bit as from a whole copy.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "shockgas/core/error.hpp"
+#include "shockgas/core/initial_stream.hpp"
+#include "shockgas/core/sticky_hull.hpp"
+
+namespace shockgas {
+namespace {
+
+using Keep = InitialCondition::Keep;
+
+InitialParams gas(Positions positions, Velocities velocities) {
+  InitialParams p;
+  p.N = 10007;
+  p.positions = positions;
+  p.velocities = velocities;
+  p.remove_mean = true;
+  p.seed = 42;
+  return p;
+}
+
+Bodies drawn(const InitialCondition& initial, std::uint64_t k) {
+  InitialStream s = stream_realization(initial, k);
+  Bodies b;
+  read_in_chunks(
+      s,
+      [&](const double* x, const double* v, const double* m, std::size_t count) {
+        for (std::size_t i = 0; i < count; ++i) b.push_back(x[i], v[i], m[i]);
+      },
+      999);
+  return b;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+TEST(StreamedInitial, HoldsNoBodiesAndDrawsTheSameOnes) {
+  for (Positions positions : {Positions::lattice, Positions::random})
+    for (Velocities velocities : {Velocities::uniform, Velocities::gaussian}) {
+      const InitialParams p = gas(positions, velocities);
+      const InitialCondition streamed(p, Keep::stream);
+      EXPECT_FALSE(streamed.holds_bodies());
+      EXPECT_THROW((void)streamed.bodies(), RunError);
+      EXPECT_EQ(streamed.field().bodies.size(), 0u);
+      EXPECT_EQ(streamed.length(), InitialCondition(p).length());
+      for (std::uint64_t k : {0u, 3u}) {
+        const Bodies whole = make_initial_bodies(p, k);
+        const Bodies b = drawn(streamed, k);
+        EXPECT_EQ(b.x, whole.x);
+        EXPECT_EQ(b.v, whole.v);
+        EXPECT_EQ(b.m, whole.m);
+        EXPECT_TRUE(same_bits(initial_temperature(streamed, k), temperature(whole)));
+      }
+    }
+}
+
+TEST(StreamedInitial, DataThatCannotBeDrawnAreHeld) {
+  InitialParams p;
+  p.velocities = Velocities::expression;
+  const InitialCondition c(p, Keep::stream);
+  EXPECT_TRUE(c.holds_bodies());
+  EXPECT_EQ(c.bodies().size(), p.N);
+  EXPECT_TRUE(same_bits(initial_temperature(c, 0), temperature(c.bodies())));
+}
+
+// The hull from bodies read in chunks is the hull from the whole copy, to the bit.
+TEST(StreamedInitial, HullFromChunksEqualsHullFromBodies) {
+  const InitialParams p = gas(Positions::random, Velocities::uniform);
+  const Bodies whole = make_initial_bodies(p, 1);
+  const double L = domain_length(p);
+  for (bool ring : {false, true})
+    for (double t : {0.0, 3.0, 300.0}) {
+      InitialStream s(p, 1);
+      const StickyHull::Chunks read = [&](std::size_t n, double* x, double* v, double* m) {
+        s.next(n, x, v, m);
+      };
+      const StickyHull chunked = ring ? StickyHull::ring(p.N, read, L, t) : StickyHull::line(p.N, read, t);
+      const StickyHull from_bodies = ring ? StickyHull::ring(whole, L, t) : StickyHull::line(whole, t);
+      const auto a = chunked.clusters(), b = from_bodies.clusters();
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        EXPECT_TRUE(same_bits(a[k].x, b[k].x) && same_bits(a[k].v, b[k].v) && same_bits(a[k].m, b[k].m));
+        EXPECT_EQ(a[k].first, b[k].first);
+        EXPECT_EQ(a[k].count, b[k].count);
+      }
+    }
+}
+
+TEST(StreamedInitial, HullFromChunksRefusesUnequalMassesAndDisorder) {
+  const StickyHull::Chunks unequal = [](std::size_t n, double* x, double* v, double* m) {
+    for (std::size_t i = 0; i < n; ++i) x[i] = static_cast<double>(i), v[i] = 0, m[i] = 1.0 + (i % 2);
+  };
+  EXPECT_THROW(StickyHull::line(10, unequal, 1.0), InputError);
+  const StickyHull::Chunks unsorted = [](std::size_t n, double* x, double* v, double* m) {
+    for (std::size_t i = 0; i < n; ++i) x[i] = -static_cast<double>(i), v[i] = 0, m[i] = 1.0;
+  };
+  EXPECT_THROW(StickyHull::line(10, unsorted, 1.0), InputError);
+}
+
+}  // namespace
+}  // namespace shockgas
