@@ -16,12 +16,16 @@
 // delete; the engine's own large arrays bypass them, the hull's do not).
 namespace {
 std::atomic<std::size_t> g_live{0}, g_peak{0};
-void* counted(void* p) {
-  if (!p) throw std::bad_alloc();
+void* noted(void* p) noexcept {
+  if (!p) return p;
   const std::size_t now = g_live += malloc_usable_size(p);
   for (std::size_t peak = g_peak; now > peak && !g_peak.compare_exchange_weak(peak, now);) {
   }
   return p;
+}
+void* counted(void* p) {
+  if (!p) throw std::bad_alloc();
+  return noted(p);
 }
 void uncounted(void* p) {
   if (p) g_live -= malloc_usable_size(p);
@@ -34,6 +38,12 @@ void operator delete(void* p) noexcept { uncounted(p); }
 void operator delete[](void* p) noexcept { uncounted(p); }
 void operator delete(void* p, std::size_t) noexcept { uncounted(p); }
 void operator delete[](void* p, std::size_t) noexcept { uncounted(p); }
+// The nothrow forms too (std::stable_sort's buffer): each allocation must meet
+// the delete of the same family, or the sanitizer sees new paired with free.
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept { return noted(std::malloc(n ? n : 1)); }
+void* operator new[](std::size_t n, const std::nothrow_t& tag) noexcept { return operator new(n, tag); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { uncounted(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { uncounted(p); }
 
 namespace shockgas::particles {
 namespace {
