@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cluster_sums.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::particles {
@@ -10,9 +11,7 @@ namespace shockgas::particles {
 namespace {
 
 void validate_input(const Bodies& b, double L, const ClusterCriteria& c) {
-  require(std::isfinite(L) && L >= 0, "cluster.L", L, "L >= 0 (0 = open line)");
-  require(std::isfinite(c.max_gap) && c.max_gap >= 0, "cluster.max_gap", c.max_gap, "finite, >= 0");
-  require(std::isfinite(c.max_dv) && c.max_dv >= 0, "cluster.max_dv", c.max_dv, "finite, >= 0");
+  detail::require_cluster_inputs(L, c);
   require(b.v.size() == b.size() && b.m.size() == b.size(), "cluster.bodies", b.size(),
           "x, v and m of equal length");
   for (std::size_t i = 0; i + 1 < b.size(); ++i)
@@ -27,28 +26,16 @@ bool joined(const Bodies& b, std::size_t i, std::size_t j, double L, const Clust
   return c.joins(gap, b.v[j] - b.v[i]);
 }
 
-// The cluster of `count` bodies starting at `first` (indices taken mod N; a
-// member past N - 1 is unrolled by +L). The centre of mass is taken relative to
-// the first member, so a one-body cluster sits exactly on its body.
+// The cluster of `count` bodies starting at `first` (indices taken mod N).
 Cluster make_cluster(const Bodies& b, double L, std::size_t first, std::size_t count) {
   const std::size_t n = b.size();
-  Cluster k{first, count, 0.0, 0.0, 0.0};
-  double m_dx = 0, mv = 0;
+  detail::ClusterSums sums;
+  sums.start(first, b.x[first], b.v[first]);
   for (std::size_t s = 0; s < count; ++s) {
     const std::size_t i = (first + s) % n;
-    const double x = b.x[i] + (first + s >= n ? L : 0.0);
-    k.m += b.m[i];
-    m_dx += b.m[i] * (x - b.x[first]);
-    mv += b.m[i] * b.v[i];
+    sums.add(b.x[i] + (first + s >= n ? L : 0.0), b.v[i], b.m[i]);
   }
-  k.x = b.x[first] + m_dx / k.m;
-  k.v = count == 1 ? b.v[first] : mv / k.m;
-  if (L > 0) {
-    k.x = std::fmod(k.x, L);
-    if (k.x < 0) k.x += L;
-    if (k.x >= L) k.x = 0.0;  // rounding of fmod near L
-  }
-  return k;
+  return sums.done(L);
 }
 
 }  // namespace

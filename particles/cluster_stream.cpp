@@ -9,42 +9,13 @@
 // bodies before the start (unrolled by + L) to the last cluster.
 #include <limits>
 
+#include "cluster_sums.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
 
 namespace shockgas::particles {
 
 namespace {
-
-// One cluster's sums as make_cluster takes them: members in order from its first.
-class ClusterSums {
- public:
-  void start(std::size_t first, double x, double v) {
-    k_ = {first, 0, 0.0, 0.0, 0.0};
-    x_first_ = x, v_first_ = v, m_dx_ = 0, mv_ = 0;
-  }
-  void add(double x, double v, double m) {  // x unrolled past the wrap
-    k_.m += m;
-    m_dx_ += m * (x - x_first_);
-    mv_ += m * v;
-    ++k_.count;
-  }
-  Cluster done(double L) const {
-    Cluster k = k_;
-    k.x = x_first_ + m_dx_ / k.m;
-    k.v = k.count == 1 ? v_first_ : mv_ / k.m;
-    if (L > 0) {
-      k.x = std::fmod(k.x, L);
-      if (k.x < 0) k.x += L;
-      if (k.x >= L) k.x = 0.0;  // rounding of fmod near L
-    }
-    return k;
-  }
-
- private:
-  Cluster k_;
-  double x_first_ = 0, v_first_ = 0, m_dx_ = 0, mv_ = 0;
-};
 
 // Visits body i of the state with f(i, x, v, m), in order.
 template <class F>
@@ -74,12 +45,10 @@ std::size_t ring_start(const StateReader& state, double L, const ClusterCriteria
 
 void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c,
                     const std::function<void(const Cluster&)>& visit) {
-  require(std::isfinite(L) && L >= 0, "cluster.L", L, "L >= 0 (0 = open line)");
-  require(std::isfinite(c.max_gap) && c.max_gap >= 0, "cluster.max_gap", c.max_gap, "finite, >= 0");
-  require(std::isfinite(c.max_dv) && c.max_dv >= 0, "cluster.max_dv", c.max_dv, "finite, >= 0");
+  detail::require_cluster_inputs(L, c);
   if (state.size() == 0) return;
   const std::size_t start = L > 0 ? ring_start(state, L, c) : 0;
-  ClusterSums sums;
+  detail::ClusterSums sums;
   double x_last = 0, v_last = 0;
   each_body(state, [&](std::size_t i, double x, double v, double m) {
     if (i < start) return;
