@@ -109,10 +109,19 @@ def main():
     band = [(t, s) for t, s in scatter(hull) if t >= T_START]
     right.fill_between([t for t, _ in band], [-s for _, s in band], [s for _, s in band], color="0.85",
                        label="one realization of another state (1 s.d.)")
+    # Runs of one rule and delta share realization 0 (same N and seed): the left
+    # panel draws it once, from the run that reaches furthest; the right panel the
+    # run with the most realizations paired with the hull.
+    groups = {}
     for run in variants:
+        groups.setdefault((run["rule"], run["delta"], run["N"], run["seed"]), []).append(run)
+    for key in sorted(groups, key=lambda k: (-k[1], k[0])):
+        group = groups[key]
+        run = max(group, key=lambda r: (r["T"][-1][0], r["realizations"]))
         colour, ls = STYLE.get((run["rule"], run["delta"]), ("C7", ":"))
         left.plot([t for t, _ in run["T"]], [T * t ** (2 / 3) for t, T in run["T"]], ls, color=colour, lw=1.2,
                   label="%s (N = %.0e)" % (label(run), run["N"]))
+        run = max(group, key=lambda r: (r["realizations"], r["T"][-1][0]))
         if (run["N"], run["seed"]) == (hull["N"], hull["seed"]):
             rel = paired(run, hull)
             n = min(len(run["each"][0]), len(hull["each"][0]))
@@ -126,8 +135,8 @@ def main():
     for delta in sorted({r["delta"] for r in variants if r["delta"] ** -3 <= t_max}):
         for ax in (left, right):
             ax.axvline(delta ** -3, color="0.5", ls=":", lw=1)
-        left.text(delta ** -3, 0.02, " t_valid = delta^-3 = %g" % delta ** -3, fontsize=7, rotation=90,
-                  va="bottom", transform=left.get_xaxis_transform())
+        left.text(delta ** -3, 0.5, "t_valid = delta^-3 = %g " % delta ** -3, fontsize=7, rotation=90,
+                  ha="right", va="center", transform=left.get_xaxis_transform())
     for ax, t_min in ((left, 1), (right, T_START)):
         ax.set_xscale("log")
         ax.set_xlim(t_min, t_max)
