@@ -17,7 +17,6 @@ fig4/  collapse*.json (scripts/fig4_collapse.py): the L1 distance of the scaled
 A directory that is missing is skipped.
 """
 import argparse
-import csv
 import glob
 import json
 import math
@@ -26,18 +25,9 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plot_fig2_runs  # noqa: E402
+from shockplot.kept_runs import T_series, read_summary, run_dirs  # noqa: E402
 
 WINDOWS = [(1e2, 1e4), (1e3, 1e5), (1e4, 1e5)]
-
-
-def summary(d):
-    with open(os.path.join(d, "summary.json")) as f:
-        return json.load(f)
-
-
-def series(d):
-    with open(os.path.join(d, "T.csv")) as f:
-        return [(float(r["t"]), float(r["T"]), float(r["T_stderr"] or "nan")) for r in csv.DictReader(f) if r["T"]]
 
 
 def nearest(rows, t):
@@ -59,18 +49,14 @@ def window(s, lo, hi):
     return "–"
 
 
-def run_dirs(root):
-    return [d for d in sorted(glob.glob(os.path.join(root, "*"))) if os.path.isfile(os.path.join(d, "summary.json"))]
-
-
 def fig1(root):
     print("| run | r | N × realizations | " + " | ".join("exponent on [%g, %g]" % w for w in WINDOWS)
           + " | T t^(2/3) at t ≈ 10⁴ | at t ≈ 10⁵ | t_dissip (1/ε) | t_stick (ε^(−3/2)) |")
     print("|---" * (7 + len(WINDOWS)) + "|")
     for d in run_dirs(root):
-        s = summary(d)
+        s = read_summary(d)
         a, p = s["analysis"], s["particles"]
-        rows = series(d)
+        rows = T_series(d)
         late = [pm(T * t ** (2 / 3), e * t ** (2 / 3), 4) if abs(math.log(t / target)) < 0.15 else "–"
                 for target in (1e4, 1e5) for t, T, e in [nearest(rows, target)]]
         cross = ["%s (%.0f)" % (pm(a.get(k), a.get(k + "_error"), 0), a[k + "_theory"]) if a.get(k) else "–"
@@ -117,7 +103,7 @@ def fig2(root):
           + " | T / T_hull − 1 at t ≈ 10³, 10⁴, 10⁵, 10⁶ (paired) |")
     print("|---" * (5 + len(decades)) + "|")
     for d, run in zip(dirs, runs):
-        exponents = [fig2_exponent(run, summary(d), lo) + (single_realization_spread(run, lo) if run is hull else "")
+        exponents = [fig2_exponent(run, read_summary(d), lo) + (single_realization_spread(run, lo) if run is hull else "")
                      for lo in decades]
         rel = ["–"] * 4
         if hull and run is not hull and (run["N"], run["seed"]) == (hull["N"], hull["seed"]):

@@ -15,8 +15,6 @@ fig1-rpos-paper-size.png  r = 0, 0.5, 0.9, 0.99 by the event engine, the same te
 A run that is not kept is left out of its picture.
 """
 import argparse
-import csv
-import json
 import math
 import os
 
@@ -24,6 +22,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from shockplot import kept_runs  # noqa: E402
+from shockplot.common import label as axis_label, save  # noqa: E402
 
 EXACT_T_T23 = 0.2128531785  # compare/cluster_velocity_law.hpp, D = 1/3
 R0_RUNS = [  # directory, legend, colour
@@ -39,33 +40,19 @@ RESTITUTION_RUNS = [
 ]
 
 
-def read_T(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return [(float(r["t"]), float(r["T"]), float(r["T_stderr"])) for r in rows]
-
-
-def summary(path):
-    with open(path) as f:
-        s = json.load(f)
-    if "analysis" not in s and s.get("variants"):
-        s = s["variants"][0]["summary"]
-    return s
-
-
-def draw(root, runs, title, path, log_y=False):
+def draw(root, runs, title, out_dir, file_name, log_y=False):
     kept = [(name, label, colour) for name, label, colour in runs if os.path.isdir(os.path.join(root, name))]
     if len(kept) < 2:
         return
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4))
     for k, (name, label, colour) in enumerate(kept):
         d = os.path.join(root, name)
-        series = [(t, T, e) for t, T, e in read_T(os.path.join(d, "T.csv")) if t >= 10]
+        series = [(t, T, e) for t, T, e in kept_runs.T_series(d) if t >= 10]
         scale = [t ** (2.0 / 3.0) for t, _, _ in series]
         left.errorbar([t for t, _, _ in series], [T * s for (_, T, _), s in zip(series, scale)],
                       yerr=[e * s for (_, _, e), s in zip(series, scale)], fmt="o-", ms=2.5, lw=0.8,
                       color=colour, label=label)
-        windows = [w for w in summary(os.path.join(d, "summary.json"))["analysis"]["T_exponent_windows"]
+        windows = [w for w in kept_runs.read_summary(d, first_variant=True)["analysis"]["T_exponent_windows"]
                    if abs(w["t_max"] / w["t_min"] - 10) < 1e-6]
         shift = 1 + 0.06 * (k - (len(kept) - 1) / 2)
         right.errorbar([math.sqrt(w["t_min"] * w["t_max"]) * shift for w in windows],
@@ -75,19 +62,18 @@ def draw(root, runs, title, path, log_y=False):
     left.set_xscale("log")
     if log_y:
         left.set_yscale("log")
-    left.set_xlabel("t")
-    left.set_ylabel("T t^(2/3)")
+    left.set_xlabel(axis_label("time $t$", "time"))
+    left.set_ylabel(axis_label("$T\\,t^{2/3}$", kept_runs.UNIT_T_SCALED))
     left.set_title(title + ": T t^(2/3), error over realizations")
     left.legend(fontsize=7)
     right.axhline(-2.0 / 3.0, color="k", ls="--", lw=1, label="-2/3")
     right.set_xscale("log")
-    right.set_xlabel("t (centre of the decade fitted)")
-    right.set_ylabel("exponent of T(t) fitted on the decade")
+    right.set_xlabel(axis_label("time $t$, centre of the decade fitted", "time"))
+    right.set_ylabel(axis_label("exponent of $T(t)$ fitted on the decade", "1"))
     right.set_title("exponent per decade, jackknife error over realizations")
     right.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save(fig, out_dir, file_name)
 
 
 def main():
@@ -96,9 +82,8 @@ def main():
     ap.add_argument("--out", default=".")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
-    draw(a.root, R0_RUNS, "r = 0", os.path.join(a.out, "fig1-paper-size.png"))
-    draw(a.root, RESTITUTION_RUNS, "10 x N = 10^6", os.path.join(a.out, "fig1-rpos-paper-size.png"),
-         log_y=True)
+    draw(a.root, R0_RUNS, "r = 0", a.out, "fig1-paper-size.png")
+    draw(a.root, RESTITUTION_RUNS, "10 x N = 10^6", a.out, "fig1-rpos-paper-size.png", log_y=True)
 
 
 if __name__ == "__main__":

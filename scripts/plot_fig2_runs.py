@@ -21,8 +21,6 @@ Draws fig2-paper-size.png:
          realization of another initial state would stray.
 """
 import argparse
-import csv
-import json
 import math
 import os
 
@@ -30,6 +28,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from shockplot import kept_runs  # noqa: E402
+from shockplot.common import label as axis_label, save  # noqa: E402
 
 EXACT_T_T23 = 0.2128531785  # compare/cluster_velocity_law.hpp, D = 1/3
 T_START = 100.0
@@ -39,18 +40,16 @@ STYLE = {("elastic", 0.01): ("C0", "-"), ("sticky", 0.01): ("C1", "--"),
 
 def load(d):
     """One kept run: its parameters, T(t) of realization 0 and every realization's T."""
-    with open(os.path.join(d, "summary.json")) as f:
-        s = json.load(f)
-    with open(os.path.join(d, "T.csv")) as f:
-        rows = [r for r in csv.DictReader(f) if r["T"]]
-    columns = sorted((k for k in rows[0] if k.startswith("T_") and k[2:].isdigit()), key=lambda k: int(k[2:]))
+    s = kept_runs.read_summary(d)
+    rows = kept_runs.read_series(d)
+    columns = kept_runs.realization_columns(rows)
     p = s["particles"]
     rule = "hull" if p["solver"] == "hull" else (
         "sticky" if any(o.endswith("subthreshold=sticky") for o in s["overrides"]) else "elastic")
-    return {"name": os.path.basename(d), "rule": rule, "delta": p["delta"], "N": s["initial"]["N"],
+    return {"name": os.path.basename(os.path.normpath(d)), "rule": rule, "delta": p["delta"], "N": s["initial"]["N"],
             "seed": s["initial"]["seed"], "realizations": p["realizations"], "collisions": p["collisions"],
-            "T": [(float(r["t"]), float(r[columns[0]] if columns else r["T"])) for r in rows],
-            "each": [[float(r[c]) for c in columns] for r in rows]}
+            "T": [(r["t"], r[columns[0]] if columns else r["T"]) for r in rows],
+            "each": [[r[c] for c in columns] for r in rows]}
 
 
 def label(run):
@@ -99,8 +98,7 @@ def main():
     ap.add_argument("root")
     ap.add_argument("--out", default=".")
     a = ap.parse_args()
-    runs = [load(os.path.join(a.root, d)) for d in sorted(os.listdir(a.root))
-            if os.path.isfile(os.path.join(a.root, d, "T.csv"))]
+    runs = [load(d) for d in kept_runs.run_dirs(a.root)]
     hull = next(r for r in runs if r["rule"] == "hull")
     variants = [r for r in runs if r is not hull]
     fig, (left, right) = plt.subplots(1, 2, figsize=(11.5, 4.6))
@@ -140,19 +138,18 @@ def main():
     for ax, t_min in ((left, 1), (right, T_START)):
         ax.set_xscale("log")
         ax.set_xlim(t_min, t_max)
-        ax.set_xlabel("t")
+        ax.set_xlabel(axis_label("time $t$", "time"))
     left.set_yscale("log")
-    left.set_ylabel("T t^(2/3)")
+    left.set_ylabel(axis_label("$T\\,t^{2/3}$", kept_runs.UNIT_T_SCALED))
     left.set_title("r = 0.9, N = %.0e, realization 0" % hull["N"])
     left.legend(fontsize=7)
     right.axhline(0, color="k", lw=0.8)
-    right.set_ylabel("T / T(exact sticky gas, same state) - 1")
+    right.set_ylabel(axis_label("$T / T$(exact sticky gas, same state) $- 1$", "1"))
     right.set_title("against the r = 0 gas of the same initial state")
     right.legend(fontsize=7)
     fig.tight_layout()
     os.makedirs(a.out, exist_ok=True)
-    fig.savefig(os.path.join(a.out, "fig2-paper-size.png"), dpi=110)
-    plt.close(fig)
+    save(fig, a.out, "fig2-paper-size.png")
 
 
 if __name__ == "__main__":

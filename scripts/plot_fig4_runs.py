@@ -14,29 +14,24 @@ density, and when kept density_stderr and exact). Draws fig4-paper-size.png:
          panel's, and the tail study's).
 """
 import argparse
-import csv
 import glob
-import json
 import os
-from collections import defaultdict
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from shockplot import kept_runs  # noqa: E402
+from shockplot.common import label as axis_label, save  # noqa: E402
+
 COLOURS = {0.0: "C3", 0.5: "C2", 0.9: "C0"}
 MARKERS = ["o", "s", "^", "v", "D"]
 
 
 def read(d):
-    with open(os.path.join(d, "summary.json")) as f:
-        s = json.load(f)
-    rows = defaultdict(list)
-    with open(os.path.join(d, "histogram.csv")) as f:
-        for row in csv.DictReader(f):
-            rows[float(row["t"])].append({k: float(v) for k, v in row.items()})
-    return s["particles"]["r"], s["particles"]["realizations"], s["initial"]["N"], rows
+    s = kept_runs.read_summary(d)
+    return s["particles"]["r"], s["particles"]["realizations"], s["initial"]["N"], kept_runs.read_histogram(d)
 
 
 def main():
@@ -70,18 +65,18 @@ def main():
     sizes = sorted({"%d x N = %.0e" % (R, N) for _, R, N, _ in runs})
     left.set_yscale("log")
     left.set_ylim(bottom=1e-6)
-    left.set_xlabel("z = (v - <v>) t^(1/3)")
-    left.set_ylabel("Phi(z), mass weighted")
+    z_label = axis_label(r"$z = (v - \langle v\rangle)\,t^{1/3}$", "length/time^(2/3)")
+    left.set_xlabel(z_label)
+    left.set_ylabel(axis_label(r"$\Phi(z)$, mass weighted", "time^(2/3)/length"))
     left.set_title("Fig. 4: %s" % ", ".join(sizes))
     left.legend(fontsize=6, ncol=2)
-    right.set_xlabel("z = (v - <v>) t^(1/3)")
-    right.set_ylabel("Phi / exact - 1")
+    right.set_xlabel(z_label)
+    right.set_ylabel(axis_label(r"$\Phi$ / exact $- 1$", "1"))
     right.set_title("against the exact law, standard error over realizations")
     right.legend(fontsize=6, ncol=2)
     fig.tight_layout()
     os.makedirs(a.out, exist_ok=True)
-    fig.savefig(os.path.join(a.out, "fig4-paper-size.png"), dpi=110)
-    plt.close(fig)
+    save(fig, a.out, "fig4-paper-size.png")
 
 
 if __name__ == "__main__":

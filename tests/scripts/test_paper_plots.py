@@ -108,3 +108,44 @@ def test_tables_from_the_kept_runs(capsys):
     assert "`d1e-2-sticky-R5` | delta = 0.01, sticky below it | 1e+06 × 5, 1e+06" in out
     assert "`hull-r0-R40` | exact sticky gas r = 0, the same initial state | 1e+06 × 40" in out
     assert "`hull-r0-R1000` | 0 | 1000 × 1e+06 | -0.6671 ± 0.0002" in out
+
+
+def test_kept_series_read_back_as_written(tmp_path):
+    """T.csv (shockplot/kept_runs.py) holds every number of the result file
+    exactly (repr of doubles) and leaves the samples not reached out."""
+    import h5py
+    import numpy as np
+    from shockplot import kept_runs
+
+    t = np.array([1.0, 10.0, 100.0])
+    each = np.array([[0.5, 1 / 3, np.nan], [0.25, 0.1 + 0.2, np.nan]])
+    with h5py.File(tmp_path / "result.h5", "w") as h5:
+        h5["particles/t"] = t
+        h5["particles/T"] = np.array([0.375, np.pi, np.nan])
+        h5["particles/T_stderr"] = np.array([0.125, np.e, np.nan])
+        h5["particles/realizations/T"] = each
+        kept_runs.write_series(h5, str(tmp_path / kept_runs.SERIES))
+    rows = kept_runs.read_series(str(tmp_path))
+    assert [r["t"] for r in rows] == [1.0, 10.0]
+    assert [r["T"] for r in rows] == [0.375, np.pi]
+    assert kept_runs.realization_columns(rows) == ["T_0", "T_1"]
+    assert [r["T_1"] for r in rows] == [0.25, 0.1 + 0.2]
+    assert kept_runs.T_series(str(tmp_path)) == [(1.0, 0.375, 0.125), (10.0, np.pi, np.e)]
+
+
+def test_fig2_draws_each_rule_and_delta_once(monkeypatch, tmp_path):
+    """Runs of one rule and delta share realization 0: one curve and one legend
+    entry each, in both panels (the kept runs hold two sticky runs of each delta)."""
+    import plot_fig2_runs
+
+    figures = []
+    monkeypatch.setattr(plot_fig2_runs, "save", lambda fig, out_dir, name: figures.append(fig))
+    monkeypatch.setattr(sys, "argv", ["plot_fig2_runs.py", os.path.join(RUNS, "fig2"), "--out", str(tmp_path)])
+    plot_fig2_runs.main()
+    (fig,) = figures
+    for ax in fig.axes:
+        labels = [l for l in ax.get_legend_handles_labels()[1]]
+        assert len(labels) == len(set(labels)), labels
+        assert ax.get_xlabel().endswith("[time]") and ax.get_ylabel()
+    right = fig.axes[1].get_legend_handles_labels()[1]
+    assert "delta = 0.01, sticky below it, 10 paired" in right
