@@ -129,10 +129,13 @@ void Recorder::snapshot(double t, const ChainView& s, std::size_t copies) {
   for (std::size_t k = next_snapshot_ - copies; k < next_snapshot_; ++k) sink_->snapshot(k, t, sorted);
 }
 
-// The streamed count, or (rounding left the chain out of order) the count of the sorted copy.
+// The streamed count, or (rounding left the chain out of order) the count of
+// the state read in order (SortedState), as find_clusters would count it.
 std::size_t Recorder::count_clusters(const ChainView& s, ClusterCounter& counter) const {
   if (const std::optional<std::size_t> n = counter.count()) return *n;
-  return find_clusters(sorted_bodies(s, L_, ring_), ring_ ? L_ : 0.0, criteria_).size();
+  std::size_t clusters = 0;
+  visit_clusters(SortedState(s, L_, ring_), ring_ ? L_ : 0.0, criteria_, [&](const Cluster&) { ++clusters; });
+  return clusters;
 }
 
 // Each original particle at its body's position: body b holds first[b] ..

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -53,6 +55,60 @@ void for_each_wrapped(const ChainView& view, double L, bool ring, F&& f) {
       Fields::all);
 }
 
+// Bodies fed in order of arrival, handed on in the order of a stable sort by x
+// through a window of `capacity` bodies kept sorted (a body goes after those of
+// equal x already there). Exact as long as no body arrives below one already
+// handed on: every body handed on is then the least of those left, and the
+// later of equal ones. Otherwise failed(), and what was handed on is not the
+// stable order.
+class WindowedOrder {
+ public:
+  static constexpr std::size_t capacity = 4096;  // 96 KiB of bodies
+
+  template <class Out>
+  void push(double x, double v, double m, Out&& out) {
+    if (x < last_out_) failed_ = true;
+    if (failed_) return;
+    if (window_.empty() || !(x < window_.back().x)) {
+      window_.push_back({x, v, m});
+    } else {
+      const auto at = std::upper_bound(window_.begin(), window_.end(), x,
+                                       [](double value, const Body& b) { return value < b.x; });
+      window_.insert(at, {x, v, m});
+    }
+    if (window_.size() > capacity) pop(out);
+  }
+  template <class Out>
+  void flush(Out&& out) {
+    while (!failed_ && !window_.empty()) pop(out);
+  }
+  bool failed() const { return failed_; }
+
+ private:
+  struct Body {
+    double x, v, m;
+  };
+  template <class Out>
+  void pop(Out&& out) {
+    const Body b = window_.front();
+    window_.pop_front();
+    last_out_ = b.x;
+    out(b.x, b.v, b.m);
+  }
+  std::deque<Body> window_;
+  double last_out_ = -std::numeric_limits<double>::infinity();
+  bool failed_ = false;
+};
+
+// Calls f(x, v, m) for every body, wrapped, in chain order from the seam.
+template <class F>
+void from_seam(const ChainView& view, double L, bool ring, std::size_t seam, F&& f) {
+  for (const bool after : {true, false})
+    for_each_wrapped(view, L, ring, [&](std::size_t k, double x, double v, double m) {
+      if ((k >= seam) == after) f(x, v, m);
+    });
+}
+
 }  // namespace
 
 Bodies sorted_bodies(const ChainView& s, double L, bool ring) {
@@ -64,7 +120,8 @@ Bodies sorted_bodies(const ChainView& s, double L, bool ring) {
     out.push_back(x, v, m);
   });
   const auto start = static_cast<std::ptrdiff_t>(seam.seam());
-  for (std::vector<double>* a : {&out.x, &out.v, &out.m}) std::rotate(a->begin(), a->begin() + start, a->end());
+  for (std::vector<double>* a : {&out.x, &out.v, &out.m})
+    std::rotate(a->begin(), a->begin() + start, a->end());
   return seam.sorted() ? out : stable_sorted(out);
 }
 
@@ -73,18 +130,25 @@ SortedState::SortedState(const ChainView& view, double L, bool ring) : view_(vie
   for_each_wrapped(view, L, ring, [&](std::size_t, double x, double, double) { seam.add(x); });
   seam_ = seam.seam();
   sorted_ = seam.sorted();
+  if (sorted_) return;
+  WindowedOrder trial;
+  from_seam(view, L, ring, seam_,
+            [&](double x, double v, double m) { trial.push(x, v, m, [](double, double, double) {}); });
+  windowed_ = !trial.failed();
 }
 
 void SortedState::read(const Chunk& chunk) const {
   ChunkBuffer buffer(chunk);
-  if (!sorted_) {
+  auto put = [&](double x, double v, double m) { buffer.push(x, v, m); };
+  if (sorted_) {
+    from_seam(view_, L_, ring_, seam_, put);
+  } else if (windowed_) {
+    WindowedOrder order;
+    from_seam(view_, L_, ring_, seam_, [&](double x, double v, double m) { order.push(x, v, m, put); });
+    order.flush(put);
+  } else {
     const Bodies b = sorted_bodies(view_, L_, ring_);
     for (std::size_t i = 0; i < b.size(); ++i) buffer.push(b.x[i], b.v[i], b.m[i]);
-  } else {
-    for (const bool from_seam : {true, false})
-      for_each_wrapped(view_, L_, ring_, [&](std::size_t k, double x, double v, double m) {
-        if ((k >= seam_) == from_seam) buffer.push(x, v, m);
-      });
   }
   buffer.flush();
 }

@@ -41,7 +41,11 @@ Bodies sorted_bodies(const ChainView& s, double L, bool ring);
 
 // The state as a StateReader: two passes over the view per read (from the
 // seam, then up to it) in chunks of ChainChunk::capacity; the view must stay
-// valid while the reader is used.
+// valid while the reader is used. Out of order from the seam (rounding), the
+// bodies pass through a window of kWindow bodies kept in order (WindowedOrder),
+// which gives the stable sort's order whenever no body lies more than the
+// window behind its place (checked by a pass at construction); else, only
+// then, through a sorted copy.
 class SortedState final : public StateReader {
  public:
   SortedState(const ChainView& view, double L, bool ring);
@@ -54,6 +58,7 @@ class SortedState final : public StateReader {
   bool ring_;
   std::size_t seam_ = 0;
   bool sorted_ = true;
+  bool windowed_ = false;  // not sorted, but WindowedOrder orders it
 };
 
 }  // namespace shockgas::particles::detail

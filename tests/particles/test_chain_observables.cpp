@@ -15,6 +15,7 @@
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/random.hpp"
 #include "shockgas/particles/simulate.hpp"
+#include "sorted_state.hpp"
 
 namespace shockgas::particles::detail {
 namespace {
@@ -186,6 +187,40 @@ TEST(ChainObservables, MisorderedChainsFallBackToTheSortedCopy) {
       }
       expect_matches_reference(c, p, ring);
     }
+  }
+}
+
+// The state read in chunks (what a StateSink gets) as the bodies of a read.
+Bodies read_whole(const StateReader& state) {
+  Bodies b;
+  state.read([&](const double* x, const double* v, const double* m, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) b.push_back(x[i], v[i], m[i]);
+  });
+  return b;
+}
+
+// Misordered chains read through SortedState (the order window, no copy) in
+// the sorted copy's order, bit for bit.
+TEST(SortedState, MisorderedChainsReadAsTheSortedCopy) {
+  Rng rng(27);
+  for (bool ring : {true, false})
+    for (int trial = 0; trial < 20; ++trial) {
+      SCOPED_TRACE(std::string(ring ? "ring" : "line") + ", trial " + std::to_string(trial));
+      Chain c = random_chain(rng, 3000, 0.02, ring);
+      misorder(c, ring && trial % 2 == 1, rng);
+      expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, ring)), ref_sorted(c, ring));
+    }
+}
+
+// A body far behind its place (more than the window of 4096): read through a
+// sorted copy, in the same order.
+TEST(SortedState, ABodyFarOutOfPlaceReadsAsTheSortedCopy) {
+  Rng rng(28);
+  for (bool ring : {true, false}) {
+    SCOPED_TRACE(ring ? "ring" : "line");
+    Chain c = random_chain(rng, 20000, 0.02, ring);
+    c.x[15000] = c.x[10] + 1e-9 * c.L;  // behind 14990 bodies
+    expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, ring)), ref_sorted(c, ring));
   }
 }
 
