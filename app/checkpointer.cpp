@@ -7,6 +7,7 @@
 
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app {
 
@@ -83,6 +84,8 @@ void Checkpointer::poll() {
 std::vector<RealizationRecord> Checkpointer::take_records() { return std::exchange(checkpoint_.records, {}); }
 
 void Checkpointer::save() {
+  for (const RealizationRecord& r : checkpoint_.records)  // on the disk before the record that needs them
+    if (r.states_apart) sync_state_file(state_file_path(dir_, r.ensemble));
   write_checkpoint(dir_, checkpoint_);
   saved_ = checkpoint_.records.size();
   last_save_ = Clock::now();

@@ -60,10 +60,12 @@ void sort_in_plan_order(std::vector<RealizationRecord>& records) {
 }
 
 ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
-                              ProgressBar& progress, Checkpointer* checkpoints) {
+                              ProgressBar& progress, Checkpointer* checkpoints,
+                              const std::filesystem::path& states_dir) {
   ComputedRecords out;
   out.threads = threads;
-  RealizationPool pool(plan, checkpoints ? checkpoints->remaining(*plan) : plan->items(), threads, false);
+  RealizationPool pool(plan, checkpoints ? checkpoints->remaining(*plan) : plan->items(), threads, false,
+                       states_dir);
   auto keep_finished = [&] {
     if (!checkpoints) return;
     checkpoints->add(pool.take_finished());
@@ -87,7 +89,7 @@ ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::siz
 class Gatherer {
  public:
   Gatherer(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads, ProgressBar& progress,
-           Checkpointer* checkpoints)
+           Checkpointer* checkpoints, const std::filesystem::path& states_dir)
       : job_(job),
         plan_(*plan),
         progress_(progress),
@@ -100,7 +102,7 @@ class Gatherer {
       peers_[j].items = share.size();
       peers_[j].heard = Clock::now();
       if (j == 0)
-        pool_ = std::make_unique<RealizationPool>(plan, std::move(share), threads, true);
+        pool_ = std::make_unique<RealizationPool>(plan, std::move(share), threads, true, states_dir);
       else
         job.send(j, kItems, pack_items({}, share));
     }
@@ -335,10 +337,11 @@ class Worker {
 }  // namespace
 
 ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
-                                ProgressBar& progress, Checkpointer* checkpoints) {
+                                ProgressBar& progress, Checkpointer* checkpoints,
+                                const std::filesystem::path& states_dir) {
   const Clock::time_point start = Clock::now();
   if (!job) {
-    ComputedRecords out = compute_alone(std::move(plan), threads, progress, checkpoints);
+    ComputedRecords out = compute_alone(std::move(plan), threads, progress, checkpoints, states_dir);
     out.wall_seconds = seconds_since(start);
     return out;
   }
@@ -349,7 +352,7 @@ ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> pl
     Worker(*job, std::move(plan), threads).serve();
     return out;
   }
-  out.records = Gatherer(*job, std::move(plan), threads, progress, checkpoints).gather();
+  out.records = Gatherer(*job, std::move(plan), threads, progress, checkpoints, states_dir).gather();
   sort_in_plan_order(out.records);
   out.wall_seconds = seconds_since(start);
   return out;

@@ -18,6 +18,7 @@
 //    rank 0 having saved the records gathered so far when it keeps checkpoints.
 // Rank 1 names rank 0 if rank 0 falls silent. Rank 0 writes nothing before it
 // holds every record, so a failed job leaves no result.
+#include <filesystem>
 #include <memory>
 #include <vector>
 
@@ -56,8 +57,11 @@ struct ComputedRecords {
 // checkpoints (this process alone, or rank 0 of a job; checkpointer.hpp): the
 // records it keeps are not run again, and every record passes through it, so
 // that it saves them every output.checkpoint_minutes and on a signal; nullptr
-// for none (and on the other ranks).
+// for none (and on the other ranks). states_dir: where realization 0 keeps its
+// states apart when it runs in this process, alone or on rank 0
+// (realization_pool.hpp); on another rank its record carries them.
 ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
-                                ProgressBar& progress, Checkpointer* checkpoints = nullptr);
+                                ProgressBar& progress, Checkpointer* checkpoints = nullptr,
+                                const std::filesystem::path& states_dir = {});
 
 }  // namespace shockgas::app

@@ -6,6 +6,7 @@
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/core/initial_stream.hpp"
 #include "shockgas/version.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app::layout {
 
@@ -78,8 +79,41 @@ std::vector<Declaration> series() {
   return d;
 }
 
+// A state's columns (0: x, 1: v, 2: m) handed to an emitter: bodies held whole
+// as they are, a state of the state file (state_file.hpp) in pieces.
+class StateColumns {
+ public:
+  virtual void emit(int column, Emitter& out, const std::vector<std::string>& at) const = 0;
+
+ protected:
+  ~StateColumns() = default;
+};
+
+class HeldColumns final : public StateColumns {
+ public:
+  explicit HeldColumns(const Bodies& b) : b_(b) {}
+  void emit(int column, Emitter& out, const std::vector<std::string>& at) const override {
+    out.values(column == 0 ? b_.x : column == 1 ? b_.v : b_.m, at);
+  }
+
+ private:
+  const Bodies& b_;
+};
+
+class StoredColumns final : public StateColumns {
+ public:
+  explicit StoredColumns(const StoredStates::State& s) : s_(s) {}
+  void emit(int column, Emitter& out, const std::vector<std::string>& at) const override {
+    out.pieces(
+        s_.size(), [&](const Emitter::PutPiece& put) { s_.read_column(column, put); }, at);
+  }
+
+ private:
+  const StoredStates::State& s_;
+};
+
 // Hands each state of a run to `put`, with the values of the group's placeholders.
-using PutState = std::function<void(const Bodies&, std::vector<std::string>)>;
+using PutState = std::function<void(const StateColumns&, std::vector<std::string>)>;
 using EachState = std::function<void(const RunResults&, const PutState& put)>;
 
 // x, v, m of the states `each` finds (`what`: whose) under group.
@@ -87,22 +121,19 @@ std::vector<Declaration> bodies(const std::string& group, const std::string& wha
                                 EachState each) {
   struct Column {
     const char* name;
-    std::vector<double> Bodies::*data;
     const char* unit;
     const char* what;
   };
-  const Column columns[] = {{"x", &Bodies::x, "length", ": positions (ring: in [0, L))"},
-                            {"v", &Bodies::v, "length/time", ": velocities"},
-                            {"m", &Bodies::m, "mass", ": masses"}};
+  const Column columns[] = {{"x", "length", ": positions (ring: in [0, L))"},
+                            {"v", "length/time", ": velocities"},
+                            {"m", "mass", ": masses"}};
   std::vector<Declaration> d;
-  for (const Column& c : columns) {
-    const auto data = c.data;
+  for (int c = 0; c < 3; ++c)
     d.push_back(
-        dataset(Part::particles, group + "/" + c.name, c.unit, what + c.what, when,
-                [each, data](const RunResults& r, Emitter& out) {
-                  each(r, [&](const Bodies& b, std::vector<std::string> at) { out.values(b.*data, at); });
+        dataset(Part::particles, group + "/" + columns[c].name, columns[c].unit, what + columns[c].what, when,
+                [each, c](const RunResults& r, Emitter& out) {
+                  each(r, [&](const StateColumns& s, std::vector<std::string> at) { s.emit(c, out, at); });
                 }));
-  }
   return d;
 }
 
@@ -111,16 +142,31 @@ std::vector<Declaration> records() {
   std::vector<Declaration> d;
   append(d, bodies("/particles/final", "state at t_end (realization 0)", "",
                    [](const RunResults& r, const auto& put) {
-                     if (r.particles) put(r.particles->ensemble.first.final_state, {});
+                     if (!r.particles) return;
+                     if (const auto& stored = r.particles->states)
+                       put(StoredColumns(stored->final_state()), {});
+                     else
+                       put(HeldColumns(r.particles->ensemble.first.final_state), {});
                    }));
   append(d, bodies("/particles/snapshots/{k}", "snapshot (realization 0)", "at particles.snapshots",
                    [](const RunResults& r, const auto& put) {
                      if (!r.particles) return;
+                     if (const auto& stored = r.particles->states) {
+                       for (std::size_t k = 0; k < stored->snapshots().size(); ++k)
+                         put(StoredColumns(stored->snapshots()[k]), {std::to_string(k)});
+                       return;
+                     }
                      const auto& snaps = r.particles->ensemble.first.snapshots;
-                     for (std::size_t k = 0; k < snaps.size(); ++k) put(snaps[k].bodies, {std::to_string(k)});
+                     for (std::size_t k = 0; k < snaps.size(); ++k)
+                       put(HeldColumns(snaps[k].bodies), {std::to_string(k)});
                    }));
   d.push_back(attribute(p, "/particles/snapshots/{k}@t", "time", "time of snapshot k", "",
                         from_particles([](const ParticleResults& pr, Emitter& out) {
+                          if (pr.states) {
+                            for (std::size_t k = 0; k < pr.states->snapshots().size(); ++k)
+                              out.number(pr.states->snapshots()[k].time(), {std::to_string(k)});
+                            return;
+                          }
                           const auto& snaps = pr.ensemble.first.snapshots;
                           for (std::size_t k = 0; k < snaps.size(); ++k)
                             out.number(snaps[k].t, {std::to_string(k)});

@@ -6,13 +6,16 @@
 #include <algorithm>
 #include <iostream>
 
+#include "checkpoint.hpp"
 #include "checkpointer.hpp"
 #include "job.hpp"
 #include "job_ensembles.hpp"
 #include "progress_bar.hpp"
 #include "realization_pool.hpp"
+#include "run_directory.hpp"
 #include "shard_file.hpp"
 #include "shockgas/core/error.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app {
 
@@ -42,6 +45,33 @@ std::vector<double> wall_shares(const EnsemblePlan& plan, const std::vector<Real
   return own;
 }
 
+// The records of a checkpoint being resumed, less those of a realization 0
+// whose state file is not whole (a run killed between the two): it runs again.
+std::vector<RealizationRecord> resumable_records(const fs::path& dir) {
+  std::vector<RealizationRecord> kept = read_checkpoint(dir).records;
+  const auto lost = [&](const RealizationRecord& r) {
+    return r.states_apart && !StoredStates::complete(state_file_path(dir, r.ensemble));
+  };
+  kept.erase(std::remove_if(kept.begin(), kept.end(), lost), kept.end());
+  return kept;
+}
+
+// Realization 0's state files are kept after a failure only beside a
+// checkpoint, which a resumed run continues from.
+class StateFilesCleanup {
+ public:
+  explicit StateFilesCleanup(fs::path dir) : dir_(std::move(dir)) {}
+  ~StateFilesCleanup() {
+    std::error_code ec;
+    if (!fs::exists(checkpoint_path(dir_), ec)) remove_state_files(dir_);
+  }
+  StateFilesCleanup(const StateFilesCleanup&) = delete;
+  StateFilesCleanup& operator=(const StateFilesCleanup&) = delete;
+
+ private:
+  fs::path dir_;
+};
+
 // out/<name>.shard-A-B[-vC-D] for a shard without --out.
 std::string shard_name(const Scene& scene, const RunOptions& options) {
   std::string name = scene.name + ".shard-" + options.realizations +
@@ -70,19 +100,28 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   const std::size_t threads = resolved_threads(scene.particles.threads);
   const fs::path where =
       shard && options.out_dir.empty() ? fs::path("out") / shard_name(scene, options) : dir;
+  // Realization 0's states go to a file beside the checkpoint (state_file.hpp);
+  // a shard's records carry them.
+  const fs::path states_dir = shard || !speaks_for_job() ? fs::path() : where;
+  std::optional<CreatedDirectories> made;
+  std::optional<StateFilesCleanup> cleanup;
+  if (!states_dir.empty()) {
+    made.emplace(states_dir);  // removed again on a failure if nothing is left in it
+    cleanup.emplace(states_dir);
+  }
   ComputedRecords computed;
   {
     std::unique_ptr<Checkpointer> checkpoints;  // rank 0 keeps a job's (job_ensembles.hpp)
     if (keeps_checkpoints(options) && speaks_for_job())
       checkpoints = std::make_unique<Checkpointer>(
           where, scene, options.realizations, options.variants,
-          options.resume ? read_checkpoint(where).records : std::vector<RealizationRecord>{});
+          options.resume ? resumable_records(where) : std::vector<RealizationRecord>{});
     if (checkpoints && options.resume)
       std::cerr << "shockgas: resuming " << where.string() << ": " << checkpoints->kept() << " of "
                 << plan->items().size() << " realizations kept from the checkpoint\n";
     ProgressBar progress(options.progress && speaks_for_job());
     progress.stage(job ? "particles, " + std::to_string(job->size()) + " ranks" : "particles");
-    computed = compute_records(job, plan, threads, progress, checkpoints.get());
+    computed = compute_records(job, plan, threads, progress, checkpoints.get(), states_dir);
   }
   if (!speaks_for_job()) return dir.string();
   if (shard) {
@@ -90,16 +129,17 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   } else {
     const ParallelRun parallel{computed.ranks, computed.threads, 0};
     write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
-                       options, scene.has_sweep ? nullptr : &plan->initial(0));
+                       options, scene.has_sweep ? nullptr : &plan->initial(0), states_dir);
   }
   if (keeps_checkpoints(options)) remove_checkpoint(where);  // the result holds it all now
+  if (made) made->keep();
   return where.string();
 }
 
 std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
                                std::vector<RealizationRecord> records, const ParallelRun& parallel,
                                double wall_seconds, const fs::path& dir, const RunOptions& options,
-                               const InitialCondition* initial) {
+                               const InitialCondition* initial, const fs::path& states_dir) {
   const std::vector<double> wall = wall_shares(plan, records, wall_seconds);
   std::vector<std::vector<RealizationRecord>> by_ensemble(plan.ensembles());
   for (auto& r : records) by_ensemble.at(r.ensemble).push_back(std::move(r));
@@ -109,7 +149,11 @@ std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
     while (e < plan.ensembles() && plan.scene(e).name != asked.name) ++e;
     if (e == plan.ensembles()) throw RunError("the ensemble of " + asked.name + " was not computed");
     next = e + 1;
-    ComputedEnsemble c{reduce_ensemble_records(std::move(by_ensemble[e]), plan.realizations(e)), parallel};
+    std::shared_ptr<const StoredStates> states;
+    for (const auto& r : by_ensemble[e])
+      if (r.states_apart) states = StoredStates::open(state_file_path(states_dir, e));
+    ComputedEnsemble c{reduce_ensemble_records(std::move(by_ensemble[e]), plan.realizations(e)), parallel,
+                       std::move(states)};
     c.ensemble.wall_seconds = wall[e];
     return c;
   };

@@ -16,9 +16,12 @@ namespace shockgas::app {
 // records: of every realization of every ensemble of `plan` (each ensemble
 // computed whole), in any order. wall_seconds: how long computing them took.
 // initial: realization 0 of a scene without sweep, if already built.
+// states_dir: where the records with states_apart have their state files
+// (state_file.hpp).
 std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
                                std::vector<RealizationRecord> records, const ParallelRun& parallel,
                                double wall_seconds, const std::filesystem::path& dir,
-                               const RunOptions& options, const InitialCondition* initial = nullptr);
+                               const RunOptions& options, const InitialCondition* initial = nullptr,
+                               const std::filesystem::path& states_dir = {});
 
 }  // namespace shockgas::app

@@ -10,6 +10,7 @@
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/simulate.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app {
 
@@ -17,6 +18,7 @@ struct RealizationPool::State {
   std::shared_ptr<const EnsemblePlan> plan;
   std::vector<WorkItem> items;
   std::size_t threads_per_run = 1;
+  std::filesystem::path states_dir;
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
 
@@ -39,10 +41,17 @@ struct RealizationPool::State {
       fraction[i] = f;
       sim_time = std::max(sim_time, t);
     };
-    RealizationRecord r{item.ensemble, item.index, particles::run_realization(ic, item.index, p, progress)};
+    std::optional<StateFileWriter> states;
+    if (item.index == 0 && !states_dir.empty() && keeps_states_apart(plan->scene(item.ensemble)))
+      states.emplace(state_file_path(states_dir, item.ensemble));
+    RealizationRecord r{item.ensemble, item.index,
+                        states ? particles::simulate(ic, 0, p, progress, &states->sink())
+                               : particles::run_realization(ic, item.index, p, progress),
+                        states.has_value()};
     // Stopped at a safe point by a checkpoint request: not finished, so not a
     // record; a resumed run computes it again from its start.
     if (r.run.stop.reason == particles::StopReason::interrupted) throw Interrupted(interrupt_signal());
+    if (states) states->commit();  // on the disk before its record is kept
     std::lock_guard lock(mutex);
     fraction[i] = 1;
     active[i] = false;
@@ -78,10 +87,12 @@ struct RealizationPool::State {
 };
 
 RealizationPool::RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::vector<WorkItem> items,
-                                 std::size_t threads, bool abandon_unfinished)
+                                 std::size_t threads, bool abandon_unfinished,
+                                 std::filesystem::path states_dir)
     : state_(std::make_shared<State>()), abandon_(abandon_unfinished) {
   State& s = *state_;
   s.plan = std::move(plan);
+  s.states_dir = std::move(states_dir);
   s.items = std::move(items);
   s.fraction.assign(s.items.size(), 0.0);
   s.active.assign(s.items.size(), false);
@@ -132,6 +143,10 @@ double RealizationPool::sim_time() const {
 bool RealizationPool::finished() const {
   std::lock_guard lock(state_->mutex);
   return state_->workers == 0;
+}
+
+bool keeps_states_apart(const Scene& scene) {
+  return !(scene.has_continuum && scene.has_compare) && !scene.output.animation;
 }
 
 std::size_t resolved_threads(std::size_t setting) { return setting > 0 ? setting : usable_cores(); }

@@ -6,6 +6,7 @@
 // depend on where or beside what it ran.
 #include <cstddef>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,15 +28,18 @@ class RealizationPool {
   // Starts `items` of `plan` on `threads` threads (>= 1). abandon_unfinished:
   // the destructor leaves realizations still running to finish on their own
   // (the process is about to end the job) instead of waiting for them.
+  // states_dir: where realization 0 of an ensemble whose scene keeps_states_apart
+  // writes its states as it runs (state_file.hpp; its record then holds none);
+  // empty: realization 0's record holds them.
   RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::vector<WorkItem> items, std::size_t threads,
-                  bool abandon_unfinished);
+                  bool abandon_unfinished, std::filesystem::path states_dir = {});
   // Starts no further realization; waits for the running ones unless abandoned.
   ~RealizationPool();
   RealizationPool(const RealizationPool&) = delete;
   RealizationPool& operator=(const RealizationPool&) = delete;
 
-  // The records finished since the last call (realization 0 whole, the others
-  // without states).
+  // The records finished since the last call (realization 0 whole or with its
+  // states apart, the others without states).
   std::vector<RealizationRecord> take_finished();
   // The first realization that failed, if one did (no further one is started).
   std::optional<Failure> failure() const;
@@ -54,6 +58,11 @@ class RealizationPool {
   std::vector<std::thread> threads_;
   bool abandon_;
 };
+
+// Whether realization 0 of this scene can keep its states in a state file: not
+// when the comparison needs its final state whole, nor an animation its
+// snapshots (frames.hpp).
+bool keeps_states_apart(const Scene& scene);
 
 // The threads "particles.threads = n" means for this process: n, or for 0 the
 // cores it may use (usable_cores: its CPU affinity, as mpirun and srun bind

@@ -11,6 +11,8 @@ namespace {
 
 using particles::RunResult;
 
+const char* const kStatesApart = "states_apart";  // a field of encode() only (not of the run)
+
 void put_bodies(RecordFields& f, const std::string& prefix, const Bodies& b) {
   f.emplace_back(prefix + "/x", b.x);
   f.emplace_back(prefix + "/v", b.v);
@@ -133,6 +135,7 @@ std::string encode(const RealizationRecord& record) {
   out.u64(record.ensemble);
   out.u64(record.index);
   for (const auto& [name, data] : to_fields(record.run)) out.text(name), out.numbers(data);
+  if (record.states_apart) out.text(kStatesApart), out.numbers({1.0});
   return out.take();
 }
 
@@ -144,7 +147,11 @@ RealizationRecord decode(const std::string& bytes) {
   RecordFields fields;
   while (!in.done()) {
     std::string name = in.text();
-    fields.emplace_back(std::move(name), in.numbers());
+    std::vector<double> numbers = in.numbers();
+    if (name == kStatesApart)
+      r.states_apart = true;
+    else
+      fields.emplace_back(std::move(name), std::move(numbers));
   }
   r.run = from_fields(fields);
   return r;

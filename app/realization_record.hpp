@@ -26,6 +26,9 @@ struct RealizationRecord {
   std::uint64_t ensemble = 0;
   std::uint64_t index = 0;
   particles::RunResult run;
+  // Realization 0 whose snapshots and final state went to its state file
+  // (state_file.hpp) as it ran: run holds none of them.
+  bool states_apart = false;
 };
 
 // Drops the states that only realization 0 keeps.
@@ -37,7 +40,8 @@ RecordFields to_fields(const particles::RunResult& run);
 // The inverse of to_fields; RunError naming the field when one is missing or malformed.
 particles::RunResult from_fields(const RecordFields& fields);
 
-// A record as bytes (for a message) and back; RunError on a malformed buffer.
+// A record as bytes (for a message, a checkpoint) and back, states_apart with
+// it; RunError on a malformed buffer.
 std::string encode(const RealizationRecord& record);
 RealizationRecord decode(const std::string& bytes);
 

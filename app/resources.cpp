@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "durable_file.hpp"
+#include "realization_pool.hpp"
 #include "run_target.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/continuum/registry.hpp"
@@ -115,6 +116,10 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
       items.push_back({"particles.spacetime", "the space-time record", d(p.spacetime_frames) * N * 8, "initial.N"});
     if (!p.snapshots.empty())
       items.push_back({"particles.snapshots", "the snapshots", d(p.snapshots.size()) * N * kBodyBytes});
+    if (keeps_states_apart(s))
+      items.push_back({"initial.N",
+                       "realization 0's states in their file beside the results until they are written",
+                       (1 + d(p.snapshots.size())) * N * kBodyBytes});
   }
   const double cells = d(s.continuum.cells);
   if (s.has_continuum && s.output.fields)

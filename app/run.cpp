@@ -40,6 +40,7 @@ InputError located(const InputError& e, const Scene& scene) {
 void release_records(ParticleResults& p) {
   p.ensemble.first.snapshots = {};
   p.ensemble.first.spacetime = {};
+  p.states = nullptr;
 }
 
 VariantResult reduce(const RunResults& r, nlohmann::ordered_json summary) {

@@ -5,6 +5,7 @@
 // report.md are written from it (output_layout.hpp, report.hpp). Nothing is read
 // back from disk.
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@
 namespace shockgas::app {
 
 class ProgressBar;
+class StoredStates;  // state_file.hpp
 
 // How the realizations were computed (summary keys parallel.*): not physics,
 // and not part of what two runs of one scene must agree on.
@@ -37,6 +39,12 @@ struct ParallelRun {
 struct ParticleResults {
   ParallelRun parallel;
   particles::EnsembleResult ensemble;
+  // Realization 0's snapshots and final state in its state file, read in
+  // chunks (ensemble.first then holds none of them); null when ensemble.first does.
+  std::shared_ptr<const StoredStates> states;
+  // Realization 0's heaviest cluster at the end, by the comparison's cluster
+  // criteria (summary: analysis.heaviest_cluster_*); none without an initial condition.
+  std::optional<particles::Cluster> heaviest;
   std::vector<particles::Snapshot> frames;  // realization 0 at the animation's frame times (frames.hpp)
   compare::ZHistogram histogram;  // the ensemble-mean scaled histogram (empty: bins = 0)
   compare::CoolingAnalysis cooling;
@@ -104,6 +112,7 @@ struct RunResults {
 struct ComputedEnsemble {
   particles::EnsembleResult ensemble;
   ParallelRun parallel;
+  std::shared_ptr<const StoredStates> states;  // as ParticleResults::states
 };
 // The ensemble of the scene (or sweep variant) a run asks for, in the order it asks.
 using EnsembleSource = std::function<ComputedEnsemble(const Scene&)>;

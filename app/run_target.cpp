@@ -11,6 +11,7 @@
 #include "checkpoint.hpp"
 #include "manifest.hpp"
 #include "shockgas/core/error.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app {
 
@@ -50,6 +51,13 @@ bool legacy_run_file(const fs::path& relative) {
   return false;
 }
 
+// What a run keeps in its output directory while it computes: the checkpoint,
+// realization 0's state files.
+bool run_in_progress_file(const fs::path& relative) {
+  return relative == checkpoint_path("").filename() ||
+         (!relative.has_parent_path() && is_state_file(relative));
+}
+
 // The first entry under dir that is not a result of a run: not listed in the
 // manifest (or, without one, not a file an older version wrote).
 std::optional<std::string> foreign_entry(const fs::path& dir, const std::optional<Manifest>& manifest) {
@@ -57,7 +65,7 @@ std::optional<std::string> foreign_entry(const fs::path& dir, const std::optiona
     const fs::path relative = fs::relative(entry.path(), dir);
     if (entry.is_directory() && !entry.is_symlink()) continue;
     const bool ours = !entry.is_regular_file() || entry.is_symlink() ? false
-                      : relative == checkpoint_path("").filename() ? true  // an interrupted run's, to resume
+                      : run_in_progress_file(relative) ? true  // an interrupted run's, to resume
                       : manifest ? relative == kManifestFile || manifest->find(relative.generic_string())
                                  : legacy_run_file(relative);
     if (!ours) return relative.generic_string();
@@ -115,9 +123,11 @@ void check_target_contents(const fs::path& target, const std::string& out, const
                     ", which a run did not write; a run replaces its output directory as a whole)");
   const auto theirs = scene_of_results(target);
   if (theirs == scene || force) return;
-  if (!theirs && fs::is_regular_file(checkpoint_path(target), ec) &&
-      std::distance(fs::directory_iterator(target, ec), fs::directory_iterator()) == 1)
-    return;  // only the checkpoint of an interrupted run (checkpoint.hpp)
+  const auto in_progress = [](const fs::directory_entry& e) {
+    return run_in_progress_file(e.path().filename());
+  };
+  if (!theirs && std::all_of(fs::directory_iterator(target, ec), fs::directory_iterator(), in_progress))
+    return;  // only the checkpoint and state files of an interrupted run (checkpoint.hpp, state_file.hpp)
   refuse(out, "a new or empty directory, or one that holds this scene's results (this one holds " +
                   (theirs ? "the results of scene \"" + *theirs + "\"" : std::string("results of an unknown scene")) +
                   "): give --force to replace them, or another --out");

@@ -11,6 +11,9 @@
 #include "realization_pool.hpp"
 #include "run_results.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
+#include "shockgas/compare/heaviest.hpp"
+#include "shockgas/compare/snapshot_comparison.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app {
 
@@ -31,6 +34,20 @@ void split_frames(ParticleResults& r, const Scene& scene, const std::vector<doub
   snaps = std::move(own);
 }
 
+// The heaviest cluster of realization 0's final state, streamed: the clusters
+// are not collected (40 bytes each, up to one per body), and a state kept
+// apart is read from its file in chunks.
+std::optional<particles::Cluster> heaviest_cluster(const ParticleResults& r, const Scene& s,
+                                                   const InitialCondition& initial) {
+  const auto& end = r.ensemble.first;
+  const double spacing = initial.length() / static_cast<double>(s.initial.N);
+  const auto criteria =
+      compare::snapshot_params(s.compare, s.particles.r, s.particles.delta, spacing, end.stop.time).clusters;
+  const double L = s.particles.geometry == particles::Geometry::ring ? initial.length() : 0.0;
+  if (r.states) return compare::heaviest_cluster(r.states->final_state(), L, criteria);
+  return compare::heaviest_cluster(particles::BodiesReader(end.final_state), L, criteria);
+}
+
 }  // namespace
 
 ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
@@ -40,6 +57,7 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
     ComputedEnsemble computed = source(scene);
     r.ensemble = std::move(computed.ensemble);
     r.parallel = computed.parallel;
+    r.states = std::move(computed.states);
   } else {
     progress.stage("particles");
     r.ensemble = particles::run_ensemble(initial, particle_params(scene), progress.callback());
@@ -51,6 +69,7 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   for (const particles::RunStop& stop : r.ensemble.stops)
     if (stop.reason == particles::StopReason::interrupted) throw Interrupted(interrupt_signal());
   if (scene.output.animation) split_frames(r, scene, frame_times(scene));
+  r.heaviest = heaviest_cluster(r, scene, initial);
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
   r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r,

@@ -3,7 +3,6 @@
 // of each solver (compare/heaviest.hpp).
 #include "layout_declarations.hpp"
 #include "shockgas/compare/heaviest.hpp"
-#include "shockgas/compare/snapshot_comparison.hpp"
 
 namespace shockgas::app::layout {
 
@@ -11,23 +10,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The particles' heaviest cluster at the end, by the comparison's cluster criteria.
-std::optional<particles::Cluster> heaviest_cluster(const RunResults& r) {
-  if (!r.particles || !r.initial) return std::nullopt;
-  const Scene& s = *r.scene;
-  const auto& end = r.particles->ensemble.first;
-  const double spacing = r.initial->length() / static_cast<double>(s.initial.N);
-  const auto criteria =
-      compare::snapshot_params(s.compare, s.particles.r, s.particles.delta, spacing, end.stop.time).clusters;
-  const bool ring = s.particles.geometry == particles::Geometry::ring;
-  // Streamed: the clusters are not collected (40 bytes each, up to one per body).
-  return compare::heaviest_cluster(particles::BodiesReader(end.final_state), ring ? r.initial->length() : 0.0,
-                                   criteria);
-}
-
 Emit cluster(double particles::Cluster::*field) {
   return [field](const RunResults& r, Emitter& out) {
-    if (const auto c = heaviest_cluster(r)) out.json((*c).*field);
+    if (r.particles && r.particles->heaviest) out.json((*r.particles->heaviest).*field);
   };
 }
 

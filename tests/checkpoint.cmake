@@ -2,8 +2,10 @@
 # a run killed with SIGKILL after its first checkpoint, and one stopped by
 # SIGTERM (which writes a checkpoint and exits with 143), each resumed and
 # compared with the uninterrupted run bit for bit (tools/compare_runs.cpp); a
-# sweep killed and resumed the same way; and a shard (realizations 1:5) stopped
-# by either signal, resumed, and compared with the same shard run uninterrupted.
+# sweep killed and resumed the same way; an ensemble whose realization 0 keeps
+# its states in a state file (app/state_file.hpp) stopped by SIGTERM; and a
+# shard (realizations 1:5) stopped by either signal, resumed, and compared with
+# the same shard run uninterrupted.
 # The checkpoint file's refusals are tested in app/test_checkpoint.cpp.
 set(checkpoint_dir ${CMAKE_CURRENT_SOURCE_DIR}/checkpoint)
 foreach(signal KILL TERM)
@@ -17,6 +19,10 @@ foreach(signal KILL TERM)
   set_tests_properties(checkpoint.resumed_after_${signal} checkpoint.shard_resumed_after_${signal}
                        PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
 endforeach()
+add_test(NAME checkpoint.states_apart_resumed_after_TERM
+         COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
+                 ${checkpoint_dir}/states_apart.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/states-apart TERM)
+set_tests_properties(checkpoint.states_apart_resumed_after_TERM PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
 add_test(NAME checkpoint.sweep_resumed_after_KILL
          COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
                  ${checkpoint_dir}/sweep.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/sweep KILL)

@@ -15,6 +15,7 @@
 #include "frames.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/simulate.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -151,6 +152,64 @@ TEST_F(Checkpoints, RecordsThatTheRunDoesNotComputeAreRefused) {
   EXPECT_EQ(command({"run", "--resume", path("run"), "-q"}), 2);
   EXPECT_NE(said_.find("realization 7 of ensemble 0, which the run does not compute"), std::string::npos)
       << said_;
+}
+
+// Without a comparison, realization 0's states go to DIR/states-0.bin as it
+// runs (state_file.hpp), and its record in the checkpoint holds none.
+const char* kSceneApart =
+    "[initial]\nN = 300\n[particles]\nr = 0.5\nt_end = 15\nsamples = 7\nrealizations = 5\n"
+    "histogram_bins = 10\nsnapshots = [4, 9]\n[output]\nplots = false\n";
+
+class CheckpointsWithStatesApart : public Checkpoints {
+ protected:
+  void SetUp() override {
+    Checkpoints::SetUp();
+    std::ofstream(path("scene.toml")) << kSceneApart;
+  }
+  // The checkpoint and state file of a run into `out` killed after realization
+  // 0 and `others` finished.
+  void interrupted_run(const std::string& out, std::vector<std::uint64_t> others) const {
+    const Scene scene = load_scene(path("scene.toml"));
+    fs::create_directories(path(out));
+    StateFileWriter states(state_file_path(path(out), 0));
+    const InitialCondition ic(scene.initial);
+    std::vector<RealizationRecord> kept = {
+        {0, 0, particles::simulate(ic, 0, particle_params(scene), {}, &states.sink()), true}};
+    states.commit();
+    for (RealizationRecord& r : records(scene, std::move(others))) kept.push_back(std::move(r));
+    write_checkpoint(path(out), make_checkpoint(scene, "", "", std::move(kept)));
+  }
+};
+
+TEST_F(CheckpointsWithStatesApart, AResumedRunTakesRealizationZeroFromItsStateFile) {
+  ASSERT_EQ(command({"run", path("scene.toml"), "--out", path("whole"), "-q"}), 0) << said_;
+  EXPECT_FALSE(fs::exists(state_file_path(path("whole"), 0)));  // the result holds them now
+  interrupted_run("resumed", {3});
+  ASSERT_EQ(command({"run", "--resume", path("resumed"), "-q"}), 0) << said_;
+  EXPECT_NE(said_.find("2 of 5 realizations kept from the checkpoint"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(state_file_path(path("resumed"), 0)));
+  const auto differences = testing::result_differences(path("whole"), path("resumed"));
+  EXPECT_TRUE(differences.empty()) << differences.front();
+}
+
+// The state file lost, or cut short (a disk that lost its last blocks):
+// realization 0 runs again, and the result is the same.
+TEST_F(CheckpointsWithStatesApart, RealizationZeroWithoutItsStatesRunsAgain) {
+  ASSERT_EQ(command({"run", path("scene.toml"), "--out", path("whole"), "-q"}), 0) << said_;
+  for (const bool cut : {false, true}) {
+    SCOPED_TRACE(cut ? "cut short" : "lost");
+    const std::string out = cut ? "cut" : "lost";
+    interrupted_run(out, {3});
+    const fs::path file = state_file_path(path(out), 0);
+    if (cut)
+      fs::resize_file(file, fs::file_size(file) - 8);
+    else
+      fs::remove(file);
+    ASSERT_EQ(command({"run", "--resume", path(out), "-q"}), 0) << said_;
+    EXPECT_NE(said_.find("1 of 5 realizations kept from the checkpoint"), std::string::npos) << said_;
+    const auto differences = testing::result_differences(path("whole"), path(out));
+    EXPECT_TRUE(differences.empty()) << differences.front();
+  }
 }
 
 }  // namespace

@@ -47,6 +47,17 @@ TEST(RealizationRecord, CarriesARunExactly) {
   }
   EXPECT_EQ(back.run.collisions, run.collisions);
   EXPECT_EQ(back.run.stop.reason, run.stop.reason);
+  EXPECT_FALSE(back.states_apart);
+}
+
+// Realization 0 whose states are in its state file says so through a message
+// or a checkpoint; its run's fields are the same either way.
+TEST(RealizationRecord, CarriesStatesApart) {
+  particles::RunResult run = run_of(small_scene(1), 0);
+  strip_states(run);
+  const RealizationRecord back = decode(encode({0, 0, run, true}));
+  EXPECT_TRUE(back.states_apart);
+  EXPECT_EQ(to_fields(back.run).size(), to_fields(run).size());
 }
 
 TEST(RealizationRecord, CountsAboveTwoToThe53AreExact) {

@@ -1,0 +1,200 @@
+#include "state_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+#include "durable_file.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kChunk = 4096;  // bodies per read: 96 KiB for the three columns
+constexpr std::size_t kEntryBytes = 4 * 8, kTrailerBytes = 3 * 8;
+
+std::string reason() { return std::strerror(errno); }
+
+}  // namespace
+
+fs::path state_file_path(const fs::path& dir, std::uint64_t ensemble) {
+  return dir / ("states-" + std::to_string(ensemble) + ".bin");
+}
+
+bool is_state_file(const fs::path& name) {
+  std::string s = name.string();
+  if (s.size() > 4 && s.compare(s.size() - 4, 4, ".tmp") == 0) s.resize(s.size() - 4);
+  if (s.rfind("states-", 0) != 0 || s.size() <= 11 || s.compare(s.size() - 4, 4, ".bin") != 0) return false;
+  const std::string number = s.substr(7, s.size() - 11);
+  return std::all_of(number.begin(), number.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+void remove_state_files(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (is_state_file(entry.path().filename())) fs::remove(entry.path(), ec);
+}
+
+// ---- Writing ----
+
+StateFileWriter::StateFileWriter(fs::path path)
+    : path_(std::move(path)), temporary_(path_.string() + ".tmp") {
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw RunError(write_failure(temporary_, reason()));
+  sink_.snapshot = [this](std::size_t k, double t, const particles::StateReader& s) { append(k, t, s); };
+  sink_.final_state = [this](double t, const particles::StateReader& s) { append(kFinalState, t, s); };
+}
+
+StateFileWriter::~StateFileWriter() {
+  if (fd_ < 0) return;  // committed
+  ::close(fd_);
+  std::error_code ec;
+  fs::remove(temporary_, ec);
+}
+
+void StateFileWriter::write_at(std::uint64_t offset, const void* data, std::size_t bytes) {
+  const char* p = static_cast<const char*>(data);
+  while (bytes > 0) {
+    const ssize_t n = ::pwrite(fd_, p, bytes, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw RunError(write_failure(temporary_, reason()));
+    p += n, offset += static_cast<std::uint64_t>(n), bytes -= static_cast<std::size_t>(n);
+  }
+}
+
+// x, v and m each in their own stretch of the file, filled chunk by chunk.
+void StateFileWriter::append(std::uint64_t k, double t, const particles::StateReader& state) {
+  const std::uint64_t n = state.size(), base = end_;
+  std::uint64_t at = 0;
+  state.read([&](const double* x, const double* v, const double* m, std::size_t count) {
+    if (at + count > n) throw RunError("state of " + std::to_string(n) + " bodies read with more");
+    const std::size_t bytes = count * sizeof(double);
+    write_at(base + at * 8, x, bytes);
+    write_at(base + (n + at) * 8, v, bytes);
+    write_at(base + (2 * n + at) * 8, m, bytes);
+    at += count;
+  });
+  if (at != n) throw RunError("state of " + std::to_string(n) + " bodies read with " + std::to_string(at));
+  end_ = base + 3 * n * 8;
+  index_.push_back({k, t, n, base});
+}
+
+void StateFileWriter::commit() {
+  std::vector<std::uint64_t> tail;
+  for (const Entry& e : index_) {
+    std::uint64_t t = 0;
+    std::memcpy(&t, &e.t, sizeof t);
+    tail.insert(tail.end(), {e.k, t, e.n, e.offset});
+  }
+  tail.insert(tail.end(), {index_.size(), end_, kStateFileMagic});
+  write_at(end_, tail.data(), tail.size() * sizeof(std::uint64_t));
+  if (::close(std::exchange(fd_, -1)) != 0) {
+    fs::remove(temporary_);
+    throw RunError(write_failure(temporary_, reason()));
+  }
+  std::error_code ec;
+  fs::rename(temporary_, path_, ec);
+  if (ec) {
+    fs::remove(temporary_, ec);
+    throw RunError(write_failure(path_, ec.message()));
+  }
+}
+
+void sync_state_file(const fs::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw RunError(write_failure(path, reason()));
+  const bool synced = ::fsync(fd) == 0 || errno == EINVAL;
+  const std::string why = synced ? "" : reason();
+  ::close(fd);
+  if (!synced) throw RunError(write_failure(path, why));
+}
+
+// ---- Reading ----
+
+void StoredStates::read_at(std::uint64_t offset, void* data, std::size_t bytes) const {
+  char* p = static_cast<char*>(data);
+  while (bytes > 0) {
+    const ssize_t n = ::pread(fd_, p, bytes, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw RunError("cannot read " + path_.string() + ": " + (n < 0 ? reason() : "it ends early"));
+    p += n, offset += static_cast<std::uint64_t>(n), bytes -= static_cast<std::size_t>(n);
+  }
+}
+
+void StoredStates::State::read(const Chunk& chunk) const {
+  std::vector<double> x(kChunk), v(kChunk), m(kChunk);
+  for (std::uint64_t at = 0; at < n_; at += kChunk) {
+    const std::size_t count = static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, n_ - at));
+    file_->read_at(offset_ + at * 8, x.data(), count * 8);
+    file_->read_at(offset_ + (n_ + at) * 8, v.data(), count * 8);
+    file_->read_at(offset_ + (2 * n_ + at) * 8, m.data(), count * 8);
+    chunk(x.data(), v.data(), m.data(), count);
+  }
+}
+
+void StoredStates::State::read_column(int c,
+                                      const std::function<void(const double*, std::size_t)>& piece) const {
+  std::vector<double> buffer(3 * kChunk);
+  for (std::uint64_t at = 0; at < n_; at += buffer.size()) {
+    const std::size_t count = static_cast<std::size_t>(std::min<std::uint64_t>(buffer.size(), n_ - at));
+    file_->read_at(offset_ + (static_cast<std::uint64_t>(c) * n_ + at) * 8, buffer.data(), count * 8);
+    piece(buffer.data(), count);
+  }
+}
+
+std::shared_ptr<const StoredStates> StoredStates::open(const fs::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw RunError("cannot read " + path.string() + ": " + reason());
+  std::shared_ptr<StoredStates> s(new StoredStates(path, fd));
+  auto damaged = [&](const std::string& what) {
+    return RunError("state file " + path.string() + " is damaged: " + what);
+  };
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) throw RunError("cannot read " + path.string() + ": " + reason());
+  const auto size = static_cast<std::uint64_t>(st.st_size);
+  if (size < kTrailerBytes) throw damaged("shorter than its trailer");
+  std::uint64_t trailer[3];
+  s->read_at(size - kTrailerBytes, trailer, sizeof trailer);
+  const auto [count, index, magic] = trailer;
+  if (magic != kStateFileMagic) throw damaged("no state file's mark at its end");
+  if (index > size || (size - kTrailerBytes - index) / kEntryBytes != count ||
+      (size - kTrailerBytes - index) % kEntryBytes != 0)
+    throw damaged("its index does not fit its size");
+  std::vector<std::uint64_t> entries(4 * count);
+  if (count > 0) s->read_at(index, entries.data(), entries.size() * 8);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const std::uint64_t k = entries[4 * i], n = entries[4 * i + 2], offset = entries[4 * i + 3];
+    double t = 0;
+    std::memcpy(&t, &entries[4 * i + 1], sizeof t);
+    if (offset > index || n > (index - offset) / 24) throw damaged("a state beyond its data");
+    if (k == kFinalState)
+      s->final_.push_back(State(s.get(), t, n, offset));
+    else if (k == s->snapshots_.size())
+      s->snapshots_.push_back(State(s.get(), t, n, offset));
+    else
+      throw damaged("snapshot " + std::to_string(k) + " out of order");
+  }
+  if (s->final_.size() != 1) throw damaged("no final state");
+  return s;
+}
+
+bool StoredStates::complete(const fs::path& path) noexcept {
+  try {
+    open(path);
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
+StoredStates::~StoredStates() { ::close(fd_); }
+
+}  // namespace shockgas::app
