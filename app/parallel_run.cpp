@@ -108,6 +108,7 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   if (!states_dir.empty()) {
     made.emplace(states_dir);  // removed again on a failure if nothing is left in it
     cleanup.emplace(states_dir);
+    if (!options.resume) remove_state_files(states_dir);  // what a killed run left
   }
   ComputedRecords computed;
   {

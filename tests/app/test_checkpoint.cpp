@@ -212,5 +212,18 @@ TEST_F(CheckpointsWithStatesApart, RealizationZeroWithoutItsStatesRunsAgain) {
   }
 }
 
+// A run killed while realization 0 ran leaves its state file behind (no
+// checkpoint refers to it): the next run into the directory is not refused for
+// it, and removes it.
+TEST_F(CheckpointsWithStatesApart, StateFilesThatAKilledRunLeftAreCleared) {
+  fs::create_directories(path("run"));
+  std::ofstream(state_file_path(path("run"), 0).string() + ".tmp") << "half a state";
+  std::ofstream(state_file_path(path("run"), 1)) << "a state of a killed sweep";
+  ASSERT_EQ(command({"run", path("scene.toml"), "--out", path("run"), "-q"}), 0) << said_;
+  EXPECT_TRUE(fs::exists(path("run/result.h5")));
+  for (const auto& entry : fs::directory_iterator(path("run")))
+    EXPECT_FALSE(is_state_file(entry.path().filename())) << entry.path();
+}
+
 }  // namespace
 }  // namespace shockgas::app
