@@ -109,6 +109,23 @@ void from_seam(const ChainView& view, double L, bool ring, std::size_t seam, F&&
     });
 }
 
+// b in the stable sort's order by x, in place through a WindowedOrder, if the
+// window can order it (checked by a pass first); else b as it was and false.
+// In place: the k-th body handed on is written to b[k] once more than the
+// window's capacity have been read, so only bodies already read are overwritten.
+bool ordered_in_place(Bodies& b) {
+  WindowedOrder trial;
+  for (std::size_t i = 0; i < b.size(); ++i)
+    trial.push(b.x[i], b.v[i], b.m[i], [](double, double, double) {});
+  if (trial.failed()) return false;
+  WindowedOrder order;
+  std::size_t k = 0;
+  auto put = [&](double x, double v, double m) { b.x[k] = x, b.v[k] = v, b.m[k] = m, ++k; };
+  for (std::size_t i = 0; i < b.size(); ++i) order.push(b.x[i], b.v[i], b.m[i], put);
+  order.flush(put);
+  return true;
+}
+
 }  // namespace
 
 Bodies sorted_bodies(const ChainView& s, double L, bool ring) {
@@ -122,7 +139,8 @@ Bodies sorted_bodies(const ChainView& s, double L, bool ring) {
   const auto start = static_cast<std::ptrdiff_t>(seam.seam());
   for (std::vector<double>* a : {&out.x, &out.v, &out.m})
     std::rotate(a->begin(), a->begin() + start, a->end());
-  return seam.sorted() ? out : stable_sorted(out);
+  if (seam.sorted() || ordered_in_place(out)) return out;
+  return stable_sorted(out);
 }
 
 SortedState::SortedState(const ChainView& view, double L, bool ring) : view_(view), L_(L), ring_(ring) {

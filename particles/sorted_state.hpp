@@ -36,7 +36,9 @@ class SeamSearch {
   double first_ = 0, last_ = 0;
 };
 
-// The state as Bodies sorted by x, ring positions wrapped into [0, L).
+// The state as Bodies sorted by x, ring positions wrapped into [0, L); out of
+// order from the seam, ordered in place through the window of SortedState
+// (or, when that cannot order it, through a stable sort of a copy).
 Bodies sorted_bodies(const ChainView& s, double L, bool ring);
 
 // The state as a StateReader: two passes over the view per read (from the

@@ -199,8 +199,8 @@ Bodies read_whole(const StateReader& state) {
   return b;
 }
 
-// Misordered chains read through SortedState (the order window, no copy) in
-// the sorted copy's order, bit for bit.
+// Misordered chains read through SortedState (the order window, no copy), and
+// sorted_bodies (the window in place), in the sorted copy's order, bit for bit.
 TEST(SortedState, MisorderedChainsReadAsTheSortedCopy) {
   Rng rng(27);
   for (bool ring : {true, false})
@@ -209,11 +209,12 @@ TEST(SortedState, MisorderedChainsReadAsTheSortedCopy) {
       Chain c = random_chain(rng, 3000, 0.02, ring);
       misorder(c, ring && trial % 2 == 1, rng);
       expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, ring)), ref_sorted(c, ring));
+      expect_bodies_equal(sorted_bodies(view_of(c), c.L, ring), ref_sorted(c, ring));  // ordered in place
     }
 }
 
-// A body far behind its place (more than the window of 4096): read through a
-// sorted copy, in the same order.
+// A body far behind its place (more than the window of 4096): read and
+// sorted through a stable sort of a copy, in the same order.
 TEST(SortedState, ABodyFarOutOfPlaceReadsAsTheSortedCopy) {
   Rng rng(28);
   for (bool ring : {true, false}) {
@@ -221,6 +222,7 @@ TEST(SortedState, ABodyFarOutOfPlaceReadsAsTheSortedCopy) {
     Chain c = random_chain(rng, 20000, 0.02, ring);
     c.x[15000] = c.x[10] + 1e-9 * c.L;  // behind 14990 bodies
     expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, ring)), ref_sorted(c, ring));
+    expect_bodies_equal(sorted_bodies(view_of(c), c.L, ring), ref_sorted(c, ring));
   }
 }
 
