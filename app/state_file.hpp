@@ -8,7 +8,8 @@
 // The file, DIR/states-<ensemble>.bin, written beside the run's checkpoint
 // (checkpoint.hpp) so that a resumed run finds the states of a realization 0
 // saved before the interruption; written under a temporary name and renamed
-// when complete: a kill leaves no file or a whole one. It is put on the disk
+// when complete: a kill leaves the temporary one (which the next run removes)
+// or a whole file. It is put on the disk
 // (fsync) only when a checkpoint that holds its record is saved
 // (checkpointer.hpp): a run that ends without one does not wait for it.
 // Its contents, numbers in the machine's byte order:
