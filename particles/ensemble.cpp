@@ -74,7 +74,8 @@ RunResult not_started() {
   return r;
 }
 
-std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams& p, SharedProgress& progress) {
+std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams& p,
+                               SharedProgress& progress) {
   const std::size_t R = p.realizations;
   const ThreadSplit split = split_threads(p.threads > 0 ? p.threads : usable_cores(), R);
   ParticleParams each = p;
@@ -95,10 +96,10 @@ std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams&
 }  // namespace
 
 RunResult run_realization(const InitialCondition& ic, std::uint64_t k, const ParticleParams& p,
-                          const ProgressCallback& progress) {
-  if (k == 0) return simulate(ic, k, p, progress);
+                          const ProgressCallback& progress, const RunCheckpoints& checkpoints) {
+  if (k == 0) return simulate(ic, k, p, progress, nullptr, checkpoints);
   const StateSink discard;
-  RunResult r = simulate(ic, k, p, progress, &discard);
+  RunResult r = simulate(ic, k, p, progress, &discard, checkpoints);
   r.spacetime = {};
   return r;
 }

@@ -42,6 +42,7 @@ template <bool Linked>
 class DomainStepper;
 template <bool Linked>
 class DomainSampler;
+struct StateIo;
 
 // Why run_until returned. stall: delta > 0 (or r = 0, 1), where no collapse is
 // possible, but time stopped advancing anyway (see run_until).
@@ -67,11 +68,15 @@ class EventEngine {
   // for (use_global_queue).
   template <class Fill>
   EventEngine(std::size_t n, double L, bool ring, const CollisionRule& rule, Fill&& fill)
-      : L_(L), ring_(ring), rule_(rule), n_(n), alive_(n) {
+      : EventEngine(n, L, ring, rule) {
     load_bodies(fill);
     if constexpr (Linked) link_all();
     slot_.reset(n_);
     for (std::size_t i = 0; i < n_; ++i) slot_[i] = pair_time(i, 0.0);
+  }
+  // Without bodies yet: they come from a saved state (StateIo::restore).
+  EventEngine(std::size_t n, double L, bool ring, const CollisionRule& rule)
+      : L_(L), ring_(ring), rule_(rule), n_(n), alive_(n) {
     const bool collapse_possible = rule_.collapse_possible();
     step_scale_ = collapse_possible ? 1e-12 : 0.0;
     window_scale_ = collapse_possible ? 1e-10 : -1.0;
@@ -154,6 +159,7 @@ class EventEngine {
   friend class WindowPlanner<Linked>;
   friend class DomainStepper<Linked>;
   friend class DomainSampler<Linked>;
+  friend struct StateIo;
   struct Body {
     double x;                                              // position at local time t [length], unrolled
     double v;                                              // velocity [length/time]

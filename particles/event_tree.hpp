@@ -42,6 +42,10 @@
 
 namespace shockgas::particles {
 
+namespace detail {
+struct StateIo;
+}
+
 class EventTree {
  public:
   static constexpr double never = SlotTimes::never;
@@ -149,6 +153,7 @@ class EventTree {
   }
 
  private:
+  friend struct detail::StateIo;  // saves and restores the nodes as they are
   // Event times are >= 0 (or +inf), and for such doubles the order of their bit
   // patterns read as signed integers is the order of the numbers: an integer
   // compare and a conditional move take 2 cycles against 4 for a floating-point

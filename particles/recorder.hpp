@@ -14,6 +14,7 @@
 #include "shockgas/particles/cluster_finder.hpp"
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
+#include "shockgas/particles/run_state.hpp"
 #include "shockgas/particles/state_sink.hpp"
 #include "stretch_observables.hpp"
 
@@ -53,6 +54,10 @@ class Recorder {
   void observe_sample(double t, const SampleMoments& moments, std::size_t clusters, const Counters& c);
   // Moves the records out, with the final state at stop.time and how the run ended.
   RunResult finish(const ChainView& final_state, const RunStop& stop, const Counters& c);
+  // The records so far and which stops are passed (run_state.hpp;
+  // recorder_state.cpp), and back into a recorder made with the same parameters.
+  void save(RunStateWriter& out) const;
+  void restore(RunStateReader& in);
 
  private:
   void sample(double t, const ChainView& s, const Counters& c, std::size_t copies);

@@ -6,11 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/core/progress.hpp"
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
+#include "shockgas/particles/run_state.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -32,12 +34,19 @@ struct RunWatch {
   Clock::time_point start = Clock::now();
   double last_report = 0;
   StopReason reason = StopReason::completed;
+  // With saves (run_state.hpp): at each safe point, when due or asked for by a
+  // checkpoint request, write_state is handed to them.
+  RunSaves* saves = nullptr;
+  std::function<void(RunStateWriter&)> write_state{};
 
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start).count(); }
   bool operator()(double t, std::uint64_t collisions) {
     if (p.max_collisions > 0 && collisions >= p.max_collisions)
       return reason = StopReason::event_limit, false;
-    return tick(t);
+    const bool go_on = tick(t);
+    const bool asked = !go_on && reason == StopReason::interrupted;  // a checkpoint request
+    if (saves && (asked || (go_on && saves->due()))) saves->save(t, work_fraction(t, p.t_end), write_state);
+    return go_on;
   }
   bool tick(double t) {
     if (!interruption()) return false;

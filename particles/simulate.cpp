@@ -7,6 +7,7 @@
 #include "event_engine.hpp"
 #include "hull_model.hpp"
 #include "recorder.hpp"
+#include "run_state_io.hpp"
 #include "run_watch.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
@@ -108,7 +109,8 @@ RunStop stop_of(detail::EngineStop s, double now, double position, StopReason wa
 
 // What the summary says about the order of events.
 template <class Scheduler>
-RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_masses, const ParticleParams& p) {
+RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_masses,
+                        const ParticleParams& p) {
   RunSchedule s;
   if (scheduler) {
     s.threads = scheduler->threads();
@@ -121,19 +123,50 @@ RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_ma
   return s;
 }
 
-// One run of the engine from n bodies written by fill (see EventEngine).
+// The whole state of a run at a safe point (run_state.hpp), and back.
+template <bool Linked>
+void save_run(RunStateWriter& out, const detail::EventEngine<Linked>& engine,
+              const detail::WindowScheduler<Linked>* scheduler, const detail::Recorder& recorder) {
+  detail::StateIo::save(engine, out);
+  detail::put(out, scheduler != nullptr);
+  if (scheduler) detail::StateIo::save(*scheduler, out);
+  recorder.save(out);
+}
+template <bool Linked>
+void restore_run(RunStateReader& in, detail::EventEngine<Linked>& engine,
+                 detail::WindowScheduler<Linked>* scheduler, detail::Recorder& recorder) {
+  detail::StateIo::restore(engine, in);
+  detail::expect(in, scheduler != nullptr, "schedule (windows or the global queue)");
+  if (scheduler) detail::StateIo::restore(*scheduler, in);
+  recorder.restore(in);
+  if (in.remaining() != 0) throw RunError("a saved run state: bytes after its end");
+}
+
+// One run of the engine from n bodies written by fill (see EventEngine), or
+// continued from a saved state (checkpoints->resume).
 template <bool Linked, class Fill>
 RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
-                     const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink) {
+                     const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink,
+                     const RunCheckpoints& checkpoints) {
+  using Engine = detail::EventEngine<Linked>;
   const bool windows = p.schedule != Schedule::global && windows_possible(n, equal_masses, p);
   detail::Recorder recorder(p, n, L, ring, sink);
-  detail::EventEngine<Linked> engine(n, L, ring, rule_of(p), fill);
+  RunStateReader* resume = checkpoints.resume;
+  Engine engine = resume ? Engine(n, L, ring, rule_of(p)) : Engine(n, L, ring, rule_of(p), fill);
   std::optional<detail::WindowScheduler<Linked>> scheduler;
   if (windows)
     scheduler.emplace(engine, threads_of(p));
-  else
+  else if (!resume)
     engine.use_global_queue();
   detail::RunWatch watch{p, progress};
+  if (resume) {
+    restore_run(*resume, engine, scheduler ? &*scheduler : nullptr, recorder);
+    if (progress) progress(detail::work_fraction(engine.now(), p.t_end), engine.now());
+  }
+  watch.saves = checkpoints.saves;
+  watch.write_state = [&](RunStateWriter& out) {
+    save_run(out, engine, scheduler ? &*scheduler : nullptr, recorder);
+  };
   RunStop stop;
   for (double t = recorder.next_stop(); t != detail::Recorder::done; t = recorder.next_stop()) {
     if (scheduler && !scheduler->on_global_queue()) {
@@ -164,10 +197,11 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
 
 template <class Fill>
 RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
-                     const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink) {
+                     const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink,
+                     const RunCheckpoints& checkpoints) {
   if (linked(rule_of(p), equal_masses))
-    return run_events<true>(n, fill, L, ring, equal_masses, p, progress, sink);
-  return run_events<false>(n, fill, L, ring, equal_masses, p, progress, sink);
+    return run_events<true>(n, fill, L, ring, equal_masses, p, progress, sink, checkpoints);
+  return run_events<false>(n, fill, L, ring, equal_masses, p, progress, sink, checkpoints);
 }
 
 void check_params(std::size_t n, const ParticleParams& p) {
@@ -178,13 +212,36 @@ void check_params(std::size_t n, const ParticleParams& p) {
 
 // The engine from a stream of bodies; `bodies` the same bodies whole, if at hand.
 RunResult run_stream(InitialStream& stream, double L, const Bodies* bodies, const ParticleParams& p,
-                     const ProgressCallback& progress, const StateSink* sink) {
+                     const ProgressCallback& progress, const StateSink* sink,
+                     const RunCheckpoints& checkpoints) {
   const bool equal = !bodies || equal_masses(*bodies);
   check_schedule(stream.size(), equal, p);
   auto fill = [&](std::size_t, std::size_t count, double* x, double* v, double* m) {
     stream.next(count, x, v, m);
   };
-  return run_events(stream.size(), fill, L, p.geometry == Geometry::ring, equal, p, progress, sink);
+  return run_events(stream.size(), fill, L, p.geometry == Geometry::ring, equal, p, progress, sink,
+                    checkpoints);
+}
+
+// The hull solver has no safe points inside a run (run_state.hpp).
+void check_no_state(const RunCheckpoints& checkpoints) {
+  if (checkpoints.resume)
+    throw RunError(
+        "a saved run state given to the hull solver, which never saves one (particles.solver = \"hull\")");
+}
+
+RunResult simulate_bodies(const Bodies& initial, double L, const ParticleParams& p,
+                          const ProgressCallback& progress, const StateSink* sink,
+                          const RunCheckpoints& checkpoints) {
+  check_params(initial.size(), p);
+  const bool ring = p.geometry == Geometry::ring;
+  check_bodies(initial, L, ring);
+  if (p.solver == ParticleSolver::hull) {
+    check_no_state(checkpoints);
+    return detail::simulate_hull(initial, L, ring, p, sink);
+  }
+  InitialStream stream(initial);
+  return run_stream(stream, L, &initial, p, progress, sink, checkpoints);
 }
 
 }  // namespace
@@ -200,29 +257,29 @@ void check_schedule(const InitialCondition& initial, const ParticleParams& p) {
 }
 
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& p, const ProgressCallback& progress,
-                   const StateSink* sink) {
-  check_params(initial.size(), p);
-  const bool ring = p.geometry == Geometry::ring;
-  check_bodies(initial, L, ring);
-  if (p.solver == ParticleSolver::hull) return detail::simulate_hull(initial, L, ring, p, sink);
-  InitialStream stream(initial);
-  return run_stream(stream, L, &initial, p, progress, sink);
+                   const StateSink* sink, const RunCheckpoints& checkpoints) {
+  return simulate_bodies(initial, L, p, progress, sink, checkpoints);
 }
 
 RunResult simulate(const InitialCondition& initial, std::uint64_t realization, const ParticleParams& p,
-                   const ProgressCallback& progress, const StateSink* sink) {
+                   const ProgressCallback& progress, const StateSink* sink,
+                   const RunCheckpoints& checkpoints) {
   if (initial.holds_bodies() && (realization == 0 || !initial.depends_on_realization()))
-    return simulate(initial.bodies(), initial.length(), p, progress, sink);
+    return simulate_bodies(initial.bodies(), initial.length(), p, progress, sink, checkpoints);
   check_params(initial.params().N, p);
   InitialStream stream = stream_realization(initial, realization);
-  if (p.solver == ParticleSolver::hull)
+  if (p.solver == ParticleSolver::hull) {
+    check_no_state(checkpoints);
     return detail::simulate_hull(stream, initial.length(), p.geometry == Geometry::ring, p, sink);
-  return run_stream(stream, initial.length(), nullptr, p, progress, sink);
+  }
+  return run_stream(stream, initial.length(), nullptr, p, progress, sink, checkpoints);
 }
 
 RunResult simulate(const InitialParams& initial, std::uint64_t realization, const ParticleParams& p,
-                   const ProgressCallback& progress, const StateSink* sink) {
-  return simulate(InitialCondition(initial, InitialCondition::Keep::stream), realization, p, progress, sink);
+                   const ProgressCallback& progress, const StateSink* sink,
+                   const RunCheckpoints& checkpoints) {
+  return simulate(InitialCondition(initial, InitialCondition::Keep::stream), realization, p, progress, sink,
+                  checkpoints);
 }
 
 }  // namespace shockgas::particles

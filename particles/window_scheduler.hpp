@@ -93,6 +93,7 @@ class WindowScheduler {
   std::size_t threads() const { return team_.size(); }
 
  private:
+  friend struct StateIo;
   std::size_t n() const { return e_.n_; }
 
   // Sub-windows up to t_stop (and the batch's samples on the way); nullopt when
@@ -118,7 +119,9 @@ class WindowScheduler {
       }
       e_.now_ = std::max(e_.now_, end);
       if (!to_stop || t_stop == horizon_) end_plan();
-      if (halt || !watch(e_.now_, e_.count_[3])) return EngineStop::halted;
+      // A safe point: the watch may save the state here, also when it is to halt.
+      const bool go_on = watch(e_.now_, e_.count_[3]);
+      if (halt || !go_on) return EngineStop::halted;
       if (to_stop) return EngineStop::reached;
     }
     return std::nullopt;
@@ -169,7 +172,6 @@ class WindowScheduler {
       spans.push_back({head, last_live()});
     }
     domains_.resize(spans.size());
-    std::vector<std::size_t> offset(spans.size() + 1, 0);
     for (std::size_t d = 0; d < spans.size(); ++d) {
       Domain& dom = domains_[d];
       dom.head = spans[d].first;
@@ -178,6 +180,14 @@ class WindowScheduler {
       dom.now = e_.now_;
       dom.frozen = 0;
       dom.stalled = false;
+    }
+    attach_trees();
+  }
+  // Each domain's tree over its pair slots head .. before(tail), nodes in the arenas.
+  void attach_trees() {
+    std::vector<std::size_t> offset(domains_.size() + 1, 0);
+    for (std::size_t d = 0; d < domains_.size(); ++d) {
+      const Domain& dom = domains_[d];
       const std::size_t blocks = dom.empty ? 0 : EventTree::blocks_of(e_.slot_, dom.head, before(dom.tail));
       offset[d + 1] = offset[d] + EventTree::nodes(blocks);
     }

@@ -17,6 +17,7 @@
 #include "shockgas/core/progress.hpp"
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
+#include "shockgas/particles/run_state.hpp"
 #include "shockgas/particles/state_sink.hpp"
 
 namespace shockgas::particles {
@@ -34,8 +35,12 @@ namespace shockgas::particles {
 // collisions; InterruptMode::checkpoint ends the run at the next safe point,
 // with stop.reason = StopReason::interrupted at stop.time (see RunStop).
 // Throws InputError for bad params or bodies.
+//
+// checkpoints (run_state.hpp): saves of the run at its safe points, and a saved
+// state to continue from instead of starting from `initial`.
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& params,
-                   const ProgressCallback& progress = {}, const StateSink* sink = nullptr);
+                   const ProgressCallback& progress = {}, const StateSink* sink = nullptr,
+                   const RunCheckpoints& checkpoints = {});
 
 // Realization `realization` of a scene's initial condition, as
 // simulate(make_initial_bodies(initial.params(), realization), initial.length(), ...),
@@ -44,11 +49,13 @@ RunResult simulate(const Bodies& initial, double L, const ParticleParams& params
 // expressions) are read from initial.bodies(), the others are drawn in chunks
 // as the engine (or the hull) loads them.
 RunResult simulate(const InitialCondition& initial, std::uint64_t realization, const ParticleParams& params,
-                   const ProgressCallback& progress = {}, const StateSink* sink = nullptr);
+                   const ProgressCallback& progress = {}, const StateSink* sink = nullptr,
+                   const RunCheckpoints& checkpoints = {});
 // The same from the parameters; where the bodies can be drawn in chunks
 // (InitialStream::streamable), no whole copy of them is ever held.
 RunResult simulate(const InitialParams& initial, std::uint64_t realization, const ParticleParams& params,
-                   const ProgressCallback& progress = {}, const StateSink* sink = nullptr);
+                   const ProgressCallback& progress = {}, const StateSink* sink = nullptr,
+                   const RunCheckpoints& checkpoints = {});
 
 // Throws InputError when params.schedule = "windows" cannot be honoured for
 // these bodies (windows need every collision to keep the velocities in their
@@ -73,8 +80,8 @@ struct EnsembleResult {
   // jackknife over realizations needs (compare/realization_errors.hpp).
   std::vector<std::vector<double>> T_by_realization;          // at the samples it reached
   std::vector<std::vector<double>> histogram_by_realization;  // empty rows without a histogram
-  RunResult first;                // realization 0 in full (final state, snapshots, space-time)
-  std::vector<RunStop> stops;     // how each realization ended
+  RunResult first;             // realization 0 in full (final state, snapshots, space-time)
+  std::vector<RunStop> stops;  // how each realization ended
   std::vector<std::uint64_t> collisions_per_realization;
   std::uint64_t total_collisions = 0;
   double wall_seconds = 0;  // wall-clock time of the whole ensemble [s]
@@ -107,7 +114,7 @@ EnsembleResult run_ensemble(const InitialParams& initial, const ParticleParams& 
 // state, snapshots or space-time record (their snapshots and final state go to
 // a sink that discards them).
 RunResult run_realization(const InitialCondition& initial, std::uint64_t k, const ParticleParams& params,
-                          const ProgressCallback& progress = {});
+                          const ProgressCallback& progress = {}, const RunCheckpoints& checkpoints = {});
 
 // How `threads` threads serve R realizations: `runs` realizations at once, each
 // with `per_run` threads for its windows.
