@@ -60,7 +60,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& dir);
 // line that differs); nullptr for none.
 Scene checkpoint_scene(const Checkpoint& checkpoint, const Scene* given);
 
-// Removes the checkpoint of dir, if any (the run's result is written).
+// Removes the checkpoint of dir, if any, with the states of its running
+// realizations (run_state_file.hpp): the run's result is written.
 void remove_checkpoint(const std::filesystem::path& dir);
 
 }  // namespace shockgas::app

@@ -11,6 +11,7 @@
 #include "byte_buffer.hpp"
 #include "checkpoint.hpp"
 #include "merge.hpp"
+#include "run_state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/version.hpp"
 
@@ -160,6 +161,7 @@ Scene checkpoint_scene(const Checkpoint& checkpoint, const Scene* given) {
 void remove_checkpoint(const fs::path& dir) {
   std::error_code ec;
   fs::remove(checkpoint_path(dir), ec);
+  remove_run_states(dir);
 }
 
 }  // namespace shockgas::app

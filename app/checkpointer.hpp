@@ -7,15 +7,27 @@
 // and Interrupted is thrown: the host exits with the signal's status, and
 // `shockgas run --resume DIR` runs only the realizations not saved.
 //
-// A realization is saved whole or not at all: the work of the ones running when
-// the checkpoint is taken is lost (they start again on resume).
+// A realization still running keeps its own state (run_state_file.hpp) beside
+// the checkpoint: saved at a safe point of its run (particles/run_state.hpp)
+// every output.checkpoint_minutes, and on a checkpoint request, where it then
+// stops; a resumed run continues it from there. A signal waits for the running
+// realizations to save (a write under way is always finished) for at most
+// kStateGraceSeconds to reach a safe point; one that does not is stopped, and
+// continues from its last periodic state, or starts again if it has none.
 #include <chrono>
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
 #include <vector>
 
 #include "checkpoint.hpp"
 #include "ensemble_plan.hpp"
+#include "run_state_file.hpp"
 #include "shockgas/core/interrupt.hpp"
+#include "shockgas/particles/run_state.hpp"
 
 namespace shockgas::app {
 
@@ -30,12 +42,47 @@ class CheckpointTaken : public Interrupted {
   std::string note_;
 };
 
+class Checkpointer;
+
+// The saves of one running realization into its state file, and the state it
+// continues from if the checkpoint holds one; made by Checkpointer::saves_for
+// for the realization's run, on the thread that runs it.
+class RealizationSaves : public particles::RunSaves {
+ public:
+  RealizationSaves(Checkpointer& owner, const WorkItem& item);
+  ~RealizationSaves() override;
+  RealizationSaves(const RealizationSaves&) = delete;
+  RealizationSaves& operator=(const RealizationSaves&) = delete;
+
+  // Due every output.checkpoint_minutes of this realization's run (never for 0).
+  bool due() override;
+  void save(double t, double fraction, const std::function<void(particles::RunStateWriter&)>& write) override;
+  // For particles::run_realization: these saves, and the saved state opened
+  // (InputError "--resume" if it is damaged).
+  particles::RunCheckpoints checkpoints();
+
+ private:
+  Checkpointer& owner_;
+  WorkItem item_;
+  std::chrono::steady_clock::time_point last_;
+  std::unique_ptr<particles::RunStateReader> resume_;
+};
+
 class Checkpointer {
  public:
+  // How long a checkpoint request waits for the running realizations to reach
+  // a safe point and save (a scheduler's grace before SIGKILL is usually 30 s).
+  static constexpr double kStateGraceSeconds = 20;
+
   // kept: the records of a checkpoint being resumed (empty for a new run);
   // realizations, variants: a shard's slices as given ("" for a whole run).
+  // states: the realizations running in this process save their states
+  // (false for an MPI job, whose ranks do not); then, resuming, the states in
+  // dir are continued (InputError "--resume" for one of another build or
+  // scene), and for a new run any there are removed.
   Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
-               const std::string& variants, std::vector<RealizationRecord> kept);
+               const std::string& variants, std::vector<RealizationRecord> kept, bool resuming = false,
+               bool states = false);
   ~Checkpointer();  // signals end the process again (partial_outputs.hpp)
   Checkpointer(const Checkpointer&) = delete;
   Checkpointer& operator=(const Checkpointer&) = delete;
@@ -55,16 +102,38 @@ class Checkpointer {
   void poll();
   // Every record, kept and new (the checkpoint is left on disk until the result is written).
   std::vector<RealizationRecord> take_records();
+  // The saves of realization `item` for its run.
+  std::unique_ptr<RealizationSaves> saves_for(const WorkItem& item) {
+    return std::make_unique<RealizationSaves>(*this, item);
+  }
+  // What the resumed checkpoint continues: "" or ", 1 continues from its saved state (... at t = 12.5)".
+  std::string resumed_states() const;
 
  private:
+  friend class RealizationSaves;
+  using Key = std::pair<std::uint64_t, std::uint64_t>;  // ensemble, index
+  void find_states();
   void save();
+  void save_locked(bool fault = true);  // fault: pass fault_point("checkpoint")
+  bool waiting_for_states();
+  std::string states_note() const;
 
   std::filesystem::path dir_;
   Checkpoint checkpoint_;
-  std::size_t kept_ = 0;   // records of the resumed checkpoint
-  std::size_t saved_ = 0;  // records in the file on disk
+  RunStateHeader identity_;  // version, commit and scene of the state files
+  std::size_t kept_ = 0;     // records of the resumed checkpoint
+  std::size_t saved_ = 0;    // records in the file on disk
+  bool on_disk_ = false;     // checkpoint.bin written (or resumed)
   std::chrono::steady_clock::duration interval_;
   std::chrono::steady_clock::time_point last_save_;
+
+  mutable std::mutex mutex_;       // guards what follows and the records (the runs save from their threads)
+  std::map<Key, double> states_;   // the realizations with a state on disk: its time
+  std::map<Key, double> resumed_;  // the states the resumed run continues
+  std::set<Key> running_;          // realizations whose saves live
+  std::set<Key> saved_on_request_;
+  int writing_ = 0;                                             // state writes under way
+  std::optional<std::chrono::steady_clock::time_point> asked_;  // when a checkpoint request was first seen
 };
 
 // Whether a signal now asks for a checkpoint (a Checkpointer lives) rather than

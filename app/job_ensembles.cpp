@@ -65,7 +65,7 @@ ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::siz
   ComputedRecords out;
   out.threads = threads;
   RealizationPool pool(plan, checkpoints ? checkpoints->remaining(*plan) : plan->items(), threads, false,
-                       states_dir);
+                       states_dir, checkpoints);
   auto keep_finished = [&] {
     if (!checkpoints) return;
     checkpoints->add(pool.take_finished());

@@ -116,10 +116,11 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
     if (keeps_checkpoints(options) && speaks_for_job())
       checkpoints = std::make_unique<Checkpointer>(
           where, scene, options.realizations, options.variants,
-          options.resume ? resumable_records(where) : std::vector<RealizationRecord>{});
+          options.resume ? resumable_records(where) : std::vector<RealizationRecord>{}, options.resume, !job);
     if (checkpoints && options.resume)
       std::cerr << "shockgas: resuming " << where.string() << ": " << checkpoints->kept() << " of "
-                << plan->items().size() << " realizations kept from the checkpoint\n";
+                << plan->items().size() << " realizations kept from the checkpoint"
+                << checkpoints->resumed_states() << "\n";
     ProgressBar progress(options.progress && speaks_for_job());
     progress.stage(job ? "particles, " + std::to_string(job->size()) + " ranks" : "particles");
     computed = compute_records(job, plan, threads, progress, checkpoints.get(), states_dir);

@@ -6,6 +6,7 @@
 #include <thread>
 #include <utility>
 
+#include "checkpointer.hpp"
 #include "frames.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/interrupt.hpp"
@@ -16,6 +17,7 @@ namespace shockgas::app {
 
 struct RealizationPool::State {
   std::shared_ptr<const EnsemblePlan> plan;
+  Checkpointer* checkpoints = nullptr;
   std::vector<WorkItem> items;
   std::size_t threads_per_run = 1;
   std::filesystem::path states_dir;
@@ -41,12 +43,19 @@ struct RealizationPool::State {
       fraction[i] = f;
       sim_time = std::max(sim_time, t);
     };
+    // Not started on a pending request: a resumed run starts it.
+    if (interrupt_requested() != InterruptMode::none) throw Interrupted(interrupt_signal());
     std::optional<StateFileWriter> states;
     if (item.index == 0 && !states_dir.empty() && keeps_states_apart(plan->scene(item.ensemble)))
       states.emplace(state_file_path(states_dir, item.ensemble));
+    // Saved while it runs, but not a realization whose states go to a state
+    // file: the snapshots it wrote there before a save are not in the save.
+    std::unique_ptr<RealizationSaves> saves = checkpoints && !states ? checkpoints->saves_for(item) : nullptr;
+    if (const auto at = saves ? saves->resumed_at() : std::nullopt) progress(at->first, at->second);
+    const particles::RunCheckpoints saved = saves ? saves->checkpoints() : particles::RunCheckpoints{};
     RealizationRecord r{item.ensemble, item.index,
                         states ? particles::simulate(ic, 0, p, progress, &states->sink())
-                               : particles::run_realization(ic, item.index, p, progress),
+                               : particles::run_realization(ic, item.index, p, progress, saved),
                         states.has_value()};
     // Stopped at a safe point by a checkpoint request: not finished, so not a
     // record; a resumed run computes it again from its start.
@@ -88,11 +97,12 @@ struct RealizationPool::State {
 
 RealizationPool::RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::vector<WorkItem> items,
                                  std::size_t threads, bool abandon_unfinished,
-                                 std::filesystem::path states_dir)
+                                 std::filesystem::path states_dir, Checkpointer* checkpoints)
     : state_(std::make_shared<State>()), abandon_(abandon_unfinished) {
   State& s = *state_;
   s.plan = std::move(plan);
   s.states_dir = std::move(states_dir);
+  s.checkpoints = checkpoints;
   s.items = std::move(items);
   s.fraction.assign(s.items.size(), 0.0);
   s.active.assign(s.items.size(), false);

@@ -17,6 +17,8 @@
 
 namespace shockgas::app {
 
+class Checkpointer;
+
 class RealizationPool {
  public:
   struct Failure {
@@ -30,9 +32,12 @@ class RealizationPool {
   // (the process is about to end the job) instead of waiting for them.
   // states_dir: where realization 0 of an ensemble whose scene keeps_states_apart
   // writes its states as it runs (state_file.hpp; its record then holds none);
-  // empty: realization 0's record holds them.
+  // empty: realization 0's record holds them. checkpoints: the running
+  // realizations save their states there and continue from the states it
+  // holds (checkpointer.hpp); nullptr for none.
   RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::vector<WorkItem> items, std::size_t threads,
-                  bool abandon_unfinished, std::filesystem::path states_dir = {});
+                  bool abandon_unfinished, std::filesystem::path states_dir = {},
+                  Checkpointer* checkpoints = nullptr);
   // Starts no further realization; waits for the running ones unless abandoned.
   ~RealizationPool();
   RealizationPool(const RealizationPool&) = delete;

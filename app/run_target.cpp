@@ -10,6 +10,7 @@
 
 #include "checkpoint.hpp"
 #include "manifest.hpp"
+#include "run_state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "state_file.hpp"
 
@@ -52,10 +53,10 @@ bool legacy_run_file(const fs::path& relative) {
 }
 
 // What a run keeps in its output directory while it computes: the checkpoint,
-// realization 0's state files.
+// the running realizations' saved states, realization 0's state files.
 bool run_in_progress_file(const fs::path& relative) {
   return relative == checkpoint_path("").filename() ||
-         (!relative.has_parent_path() && is_state_file(relative));
+         (!relative.has_parent_path() && (is_state_file(relative) || is_run_state_file(relative)));
 }
 
 // The first entry under dir that is not a result of a run: not listed in the

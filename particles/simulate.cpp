@@ -109,8 +109,7 @@ RunStop stop_of(detail::EngineStop s, double now, double position, StopReason wa
 
 // What the summary says about the order of events.
 template <class Scheduler>
-RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_masses,
-                        const ParticleParams& p) {
+RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_masses, const ParticleParams& p) {
   RunSchedule s;
   if (scheduler) {
     s.threads = scheduler->threads();

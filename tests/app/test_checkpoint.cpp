@@ -2,8 +2,10 @@
 // realizations' records exactly; a resumed run that keeps them equals the
 // uninterrupted run bit for bit; a damaged checkpoint, one of another build
 // and a scene that is not the checkpoint's are refused with exit 2, the
-// checkpoint left as it was and nothing written. (Stopping a run by SIGKILL and
-// SIGTERM in a child process: tests/checkpoint.cmake.)
+// checkpoint left as it was and nothing written. A realization saved while it
+// ran (run_state_file.hpp) continues from its state, to the uninterrupted
+// run's result; a damaged state or one of another build is refused the same way. (Stopping a run by SIGKILL
+// and SIGTERM in a child process: tests/checkpoint.cmake.)
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -13,9 +15,11 @@
 #include "app/run_comparison.hpp"
 #include "checkpoint.hpp"
 #include "frames.hpp"
+#include "run_state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/simulate.hpp"
 #include "state_file.hpp"
+#include "shockgas/version.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -223,6 +227,86 @@ TEST_F(CheckpointsWithStatesApart, StateFilesThatAKilledRunLeftAreCleared) {
   EXPECT_TRUE(fs::exists(path("run/result.h5")));
   for (const auto& entry : fs::directory_iterator(path("run")))
     EXPECT_FALSE(is_state_file(entry.path().filename())) << entry.path();
+}
+
+// A scene whose realizations pass safe points (sub-windows of the time windows):
+// N >= 1024, bounces with a threshold.
+const char* kLongerScene =
+    "[initial]\nN = 20000\n[particles]\nr = 0.9\ndelta = 1e-2\nt_end = 40\nsamples = 9\nrealizations = 2\n"
+    "snapshots = [5]\nthreads = 1\n[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 200\n[compare]\n"
+    "[output]\nplots = false\n";
+
+// Saves the state of a realization's run once, at its safe point number `at`,
+// into the state file of dir, as a running realization of a run does.
+class SaveOnce : public particles::RunSaves {
+ public:
+  SaveOnce(fs::path dir, RunStateHeader header, int at)
+      : dir_(std::move(dir)), header_(std::move(header)), at_(at) {}
+  bool due() override { return ++points_ == at_; }
+  void save(double t, double fraction,
+            const std::function<void(particles::RunStateWriter&)>& write) override {
+    header_.time = t, header_.fraction = fraction;
+    write_run_state(dir_, header_, write);
+  }
+
+ private:
+  fs::path dir_;
+  RunStateHeader header_;
+  int at_, points_ = 0;
+};
+
+class RunningStates : public Checkpoints {
+ protected:
+  void SetUp() override {
+    Checkpoints::SetUp();
+    std::ofstream(path("longer.toml")) << kLongerScene;
+  }
+  // An interrupted run into `out` of longer.toml: realization 1 finished,
+  // realization 0 saved at its third safe point (version: of the build that saved it).
+  void interrupted_inside(const std::string& out, const std::string& version = kVersion) const {
+    const Scene scene = load_scene(path("longer.toml"));
+    const InitialCondition ic(scene.initial);
+    std::vector<RealizationRecord> finished{
+        {0, 1, particles::run_realization(ic, 1, particle_params(scene))}};
+    write_checkpoint(path(out), make_checkpoint(scene, "", "", std::move(finished)));
+    SaveOnce saves(path(out), {version, kGitCommit, resolved_scene_text(scene), 0, 0, 0, 0}, 3);
+    particles::run_realization(ic, 0, particle_params(scene), {}, {&saves, nullptr});
+  }
+  fs::path state(const std::string& out) const { return run_state_path(path(out), 0, 0); }
+};
+
+TEST_F(RunningStates, ARunningRealizationContinuesFromItsState) {
+  ASSERT_EQ(command({"run", path("longer.toml"), "--out", path("whole"), "-q"}), 0) << said_;
+  interrupted_inside("resumed");
+  ASSERT_TRUE(fs::exists(state("resumed")));
+  ASSERT_EQ(command({"run", "--resume", path("resumed"), "-q"}), 0) << said_;
+  EXPECT_NE(said_.find("1 of 2 realizations kept from the checkpoint, 1 continues from a saved state"),
+            std::string::npos)
+      << said_;
+  EXPECT_FALSE(fs::exists(state("resumed")));  // the result holds it all
+  const auto differences = testing::result_differences(path("whole"), path("resumed"));
+  EXPECT_TRUE(differences.empty()) << differences.front();
+}
+
+TEST_F(RunningStates, ADamagedOrCutStateIsRefusedAndKept) {
+  interrupted_inside("run");
+  const std::string bytes = bytes_of(state("run"));
+  for (const std::string& damaged : {bytes.substr(0, bytes.size() / 2), bytes.substr(0, 6),
+                                     std::string(bytes).replace(bytes.size() / 3, 1, "\x7f")}) {
+    std::ofstream(state("run"), std::ios::binary) << damaged;
+    EXPECT_EQ(command({"run", "--resume", path("run"), "-q"}), 2);
+    EXPECT_NE(said_.find("this one is damaged"), std::string::npos) << said_;
+    EXPECT_EQ(bytes_of(state("run")), damaged);
+    EXPECT_TRUE(fs::exists(checkpoint_path(path("run"))));
+    EXPECT_FALSE(fs::exists(path("run/result.h5")));
+  }
+}
+
+TEST_F(RunningStates, AStateOfAnotherBuildIsRefused) {
+  interrupted_inside("run", "0.0.1-other");
+  EXPECT_EQ(command({"run", "--resume", path("run"), "-q"}), 2);
+  EXPECT_NE(said_.find("it was saved by 0.0.1-other"), std::string::npos) << said_;
+  EXPECT_TRUE(fs::exists(state("run")));
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 # uninterrupted run bit for bit (compare_runs); the resumed run says how many
 # realizations it kept, and removes the checkpoint once the result is written.
 # ARGS... (optional) go to both runs, e.g. `--realizations 1:5` for a shard.
+# SAID (environment, optional): what the resumed run must say; SAID_STOPPED
+# (optional): what the run stopped by SIGTERM must say.
 # usage: stopped_then_resumed.sh SHOCKGAS COMPARE_RUNS SCENE OUT SIGNAL [ARGS...]
 set -eu
 shockgas=$1 compare=$2 scene=$3 out=$4 signal=$5
@@ -38,10 +40,12 @@ if [ "$signal" = TERM ]; then
   [ $status -eq 143 ] || fail "SIGTERM: exit status $status, not 143"
   grep -q "checkpoint written" "$out/stopped.stderr" || fail "SIGTERM: no 'checkpoint written' said"
   ls "$out/stopped" | grep -q partial && fail "temporary files left: $(ls "$out/stopped")"
+  [ -z "${SAID_STOPPED:-}" ] || grep -q "$SAID_STOPPED" "$out/stopped.stderr" || fail "SIGTERM: no '$SAID_STOPPED' said"
 fi
 
 "$shockgas" run --resume "$out/stopped" --no-plots 2> "$out/resumed.stderr" || { cat "$out/resumed.stderr"; exit 1; }
 cat "$out/resumed.stderr"
 grep -q "realizations kept from the checkpoint" "$out/resumed.stderr" || fail "the resumed run kept nothing"
+[ -z "${SAID:-}" ] || grep -q "$SAID" "$out/resumed.stderr" || fail "the resumed run did not say '$SAID'"
 [ ! -f "$out/stopped/checkpoint.bin" ] || fail "the checkpoint is left after the result was written"
 "$compare" "$out/whole" "$out/stopped"
