@@ -47,7 +47,8 @@ ParameterTable<OutputParams> output_table() {
   t.add(&P::animation_t_min, "animation_t_min", "time",
         "first frame after t = 0 when log-spaced; 0 = t_end / 1000", allowed(at_least(0)));
   t.add(&P::checkpoint_minutes, "checkpoint_minutes", "min",
-        "save the finished realizations to checkpoint.bin this often (and on SIGTERM, SIGINT) for "
+        "save the finished realizations to checkpoint.bin, and the running ones' states beside it, this often "
+        "(and on SIGTERM, SIGINT) for "
         "`shockgas run --resume`; 0 = only on those signals",
         allowed(at_least(0)));
   return t;

@@ -34,8 +34,8 @@ struct RunWatch {
   Clock::time_point start = Clock::now();
   double last_report = 0;
   StopReason reason = StopReason::completed;
-  // With saves (run_state.hpp): at each safe point, when due or asked for by a
-  // checkpoint request, write_state is handed to them.
+  // With saves (run_state.hpp): at each safe point when due, write_state is
+  // handed to them; on a checkpoint request too, and then Interrupted is thrown.
   RunSaves* saves = nullptr;
   std::function<void(RunStateWriter&)> write_state{};
 
@@ -44,9 +44,17 @@ struct RunWatch {
     if (p.max_collisions > 0 && collisions >= p.max_collisions)
       return reason = StopReason::event_limit, false;
     const bool go_on = tick(t);
-    const bool asked = !go_on && reason == StopReason::interrupted;  // a checkpoint request
-    if (saves && (asked || (go_on && saves->due()))) saves->save(t, work_fraction(t, p.t_end), write_state);
+    if (saves_on_request()) save_and_stop(t);
+    if (saves && go_on && saves->due()) saves->save(t, work_fraction(t, p.t_end), write_state);
     return go_on;
+  }
+  // Whether a checkpoint request stopped the run (tick() returned false) and it saves.
+  bool saves_on_request() const { return saves && reason == StopReason::interrupted; }
+  // Saves the run as it is now (at time t) and throws Interrupted: its result
+  // would be a partial one; the save is what goes on.
+  [[noreturn]] void save_and_stop(double t) {
+    saves->save(t, work_fraction(t, p.t_end), write_state);
+    throw Interrupted(interrupt_signal());
   }
   bool tick(double t) {
     if (!interruption()) return false;

@@ -40,6 +40,10 @@
 //
 // If no cut can open, or 8 plans in a row hold fewer than N/64 collisions, the
 // run continues on the global queue (one thread).
+//
+// Saves (run_state.hpp) are taken where the watch is asked, after a sub-window;
+// on a checkpoint request a sub-window without samples is also cut short and
+// saved as it is (a plan at N = 10^8 runs for tens of seconds).
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -109,6 +113,10 @@ class WindowScheduler {
       const double from = e_.now_;
       if (batch) batch->open(end, to_stop, domains_.size(), team_.size());
       run_domains(end, to_stop, watch, halt, batch);
+      // Cut short: the domains are independent until the sub-window's end, so
+      // each one's progress (its tree, time, counts and energy not yet settled)
+      // is a state to go on from; a resumed run runs the same sub-window on.
+      if (cut_short_.exchange(false)) watch.save_and_stop(e_.now_);
       if (batch) deliver_samples(*batch);
       settle();
       if (end > from) last_rate_ = static_cast<double>(e_.count_[3] - before) / (end - from);
@@ -332,7 +340,14 @@ class WindowScheduler {
         prefetch.advance(lines);
         if (round % (Engine::check_every / 2) == 0) [[unlikely]] {
           throw_if_aborted();  // every member: an abort leaves the sub-window unfinished
-          if (member == 0 && !halt && !watch.tick(end)) halt = true;
+          if (member == 0 && !halt && !watch.tick(end)) {
+            halt = true;
+            // A checkpoint request to a run that saves, in a sub-window without
+            // samples: every member stops where it is (run_windows saves).
+            if (samples == 0 && watch.saves_on_request()) cut_short_.store(true, std::memory_order_relaxed);
+          }
+          if (cut_short_.load(std::memory_order_relaxed)) [[unlikely]]
+            break;
         }
       }
     });
@@ -392,6 +407,7 @@ class WindowScheduler {
   int thin_ = 0;         // consecutive thin plans
   bool global_ = false;  // continued on the global queue
   std::string why_global_;
+  std::atomic<bool> cut_short_{false};  // the members stop inside the sub-window (run_domains)
 };
 
 }  // namespace shockgas::particles::detail

@@ -201,24 +201,29 @@ class AskAt : public SaveAt {
   }
 };
 
-// A checkpoint request with saves: the run saves at its next safe point and
-// stops there; resumed, it ends as the uninterrupted run.
+// A checkpoint request with saves: the run saves at its next safe point, or
+// inside the sub-window it is in, and throws Interrupted; resumed, it ends as
+// the uninterrupted run. With one sample (at t_end) the sub-windows are whole
+// plans; those of the bounces at N = 2e4 (~10^5 collisions) are cut short at
+// the first look at the watch inside them (every 2^13 rounds of a member).
 TEST(RunState, CheckpointRequestSavesThenStops) {
-  for (const Case& c : {kBounces, kBouncesGlobal}) {
-    clear_interrupt();
-    const InitialParams ip = gas(20000, 13);
-    const ParticleParams p = params(c, 2, false);
-    const RunResult straight = simulate(ip, 0, p);
-    AskAt saves(3);
-    const RunResult stopped = simulate(ip, 0, p, {}, nullptr, {&saves, nullptr});
-    clear_interrupt();
-    ASSERT_EQ(stopped.stop.reason, StopReason::interrupted) << c.name;
-    ASSERT_FALSE(saves.state.empty()) << c.name;
-    EXPECT_EQ(saves.points_, 3) << c.name << ": saved and stopped at the next safe point";
-    EXPECT_EQ(saves.time, stopped.stop.time) << c.name;
-    MemoryReader in(saves.state);
-    expect_same(simulate(ip, 0, p, {}, nullptr, {nullptr, &in}), straight);
-  }
+  for (const Case& c : {kBounces, kBouncesGlobal, kSticky})
+    for (std::size_t samples : {std::size_t{25}, std::size_t{1}}) {
+      SCOPED_TRACE(std::string(c.name) + ", samples " + std::to_string(samples));
+      clear_interrupt();
+      const InitialParams ip = gas(c.r == 0 ? 200000 : 20000, 13);  // merges: fewer collisions
+      ParticleParams p = params(c, 2, false);
+      p.samples = samples;
+      const RunResult straight = simulate(ip, 0, p);
+      const int at = 3;
+      AskAt saves(at);
+      EXPECT_THROW(simulate(ip, 0, p, {}, nullptr, {&saves, nullptr}), Interrupted);
+      clear_interrupt();
+      ASSERT_FALSE(saves.state.empty());
+      EXPECT_EQ(saves.points_, at) << "saved and stopped before any further safe point was asked";
+      MemoryReader in(saves.state);
+      expect_same(simulate(ip, 0, p, {}, nullptr, {nullptr, &in}), straight);
+    }
 }
 
 // A state resumed in another run, or cut short, is refused (RunError), never run.

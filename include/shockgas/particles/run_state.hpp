@@ -13,7 +13,10 @@
 // (tests/particles/test_run_state.cpp), whatever the number of threads.
 //
 // A checkpoint request (InterruptMode::checkpoint) with saves: the run saves at
-// its next safe point, then stops there (StopReason::interrupted).
+// its next safe point, or inside a sub-window of the time windows that holds no
+// sample time (each domain where it is: they are independent until the
+// sub-window ends, and the resumed run runs that sub-window on), then throws
+// Interrupted: the save is what goes on, not a result.
 //
 // The bytes are in the machine's order and layout: a state is resumed by the
 // same build with the same initial condition and parameters; the caller checks
