@@ -67,7 +67,7 @@ void Checkpointer::find_states() {
     if (finished)
       std::filesystem::remove(file, ec);
     else
-      states_[{h.ensemble, h.index}] = h.time, resumed_[{h.ensemble, h.index}] = h.time;
+      states_[{h.ensemble, h.index}] = h.time, resumed_[{h.ensemble, h.index}] = {h.fraction, h.time};
   }
 }
 
@@ -77,7 +77,8 @@ std::string Checkpointer::resumed_states() const {
   std::string text = ", " + std::to_string(resumed_.size()) +
                      (resumed_.size() == 1 ? " continues" : " continue") + " from a saved state (";
   std::size_t shown = 0;
-  for (const auto& [key, t] : resumed_) {
+  for (const auto& [key, at] : resumed_) {
+    const double t = at.second;
     if (shown++ == 3) {
       text += ", ...";
       break;
@@ -206,6 +207,13 @@ RealizationSaves::~RealizationSaves() {
 
 bool RealizationSaves::due() {
   return owner_.interval_ > Clock::duration::zero() && Clock::now() - last_ >= owner_.interval_;
+}
+
+std::optional<std::pair<double, double>> RealizationSaves::resumed_at() const {
+  std::lock_guard lock(owner_.mutex_);
+  const auto it = owner_.resumed_.find({item_.ensemble, item_.index});
+  if (it == owner_.resumed_.end()) return std::nullopt;
+  return it->second;
 }
 
 particles::RunCheckpoints RealizationSaves::checkpoints() {

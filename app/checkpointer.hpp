@@ -60,6 +60,9 @@ class RealizationSaves : public particles::RunSaves {
   // For particles::run_realization: these saves, and the saved state opened
   // (InputError "--resume" if it is damaged).
   particles::RunCheckpoints checkpoints();
+  // Where the saved state it continues from was: share of the work done and
+  // time, for the progress bar while the state is read.
+  std::optional<std::pair<double, double>> resumed_at() const;
 
  private:
   Checkpointer& owner_;
@@ -127,10 +130,10 @@ class Checkpointer {
   std::chrono::steady_clock::duration interval_;
   std::chrono::steady_clock::time_point last_save_;
 
-  mutable std::mutex mutex_;       // guards what follows and the records (the runs save from their threads)
-  std::map<Key, double> states_;   // the realizations with a state on disk: its time
-  std::map<Key, double> resumed_;  // the states the resumed run continues
-  std::set<Key> running_;          // realizations whose saves live
+  mutable std::mutex mutex_;      // guards what follows and the records (the runs save from their threads)
+  std::map<Key, double> states_;  // the realizations with a state on disk: its time
+  std::map<Key, std::pair<double, double>> resumed_;  // the states the resumed run continues: fraction, t
+  std::set<Key> running_;                             // realizations whose saves live
   std::set<Key> saved_on_request_;
   int writing_ = 0;                                             // state writes under way
   std::optional<std::chrono::steady_clock::time_point> asked_;  // when a checkpoint request was first seen
