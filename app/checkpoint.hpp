@@ -40,6 +40,11 @@ struct Checkpoint {
 // DIR/checkpoint.bin
 std::filesystem::path checkpoint_path(const std::filesystem::path& dir);
 
+// Whether a name in a run directory is a checkpoint's: checkpoint.bin, a
+// running realization's state (run_state_file.hpp), or a temporary file of a
+// write of either that was killed.
+bool is_checkpoint_file(const std::filesystem::path& name);
+
 // The checkpoint of `scene` (this build) with these records.
 Checkpoint make_checkpoint(const Scene& scene, const std::string& realizations, const std::string& variants,
                            std::vector<RealizationRecord> records);

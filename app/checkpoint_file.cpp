@@ -104,6 +104,13 @@ void sync_directory(const fs::path& dir) {
 
 fs::path checkpoint_path(const fs::path& dir) { return dir / "checkpoint.bin"; }
 
+bool is_checkpoint_file(const fs::path& name) {
+  const std::string text = name.string();
+  return text == "checkpoint.bin" || text.rfind("checkpoint.bin.partial-", 0) == 0 ||
+         is_run_state_file(name) ||
+         (text.rfind("checkpoint.run-", 0) == 0 && text.find(".bin.partial-") != std::string::npos);
+}
+
 Checkpoint make_checkpoint(const Scene& scene, const std::string& realizations, const std::string& variants,
                            std::vector<RealizationRecord> records) {
   return {kVersion,     kGitCommit,      scene.path,

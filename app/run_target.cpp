@@ -10,7 +10,6 @@
 
 #include "checkpoint.hpp"
 #include "manifest.hpp"
-#include "run_state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "state_file.hpp"
 
@@ -52,11 +51,11 @@ bool legacy_run_file(const fs::path& relative) {
   return false;
 }
 
-// What a run keeps in its output directory while it computes: the checkpoint,
-// the running realizations' saved states, realization 0's state files.
+// What a run keeps in its output directory while it computes: the checkpoint
+// and the running realizations' saved states (with the temporary files of
+// killed writes), realization 0's state files.
 bool run_in_progress_file(const fs::path& relative) {
-  return relative == checkpoint_path("").filename() ||
-         (!relative.has_parent_path() && (is_state_file(relative) || is_run_state_file(relative)));
+  return !relative.has_parent_path() && (is_checkpoint_file(relative) || is_state_file(relative));
 }
 
 // The first entry under dir that is not a result of a run: not listed in the

@@ -288,6 +288,16 @@ TEST_F(RunningStates, ARunningRealizationContinuesFromItsState) {
   EXPECT_TRUE(differences.empty()) << differences.front();
 }
 
+// A write of a state killed half-way leaves its temporary file: the resumed run
+// ignores it, and the result replaces the directory, temporary file included.
+TEST_F(RunningStates, ATemporaryFileOfAKilledWriteIsLeftBehind) {
+  interrupted_inside("resumed");
+  std::ofstream(state("resumed").string() + ".partial-99999", std::ios::binary) << "half a state";
+  ASSERT_EQ(command({"run", "--resume", path("resumed"), "-q"}), 0) << said_;
+  for (const auto& entry : fs::directory_iterator(path("resumed")))
+    EXPECT_FALSE(is_checkpoint_file(entry.path().filename())) << entry.path();
+}
+
 TEST_F(RunningStates, ADamagedOrCutStateIsRefusedAndKept) {
   interrupted_inside("run");
   const std::string bytes = bytes_of(state("run"));
