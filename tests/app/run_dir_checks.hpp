@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "checkpoint.hpp"
 #include "manifest.hpp"
 #include "process_temp_path.hpp"
 #include "sha256.hpp"
@@ -37,8 +38,9 @@ inline std::string whole_run(const fs::path& dir, const std::string& scene) {
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     if (entry.is_regular_file()) {
       const std::string rel = fs::relative(entry.path(), dir).generic_string();
-      // checkpoint.bin: an interrupted run's checkpoint beside the results it leaves (checkpoint.hpp).
-      if (rel != kManifestFile && rel != "checkpoint.bin" && !m->find(rel)) return rel + " is not in the manifest";
+      // checkpoint.bin and the running realizations' states: an interrupted run's
+      // checkpoint beside the results it leaves (checkpoint.hpp).
+      if (rel != kManifestFile && !is_checkpoint_file(rel) && !m->find(rel)) return rel + " is not in the manifest";
     }
   return "";
 }
