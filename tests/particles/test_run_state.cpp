@@ -174,6 +174,29 @@ TEST(RunState, ResumedOnTheGlobalQueueIsTheUninterruptedRun) {
         expect_resumed_run_is_the_run(c, seed, share, false, c.r == 0 ? 200000 : 20000);
 }
 
+// A run that leaves the windows for the global queue (thin plans: an open
+// line spreads out), saved before, around and after the switch.
+TEST(RunState, ResumedAcrossTheSwitchToTheGlobalQueueIsTheUninterruptedRun) {
+  Case line = kBouncesLine;
+  line.name = "line, r = 0.9, to t = 1e4";
+  const InitialParams ip = gas(4096, 3);
+  ParticleParams p = params(line, 2, false);
+  p.t_end = 1e4;
+  const RunResult straight = simulate(ip, 0, p);
+  ASSERT_EQ(straight.schedule.order, "windows, then global") << straight.schedule.why_global;
+  SaveAt count(0);
+  simulate(ip, 0, p, {}, nullptr, {&count, nullptr});
+  ParticleParams one = p;
+  one.threads = 1;
+  for (double share : {0.2, 0.5, 0.8, 0.95}) {
+    SaveAt saves(std::clamp(static_cast<int>(share * count.points_), 1, count.points_ - 1));
+    simulate(ip, 0, p, {}, nullptr, {&saves, nullptr});
+    ASSERT_FALSE(saves.state.empty());
+    MemoryReader in(saves.state);
+    expect_same(simulate(ip, 0, one, {}, nullptr, {nullptr, &in}), straight);
+  }
+}
+
 // N = 2000 with a space-time record; windows need N >= 1024.
 TEST(RunState, ResumedWithASpaceTimeRecordIsTheUninterruptedRun) {
   for (const Case& c : {kBounces, kSticky}) {
