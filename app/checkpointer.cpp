@@ -67,7 +67,8 @@ void Checkpointer::find_states() {
     if (finished)
       std::filesystem::remove(file, ec);
     else
-      states_[{h.ensemble, h.index}] = h.time, resumed_[{h.ensemble, h.index}] = {h.fraction, h.time};
+      states_[{h.ensemble, h.index}] = h.time, resumed_[{h.ensemble, h.index}] = {h.fraction, h.time},
+                           resumed_sinks_[{h.ensemble, h.index}] = h.sink;
   }
 }
 
@@ -216,6 +217,13 @@ std::optional<std::pair<double, double>> RealizationSaves::resumed_at() const {
   return it->second;
 }
 
+std::optional<std::string> RealizationSaves::resumed_sink() const {
+  std::lock_guard lock(owner_.mutex_);
+  const auto it = owner_.resumed_sinks_.find({item_.ensemble, item_.index});
+  if (it == owner_.resumed_sinks_.end() || it->second.empty()) return std::nullopt;
+  return it->second;
+}
+
 particles::RunCheckpoints RealizationSaves::checkpoints() {
   bool has_state;
   {
@@ -233,6 +241,7 @@ void RealizationSaves::save(double t, double fraction,
   const Checkpointer::Key key{item_.ensemble, item_.index};
   RunStateHeader header = owner_.identity_;
   header.ensemble = item_.ensemble, header.index = item_.index, header.time = t, header.fraction = fraction;
+  if (sink_) header.sink = sink_();  // synced before the state that refers to it
   {
     std::lock_guard lock(owner_.mutex_);
     if (!owner_.on_disk_) owner_.save_locked(false);  // the checkpoint is complete with the state

@@ -63,12 +63,18 @@ class RealizationSaves : public particles::RunSaves {
   // Where the saved state it continues from was: share of the work done and
   // time, for the progress bar while the state is read.
   std::optional<std::pair<double, double>> resumed_at() const;
+  // A realization whose states go to a states file (state_file.hpp): sink()
+  // syncs it and says where it stands, for each save; resumed_sink() is what
+  // it said at the save resumed, if any.
+  void attach_sink(std::function<std::string()> sink) { sink_ = std::move(sink); }
+  std::optional<std::string> resumed_sink() const;
 
  private:
   Checkpointer& owner_;
   WorkItem item_;
   std::chrono::steady_clock::time_point last_;
   std::unique_ptr<particles::RunStateReader> resume_;
+  std::function<std::string()> sink_;
 };
 
 class Checkpointer {
@@ -133,6 +139,7 @@ class Checkpointer {
   mutable std::mutex mutex_;      // guards what follows and the records (the runs save from their threads)
   std::map<Key, double> states_;  // the realizations with a state on disk: its time
   std::map<Key, std::pair<double, double>> resumed_;  // the states the resumed run continues: fraction, t
+  std::map<Key, std::string> resumed_sinks_;          // and their states files' saves
   std::set<Key> running_;                             // realizations whose saves live
   std::set<Key> saved_on_request_;
   int writing_ = 0;                                             // state writes under way

@@ -45,16 +45,22 @@ struct RealizationPool::State {
     };
     // Not started on a pending request: a resumed run starts it.
     if (interrupt_requested() != InterruptMode::none) throw Interrupted(interrupt_signal());
-    std::optional<StateFileWriter> states;
-    if (item.index == 0 && !states_dir.empty() && keeps_states_apart(plan->scene(item.ensemble)))
-      states.emplace(state_file_path(states_dir, item.ensemble));
-    // Saved while it runs, but not a realization whose states go to a state
-    // file: the snapshots it wrote there before a save are not in the save.
-    std::unique_ptr<RealizationSaves> saves = checkpoints && !states ? checkpoints->saves_for(item) : nullptr;
+    std::unique_ptr<RealizationSaves> saves = checkpoints ? checkpoints->saves_for(item) : nullptr;
     if (const auto at = saves ? saves->resumed_at() : std::nullopt) progress(at->first, at->second);
+    // Its states file, from where its save left it if resumed (the snapshots
+    // taken before the save are there, not in the save).
+    std::optional<StateFileWriter> states;
+    if (item.index == 0 && !states_dir.empty() && keeps_states_apart(plan->scene(item.ensemble))) {
+      const std::optional<std::string> resumed = saves ? saves->resumed_sink() : std::nullopt;
+      if (resumed)
+        states.emplace(state_file_path(states_dir, item.ensemble), *resumed);
+      else
+        states.emplace(state_file_path(states_dir, item.ensemble));
+      if (saves) saves->attach_sink([&states] { return states->saved(); });
+    }
     const particles::RunCheckpoints saved = saves ? saves->checkpoints() : particles::RunCheckpoints{};
     RealizationRecord r{item.ensemble, item.index,
-                        states ? particles::simulate(ic, 0, p, progress, &states->sink())
+                        states ? particles::simulate(ic, 0, p, progress, &states->sink(), saved)
                                : particles::run_realization(ic, item.index, p, progress, saved),
                         states.has_value()};
     // Stopped at a safe point by a checkpoint request: not finished, so not a

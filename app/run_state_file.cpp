@@ -166,6 +166,7 @@ RunStateHeader read_header(FileIn& in, const fs::path& file) {
   h.version = in.text(), h.commit = in.text(), h.resolved = in.text();
   h.ensemble = in.u64(), h.index = in.u64();
   h.time = in.number(), h.fraction = in.number();
+  h.sink = in.text();
   return h;
 }
 
@@ -220,6 +221,9 @@ void write_run_state(const fs::path& dir, const RunStateHeader& header,
     head.u64(header.ensemble), head.u64(header.index);
     out.write(head.bytes().data(), head.bytes().size());
     out.write(&header.time, sizeof header.time), out.write(&header.fraction, sizeof header.fraction);
+    ByteWriter sink;
+    sink.text(header.sink);
+    out.write(sink.bytes().data(), sink.bytes().size());
     write(out);
     const std::uint64_t sum = out.hash();
     out.write(&sum, sizeof sum);

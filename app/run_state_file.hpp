@@ -9,7 +9,8 @@
 //   "shockgas run state\n", the format number (u64),
 //   texts: shockgas version, git commit, the resolved scene text,
 //   ensemble, index (u64), the simulated time reached and the share of the
-//   work done (doubles), then the state's bytes,
+//   work done (doubles), the save of its states file (text, "" for none:
+//   state_file.hpp), then the state's bytes,
 //   a checksum of every byte before it (FNV-1a over 64-bit words, stream_hash).
 // Written as the engine hands it over, from its own arrays (no copy of the
 // state is made), and read back the same way.
@@ -32,6 +33,7 @@ struct RunStateHeader {
   std::uint64_t ensemble = 0, index = 0;
   double time = 0;      // simulated time reached
   double fraction = 0;  // share of the realization's work done
+  std::string sink;     // where its states file stood (StateFileWriter::saved), or ""
 };
 
 // DIR/checkpoint.run-E-K.bin

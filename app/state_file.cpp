@@ -53,11 +53,51 @@ StateFileWriter::StateFileWriter(fs::path path)
   sink_.final_state = [this](double t, const particles::StateReader& s) { append(kFinalState, t, s); };
 }
 
+StateFileWriter::StateFileWriter(fs::path path, const std::string& saved)
+    : path_(std::move(path)), temporary_(path_.string() + ".tmp"), kept_(true) {
+  const auto bad = [&](const std::string& why) {
+    return InputError("--resume", to_text(temporary_.string()),
+                      "the states file of the saved run, as it was at the save (" + why + ")");
+  };
+  std::vector<std::uint64_t> words(saved.size() / 8);
+  std::memcpy(words.data(), saved.data(), words.size() * 8);
+  if (words.size() < 2 || saved.size() % 8 != 0 || words.size() != 2 + words[1] * 4)
+    throw bad("a malformed save");
+  end_ = words[0];
+  for (std::size_t e = 0; e < words[1]; ++e) {
+    Entry entry{words[2 + 4 * e], 0, words[4 + 4 * e], words[5 + 4 * e]};
+    std::memcpy(&entry.t, &words[3 + 4 * e], sizeof entry.t);
+    index_.push_back(entry);
+  }
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd_ < 0) throw bad(reason());
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0 || static_cast<std::uint64_t>(st.st_size) < end_ ||
+      ::ftruncate(fd_, static_cast<off_t>(end_)) != 0) {
+    ::close(std::exchange(fd_, -1));
+    throw bad("shorter than the save says, or not writable");
+  }
+  sink_.snapshot = [this](std::size_t k, double t, const particles::StateReader& s) { append(k, t, s); };
+  sink_.final_state = [this](double t, const particles::StateReader& s) { append(kFinalState, t, s); };
+}
+
 StateFileWriter::~StateFileWriter() {
   if (fd_ < 0) return;  // committed
   ::close(fd_);
   std::error_code ec;
-  fs::remove(temporary_, ec);
+  if (!kept_) fs::remove(temporary_, ec);
+}
+
+std::string StateFileWriter::saved() {
+  if (::fsync(fd_) != 0) throw RunError(write_failure(temporary_, reason()));
+  kept_ = true;
+  std::vector<std::uint64_t> words{end_, index_.size()};
+  for (const Entry& e : index_) {
+    std::uint64_t t = 0;
+    std::memcpy(&t, &e.t, sizeof t);
+    words.insert(words.end(), {e.k, t, e.n, e.offset});
+  }
+  return std::string(reinterpret_cast<const char*>(words.data()), words.size() * 8);
 }
 
 void StateFileWriter::write_at(std::uint64_t offset, const void* data, std::size_t bytes) {

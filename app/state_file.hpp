@@ -46,6 +46,11 @@ void sync_state_file(const std::filesystem::path& path);
 class StateFileWriter {
  public:
   explicit StateFileWriter(std::filesystem::path path);
+  // Goes on with the temporary file of a run saved while it ran
+  // (run_state_file.hpp): the states `saved` (what saved() returned then)
+  // lists are kept, anything written after them dropped. InputError (key
+  // "--resume") naming the file when it is missing or shorter than they say.
+  StateFileWriter(std::filesystem::path path, const std::string& saved);
   ~StateFileWriter();
   StateFileWriter(const StateFileWriter&) = delete;
   StateFileWriter& operator=(const StateFileWriter&) = delete;
@@ -55,6 +60,10 @@ class StateFileWriter {
   const particles::StateSink& sink() const { return sink_; }
   // The index written, the file under its own name (not yet synced).
   void commit();
+  // For a save of the run that writes here: the states written so far, synced
+  // (the save refers to them), as bytes for the constructor above; from now on
+  // the temporary file outlives this writer (a resumed run goes on with it).
+  std::string saved();
 
  private:
   struct Entry {
@@ -70,6 +79,7 @@ class StateFileWriter {
   std::uint64_t end_ = 0;  // bytes written
   std::vector<Entry> index_;
   particles::StateSink sink_;
+  bool kept_ = false;  // a save refers to the temporary file
 };
 
 // The states of a committed file, read in chunks (each read from the disk,

@@ -7,7 +7,8 @@
 # shard (realizations 1:5) stopped by either signal, resumed, and compared with
 # the same shard run uninterrupted.
 # One realization stopped inside its run the same ways (single.toml: its first
-# checkpoint is its first saved state) continues from its state.
+# checkpoint is its first saved state) continues from its state; also when its
+# snapshots go to a states file (single_apart.toml).
 # The checkpoint file's refusals are tested in app/test_checkpoint.cpp.
 set(checkpoint_dir ${CMAKE_CURRENT_SOURCE_DIR}/checkpoint)
 foreach(signal KILL TERM)
@@ -30,6 +31,13 @@ add_test(NAME checkpoint.sweep_resumed_after_KILL
                  ${checkpoint_dir}/sweep.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/sweep KILL)
 set_tests_properties(checkpoint.sweep_resumed_after_KILL PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
 foreach(signal KILL TERM)
+  add_test(NAME checkpoint.single_apart_resumed_after_${signal}
+           COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
+                   ${checkpoint_dir}/single_apart.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/single-apart-${signal}
+                   ${signal})
+  set_tests_properties(checkpoint.single_apart_resumed_after_${signal}
+                       PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2
+                       ENVIRONMENT "SAID=1 continues from a saved state;SAID_STOPPED=realization 0 saved at t =")
   add_test(NAME checkpoint.single_resumed_after_${signal}
            COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
                    ${checkpoint_dir}/single.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/single-${signal} ${signal})

@@ -269,7 +269,7 @@ class RunningStates : public Checkpoints {
     std::vector<RealizationRecord> finished{
         {0, 1, particles::run_realization(ic, 1, particle_params(scene))}};
     write_checkpoint(path(out), make_checkpoint(scene, "", "", std::move(finished)));
-    SaveOnce saves(path(out), {version, kGitCommit, resolved_scene_text(scene), 0, 0, 0, 0}, 3);
+    SaveOnce saves(path(out), {version, kGitCommit, resolved_scene_text(scene), 0, 0, 0, 0, ""}, 3);
     particles::run_realization(ic, 0, particle_params(scene), {}, {&saves, nullptr});
   }
   fs::path state(const std::string& out) const { return run_state_path(path(out), 0, 0); }
