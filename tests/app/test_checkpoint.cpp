@@ -18,8 +18,8 @@
 #include "run_state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/simulate.hpp"
-#include "state_file.hpp"
 #include "shockgas/version.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app {
 namespace {
