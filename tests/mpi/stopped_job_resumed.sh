@@ -52,10 +52,12 @@ done
 if [ "$signal" = KILL ]; then
   kill -s KILL $launcher $(pgrep -P $launcher)  # the whole job at once, as a lost node or `scancel -s KILL`
 else
-  # mpirun continues the ranks at once and forwards the signal a second later
-  # (the scene lasts longer than that); when the signal went to rank 0 itself it
-  # is pending while rank 0 is stopped.
+  # The launcher and rank 0 itself, as a scheduler signals every task: the
+  # signal is pending while rank 0 is stopped and acts as it continues.
+  # (mpirun alone would continue the ranks at once and forward the signal only
+  # a second later, by when a loaded machine may have let the job finish.)
   kill -s "$signal" $launcher
+  [ "$root" = "$launcher" ] || kill -s "$signal" $root
   kill -s CONT $root
 fi
 status=0
