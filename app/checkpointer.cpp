@@ -29,21 +29,23 @@ bool signals_take_checkpoints() noexcept {
 
 Checkpointer::Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
                            const std::string& variants, std::vector<RealizationRecord> kept, bool resuming,
-                           bool states)
+                           bool states, bool job_rank)
     : dir_(std::move(dir)),
       checkpoint_(make_checkpoint(scene, realizations, variants, std::move(kept))),
       kept_(checkpoint_.records.size()),
       saved_(kept_),
-      on_disk_(resuming),
+      on_disk_(resuming || job_rank),
+      job_rank_(job_rank),
+      resuming_(resuming),
       interval_(std::chrono::duration_cast<Clock::duration>(
           std::chrono::duration<double>(60.0 * scene.output.checkpoint_minutes))),
       last_save_(Clock::now()) {
   identity_.version = checkpoint_.version;
   identity_.commit = checkpoint_.commit;
   identity_.resolved = checkpoint_.resolved;
-  if (states && resuming)
+  if (states && resuming && !job_rank)  // a job's rank 0 has checked and cleared the directory
     find_states();
-  else if (states)
+  else if (states && !job_rank)
     remove_run_states(dir_);  // of an earlier run in this directory
   g_signals_take_checkpoints = true;
 }
@@ -70,6 +72,37 @@ void Checkpointer::find_states() {
       states_[{h.ensemble, h.index}] = h.time, resumed_[{h.ensemble, h.index}] = {h.fraction, h.time},
                            resumed_sinks_[{h.ensemble, h.index}] = h.sink;
   }
+}
+
+void Checkpointer::find_state(const Key& key) {
+  const std::optional<RunStateHeader> h = read_run_state_header(run_state_path(dir_, key.first, key.second));
+  if (!h) return;
+  states_[key] = h->time, resumed_[key] = {h->fraction, h->time}, resumed_sinks_[key] = h->sink;
+}
+
+void Checkpointer::write_if_missing() {
+  std::lock_guard lock(mutex_);
+  if (!on_disk_) save_locked(false);
+}
+
+void Checkpointer::save_gathered() {
+  std::lock_guard lock(mutex_);
+  if (checkpoint_.records.size() > saved_) save_locked(false);
+}
+
+void Checkpointer::finished(std::uint64_t ensemble, std::uint64_t index) {
+  std::lock_guard lock(mutex_);
+  states_.erase({ensemble, index});
+}
+
+std::string Checkpointer::states_said() const {
+  std::lock_guard lock(mutex_);
+  return states_note();
+}
+
+void Checkpointer::add_others_said(const std::string& text) {
+  std::lock_guard lock(mutex_);
+  others_said_ += text;
 }
 
 std::string Checkpointer::resumed_states() const {
@@ -140,6 +173,11 @@ void Checkpointer::poll() {
 // On a checkpoint request: whether the running realizations are still to
 // reach a safe point and save there (for at most kStateGraceSeconds), or
 // still writing.
+void Checkpointer::request_seen() {
+  std::lock_guard lock(mutex_);
+  if (!asked_) asked_ = Clock::now();
+}
+
 bool Checkpointer::waiting_for_states() {
   std::lock_guard lock(mutex_);
   if (!asked_) asked_ = Clock::now();
@@ -165,7 +203,7 @@ std::string Checkpointer::states_note() const {
     if (!states_.count(key))
       text += "; realization " + std::to_string(key.second) + " did not reach a safe point within " +
               to_text(kStateGraceSeconds) + " s and starts again";
-  return text;
+  return text + others_said_;
 }
 
 std::vector<RealizationRecord> Checkpointer::take_records() {
@@ -178,20 +216,22 @@ void Checkpointer::save() {
   save_locked();
 }
 
-// checkpoint.bin with every record; the states of realizations it holds
-// finished are then stale, and removed.
+// checkpoint.bin with every record; the states of the realizations new in it
+// (saved by this process or by another rank of a job) are then stale, and removed.
 void Checkpointer::save_locked(bool fault) {
   for (const RealizationRecord& r : checkpoint_.records)  // on the disk before the record that needs them
     if (r.states_apart) sync_state_file(state_file_path(dir_, r.ensemble));
   write_checkpoint(dir_, checkpoint_);
   on_disk_ = true;
+  const std::size_t before = std::min(saved_, checkpoint_.records.size());
   saved_ = checkpoint_.records.size();
   last_save_ = Clock::now();
-  for (const RealizationRecord& r : checkpoint_.records)
-    if (states_.erase({r.ensemble, r.index})) {
-      std::error_code ec;
-      std::filesystem::remove(run_state_path(dir_, r.ensemble, r.index), ec);
-    }
+  for (std::size_t i = before; i < checkpoint_.records.size(); ++i) {
+    const RealizationRecord& r = checkpoint_.records[i];
+    states_.erase({r.ensemble, r.index});
+    std::error_code ec;
+    std::filesystem::remove(run_state_path(dir_, r.ensemble, r.index), ec);
+  }
   if (fault) fault_point("checkpoint");
 }
 
@@ -199,6 +239,7 @@ RealizationSaves::RealizationSaves(Checkpointer& owner, const WorkItem& item)
     : owner_(owner), item_(item), last_(Clock::now()) {
   std::lock_guard lock(owner_.mutex_);
   owner_.running_.insert({item.ensemble, item.index});
+  if (owner_.job_rank_ && owner_.resuming_) owner_.find_state({item.ensemble, item.index});
 }
 
 RealizationSaves::~RealizationSaves() {
@@ -261,7 +302,7 @@ void RealizationSaves::save(double t, double fraction,
     owner_.states_[key] = t;
     if (interrupt_requested() == InterruptMode::checkpoint) owner_.saved_on_request_.insert(key);
   }
-  fault_point("checkpoint");
+  fault_point(owner_.job_rank_ ? "state" : "checkpoint");
 }
 
 }  // namespace shockgas::app

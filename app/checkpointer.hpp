@@ -14,6 +14,13 @@
 // realizations to save (a write under way is always finished) for at most
 // kStateGraceSeconds to reach a safe point; one that does not is stopped, and
 // continues from its last periodic state, or starts again if it has none.
+//
+// In an MPI job every rank saves the states of the realizations it runs into
+// the shared directory, each through a Checkpointer of its own: rank 0's keeps
+// checkpoint.bin (written before any rank runs, so that every state has one to
+// be resumed through) and removes the states of the realizations it saves
+// finished; the others' (job_rank) only save states. A resumed run, on any
+// number of ranks, continues each realization from its state wherever it runs.
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -85,13 +92,16 @@ class Checkpointer {
 
   // kept: the records of a checkpoint being resumed (empty for a new run);
   // realizations, variants: a shard's slices as given ("" for a whole run).
-  // states: the realizations running in this process save their states
-  // (false for an MPI job, whose ranks do not); then, resuming, the states in
-  // dir are continued (InputError "--resume" for one of another build or
-  // scene), and for a new run any there are removed.
+  // states: the realizations running in this process save their states;
+  // then, resuming, the states in dir are continued (InputError "--resume" for
+  // one of another build or scene), and for a new run any there are removed.
+  // job_rank: a rank other than 0 of a job, which only saves the states of its
+  // realizations (rank 0 has checked and cleared the directory before dealing
+  // them out): never writes checkpoint.bin nor removes a file, and continues a
+  // realization from its state when the directory holds one.
   Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
                const std::string& variants, std::vector<RealizationRecord> kept, bool resuming = false,
-               bool states = false);
+               bool states = false, bool job_rank = false);
   ~Checkpointer();  // signals end the process again (partial_outputs.hpp)
   Checkpointer(const Checkpointer&) = delete;
   Checkpointer& operator=(const Checkpointer&) = delete;
@@ -115,6 +125,23 @@ class Checkpointer {
   std::unique_ptr<RealizationSaves> saves_for(const WorkItem& item) {
     return std::make_unique<RealizationSaves>(*this, item);
   }
+  // Writes checkpoint.bin if none is on disk yet (rank 0 of a job, before it
+  // deals the realizations out: the ranks' states are resumed through it).
+  void write_if_missing();
+  // A checkpoint request is seen: the grace of the running realizations'
+  // saves starts now (else at the first poll() that sees it).
+  void request_seen();
+  // Saves the records gathered now, if any is not on disk yet (rank 0 of a
+  // job on a checkpoint request, before it waits for the ranks' states).
+  void save_gathered();
+  // A realization finished (its record sent to rank 0, which removes its state).
+  void finished(std::uint64_t ensemble, std::uint64_t index);
+  // What the states of this process hold after a checkpoint request, as in
+  // CheckpointTaken's note: "; realization 3 saved at t = 12.5" ...
+  std::string states_said() const;
+  // What the other ranks of a job said their states hold, for the note of the
+  // checkpoint request (rank 0).
+  void add_others_said(const std::string& text);
   // What the resumed checkpoint continues: "" or ", 1 continues from its saved state (... at t = 12.5)".
   std::string resumed_states() const;
 
@@ -122,6 +149,7 @@ class Checkpointer {
   friend class RealizationSaves;
   using Key = std::pair<std::uint64_t, std::uint64_t>;  // ensemble, index
   void find_states();
+  void find_state(const Key& key);  // job_rank, resuming: the state of one realization
   void save();
   void save_locked(bool fault = true);  // fault: pass fault_point("checkpoint")
   bool waiting_for_states();
@@ -133,6 +161,8 @@ class Checkpointer {
   std::size_t kept_ = 0;     // records of the resumed checkpoint
   std::size_t saved_ = 0;    // records in the file on disk
   bool on_disk_ = false;     // checkpoint.bin written (or resumed)
+  bool job_rank_ = false;    // saves states only
+  bool resuming_ = false;
   std::chrono::steady_clock::duration interval_;
   std::chrono::steady_clock::time_point last_save_;
 
@@ -142,6 +172,7 @@ class Checkpointer {
   std::map<Key, std::string> resumed_sinks_;          // and their states files' saves
   std::set<Key> running_;                             // realizations whose saves live
   std::set<Key> saved_on_request_;
+  std::string others_said_;                                     // add_others_said
   int writing_ = 0;                                             // state writes under way
   std::optional<std::chrono::steady_clock::time_point> asked_;  // when a checkpoint request was first seen
 };

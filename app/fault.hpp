@@ -12,8 +12,9 @@
 // (each dataset), "write:<file>" (half-way through each text file, e.g.
 // "write:summary.json"), "plot" (each poll while the plotting process runs),
 // "swap" (the finished directory about to replace the previous one),
-// "swapped" (replaced, the previous contents not yet removed) and "checkpoint"
-// (a checkpoint written in full).
+// "swapped" (replaced, the previous contents not yet removed), "checkpoint"
+// (a checkpoint or a running realization's state written in full) and "state"
+// (a state written in full by a rank other than 0 of an MPI job).
 #include <string_view>
 
 namespace shockgas::app {

@@ -97,12 +97,14 @@ class Gatherer {
         peers_(static_cast<std::size_t>(job.size())) {
     const std::vector<WorkItem> remaining = checkpoints ? checkpoints->remaining(*plan) : plan->items();
     expected_ = remaining.size();
+    if (checkpoints) checkpoints->write_if_missing();  // before any rank saves a state
     for (int j = 0; j < job.size(); ++j) {
       std::vector<WorkItem> share = deal(remaining, j, job.size());
       peers_[j].items = share.size();
       peers_[j].heard = Clock::now();
       if (j == 0)
-        pool_ = std::make_unique<RealizationPool>(plan, std::move(share), threads, true, states_dir);
+        pool_ =
+            std::make_unique<RealizationPool>(plan, std::move(share), threads, true, states_dir, checkpoints);
       else
         job.send(j, kItems, pack_items({}, share));
     }
@@ -140,7 +142,8 @@ class Gatherer {
     std::vector<WorkItem> running;
     Clock::time_point heard;
     bool answered = false;
-    int signal = 0;  // the signal it reported
+    int signal = 0;                    // the signal it reported
+    std::optional<std::string> saved;  // what its states hold, once it said (kSaved)
     bool working() const { return received < items; }
   };
 
@@ -180,6 +183,8 @@ class Gatherer {
       p.running = unpack_items(n, 1);
       p.signal = static_cast<int>(n.at(0));
       if (p.signal != 0 && !signalled_) signalled_ = Clock::now();
+    } else if (m.tag == kSaved) {
+      p.saved = m.bytes;
     }
   }
 
@@ -202,12 +207,16 @@ class Gatherer {
   // cannot were killed with their node or by hand, and the launcher is ending
   // the rest. With checkpoints, what was gathered is saved first (poll() saves
   // on the request and throws Interrupted), then a rank that did not answer is named.
+  // On a checkpoint request the ranks save their running realizations' states
+  // first (kStop carries the signal; each says kSaved), and rank 0 its own
+  // (poll() waits for them).
   [[noreturn]] void stop_on_interrupt() {
-    for (int j = 1; j < job_.size(); ++j) job_.send(j, kStop, {});
+    const bool saving = checkpoints_ && interrupt_requested() == InterruptMode::checkpoint;
+    const std::string stop = saving ? pack({static_cast<double>(interrupt_signal())}) : std::string();
+    for (int j = 1; j < job_.size(); ++j) job_.send(j, kStop, stop);
     const Clock::time_point asked = Clock::now();
     while (seconds_since(asked) < kAnswerSeconds && !all_answered()) {
-      while (auto m = job_.receive())
-        if (m->tag == kInterrupted || m->tag == kRecord) handle(*m);
+      receive_answers();
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     take_own_finished();
@@ -215,8 +224,24 @@ class Gatherer {
     for (int j = job_.size() - 1; j >= 1; --j)
       if (peers_[j].working() && !peers_[j].answered) silent = j;
     if (checkpoints_) {
+      if (saving) {  // the records first: a launcher may end the job before the states are saved
+        checkpoints_->request_seen();  // this rank's own saves run meanwhile, in the same grace
+        checkpoints_->add(std::exchange(records_, {}));
+        checkpoints_->save_gathered();
+      }
+      while (saving && seconds_since(asked) < Checkpointer::kStateGraceSeconds + 2 * kAnswerSeconds &&
+             !all_saved()) {
+        receive_answers();
+        take_own_finished();
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      if (saving) checkpoints_->add_others_said(ranks_saved());
       try {
-        keep_records();
+        while (true) {  // poll() throws once this rank's realizations saved their states
+          take_own_finished();
+          keep_records();
+          std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
       } catch (const CheckpointTaken& c) {
         if (silent) lost(silent, "stopped", "; " + c.note());
         throw;
@@ -226,10 +251,38 @@ class Gatherer {
     throw Interrupted(interrupt_signal());
   }
 
+  void receive_answers() {
+    while (auto m = job_.receive())
+      if (m->tag == kInterrupted || m->tag == kRecord || m->tag == kSaved) handle(*m);
+  }
+
   bool all_answered() const {
     for (std::size_t j = 1; j < peers_.size(); ++j)
       if (peers_[j].working() && !peers_[j].answered) return false;
     return true;
+  }
+
+  // Every rank that answered and still had realizations to run said what its states hold.
+  bool all_saved() const {
+    for (std::size_t j = 1; j < peers_.size(); ++j)
+      if (peers_[j].working() && peers_[j].answered && !peers_[j].saved) return false;
+    return true;
+  }
+
+  // What the other ranks' states hold, for the checkpoint's message.
+  std::string ranks_saved() const {
+    std::string text;
+    for (std::size_t j = 1; j < peers_.size(); ++j) {
+      const Peer& p = peers_[j];
+      if (p.saved)
+        text += *p.saved;
+      else if (p.working() && p.answered)
+        text += "; rank " + std::to_string(j) + " did not say within " +
+                to_text(Checkpointer::kStateGraceSeconds + 2 * kAnswerSeconds) +
+                " s that it saved its realizations' states " + describe(plan_, p.running) +
+                " (each continues from its last state, if any)";
+    }
+    return text;
   }
 
   void check_silence() {
@@ -264,25 +317,31 @@ class Gatherer {
 // Ranks 1..K-1: the share rank 0 deals them, each record sent as it finishes.
 class Worker {
  public:
-  Worker(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads)
-      : job_(job), plan_(std::move(plan)), threads_(threads) {}
+  Worker(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads, Checkpointer* checkpoints)
+      : job_(job), plan_(std::move(plan)), threads_(threads), checkpoints_(checkpoints) {}
 
   void serve() {
     Clock::time_point beat{};
     bool done = false;
     while (true) {
-      if (pool_)
-        for (auto& r : pool_->take_finished()) job_.send(0, kRecord, encode(r));
-      if (interrupt_requested() != InterruptMode::none) answer(interrupt_signal());  // before failure(): as on rank 0
+      send_finished();
+      if (interrupt_requested() != InterruptMode::none)
+        answer(interrupt_signal());  // before failure(): as on rank 0
       if (auto f = pool_ ? pool_->failure() : std::nullopt) {
         job_.send(0, kFailed, pack_items({}, {f->item}) + f->message);
         wait_to_be_ended();
       }
       while (auto m = job_.receive()) {
         if (m->tag == kItems)
-          pool_ = std::make_unique<RealizationPool>(plan_, unpack_items(unpack(m->bytes), 0), threads_, true);
+          pool_ = std::make_unique<RealizationPool>(plan_, unpack_items(unpack(m->bytes), 0), threads_, true,
+                                                    std::filesystem::path(), checkpoints_);
         if (m->tag == kDone) done = true;
-        if (m->tag == kStop) answer(0);
+        if (m->tag == kStop) {
+          const auto signal = unpack(m->bytes);  // a checkpoint request: save the states first
+          if (checkpoints_ && !signal.empty() && interrupt_requested() == InterruptMode::none)
+            request_interrupt(InterruptMode::checkpoint, static_cast<int>(signal[0]));
+          answer(0);
+        }
         if (m->tag == kProgress)
           root_running_ = unpack_items(unpack(m->bytes), 2), root_heard_ = Clock::now();
       }
@@ -300,9 +359,34 @@ class Worker {
   double fraction() const { return pool_ ? pool_->fraction() : 0.0; }
   std::vector<WorkItem> running() const { return pool_ ? pool_->running() : std::vector<WorkItem>{}; }
 
+  void send_finished() {
+    if (!pool_) return;
+    for (auto& r : pool_->take_finished()) {
+      if (checkpoints_) checkpoints_->finished(r.ensemble, r.index);  // rank 0 removes its state
+      job_.send(0, kRecord, encode(r));
+    }
+  }
+
   [[noreturn]] void answer(int signal) {
     job_.send(0, kInterrupted, pack_items({static_cast<double>(signal)}, running()));
+    if (checkpoints_ && interrupt_requested() == InterruptMode::checkpoint) save_states();
     wait_to_be_ended();
+  }
+
+  // On a checkpoint request the running realizations save their states at
+  // their next safe point and stop (checkpointer.hpp); then rank 0 is told
+  // what the states hold. A realization not at a safe point within
+  // kStateGraceSeconds keeps its last periodic state.
+  void save_states() {
+    const Clock::time_point asked = Clock::now();
+    while (pool_ && !pool_->finished() && seconds_since(asked) < Checkpointer::kStateGraceSeconds) {
+      send_finished();
+      while (job_.receive()) {
+      }
+      std::this_thread::sleep_for(kPoll);
+    }
+    send_finished();
+    job_.send(0, kSaved, checkpoints_->states_said());
   }
 
   // Rank 0 ends the job (MPI_Abort) once it has said why; should it not, the
@@ -329,6 +413,7 @@ class Worker {
   Job& job_;
   std::shared_ptr<const EnsemblePlan> plan_;
   std::size_t threads_;
+  Checkpointer* checkpoints_;              // its realizations' states (job_rank), or nullptr
   std::unique_ptr<RealizationPool> pool_;  // once rank 0 has dealt the items (kItems)
   std::vector<WorkItem> root_running_;
   Clock::time_point root_heard_ = Clock::now();
@@ -349,7 +434,7 @@ ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> pl
   out.ranks = job->size();
   out.threads = threads;
   if (job->rank() != 0) {
-    Worker(*job, std::move(plan), threads).serve();
+    Worker(*job, std::move(plan), threads, checkpoints).serve();
     return out;
   }
   out.records = Gatherer(*job, std::move(plan), threads, progress, checkpoints, states_dir).gather();

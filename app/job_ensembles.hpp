@@ -15,7 +15,10 @@
 //    were running; a rank silent for kSilenceSeconds is named the same way
 //    (a launcher that lets the others run on);
 //  * SIGTERM or SIGINT to every rank (a scheduler's pre-emption): Interrupted,
-//    rank 0 having saved the records gathered so far when it keeps checkpoints.
+//    rank 0 having saved the records gathered so far when it keeps checkpoints;
+//    then every rank first saves the states of the realizations it runs
+//    (checkpointer.hpp: within Checkpointer::kStateGraceSeconds) and says so
+//    (kSaved), and rank 0 waits for that before it ends the job.
 // Rank 1 names rank 0 if rank 0 falls silent. Rank 0 writes nothing before it
 // holds every record, so a failed job leaves no result.
 #include <filesystem>
@@ -40,6 +43,7 @@ enum JobTag : int {
   kStop = 5,         // 0 -> all: the job is ending, answer with kInterrupted
   kDone = 6,         // 0 -> all: every record arrived
   kItems = 7,        // 0 -> each at the start: the items it runs
+  kSaved = 8,        // -> 0 after kInterrupted on a checkpoint request: what its states hold (text)
 };
 
 inline constexpr double kAnswerSeconds = 0.5;  // well inside Open MPI's 1 s from SIGTERM to SIGKILL
@@ -54,10 +58,12 @@ struct ComputedRecords {
 
 // With job == nullptr: this process alone (a shard without MPI). `threads`: of
 // each process. Rethrows a realization's own error when running alone.
-// checkpoints (this process alone, or rank 0 of a job; checkpointer.hpp): the
+// checkpoints (checkpointer.hpp; this process alone, or rank 0 of a job): the
 // records it keeps are not run again, and every record passes through it, so
-// that it saves them every output.checkpoint_minutes and on a signal; nullptr
-// for none (and on the other ranks). states_dir: where realization 0 keeps its
+// that it saves them every output.checkpoint_minutes and on a signal; the
+// realizations running here save their states through it. On the other ranks
+// of a job: their Checkpointer (job_rank), for their realizations' states.
+// nullptr for none. states_dir: where realization 0 keeps its
 // states apart when it runs in this process, alone or on rank 0
 // (realization_pool.hpp); on another rank its record carries them.
 ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,

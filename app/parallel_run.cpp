@@ -112,12 +112,17 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   }
   ComputedRecords computed;
   {
-    std::unique_ptr<Checkpointer> checkpoints;  // rank 0 keeps a job's (job_ensembles.hpp)
+    // Rank 0 keeps a job's checkpoint (job_ensembles.hpp); every rank saves
+    // the states of the realizations it runs.
+    std::unique_ptr<Checkpointer> checkpoints;
     if (keeps_checkpoints(options) && speaks_for_job())
       checkpoints = std::make_unique<Checkpointer>(
           where, scene, options.realizations, options.variants,
-          options.resume ? resumable_records(where) : std::vector<RealizationRecord>{}, options.resume, !job);
-    if (checkpoints && options.resume)
+          options.resume ? resumable_records(where) : std::vector<RealizationRecord>{}, options.resume, true);
+    else if (keeps_checkpoints(options))
+      checkpoints = std::make_unique<Checkpointer>(where, scene, options.realizations, options.variants,
+                                                   std::vector<RealizationRecord>{}, options.resume, true, true);
+    if (checkpoints && options.resume && speaks_for_job())
       std::cerr << "shockgas: resuming " << where.string() << ": " << checkpoints->kept() << " of "
                 << plan->items().size() << " realizations kept from the checkpoint"
                 << checkpoints->resumed_states() << "\n";

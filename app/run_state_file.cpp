@@ -256,6 +256,17 @@ std::vector<RunStateHeader> read_run_state_headers(const fs::path& dir) {
   return out;
 }
 
+std::optional<RunStateHeader> read_run_state_header(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) return std::nullopt;
+  try {
+    FileIn in(file, size_of(file));
+    return read_header(in, file);
+  } catch (const RunError& e) {
+    throw damaged(file, e.what());
+  }
+}
+
 std::unique_ptr<particles::RunStateReader> open_run_state(const fs::path& file) {
   const std::uint64_t size = size_of(file);
   if (size < sizeof(std::uint64_t)) throw damaged(file, "cut short");

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,10 @@ void write_run_state(const std::filesystem::path& dir, const RunStateHeader& hea
 // The headers of the state files in dir; InputError (key "--resume") naming the
 // file for one that is not a state file of this format.
 std::vector<RunStateHeader> read_run_state_headers(const std::filesystem::path& dir);
+
+// The header of one state file; nullopt if there is none (InputError as above
+// for one that is not a state file of this format).
+std::optional<RunStateHeader> read_run_state_header(const std::filesystem::path& file);
 
 // A state file opened for resuming: its checksum checked over the whole file
 // first (InputError "--resume" naming the file if it does not match or the
