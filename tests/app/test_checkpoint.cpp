@@ -8,13 +8,19 @@
 // and SIGTERM in a child process: tests/checkpoint.cmake.)
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
+#include <memory>
+#include <optional>
 #include <sstream>
+#include <thread>
 
 #include "app/run_command.hpp"
 #include "app/run_comparison.hpp"
 #include "checkpoint.hpp"
+#include "checkpointer.hpp"
 #include "frames.hpp"
+#include "realization_pool.hpp"
 #include "run_state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/simulate.hpp"
@@ -317,6 +323,36 @@ TEST_F(RunningStates, AStateOfAnotherBuildIsRefused) {
   EXPECT_EQ(command({"run", "--resume", path("run"), "-q"}), 2);
   EXPECT_NE(said_.find("it was saved by 0.0.1-other"), std::string::npos) << said_;
   EXPECT_TRUE(fs::exists(state("run")));
+}
+
+// A rank other than 0 of an MPI job (Checkpointer job_rank) continues the
+// realization dealt to it from the state in the shared directory, to the
+// uninterrupted realization's record, and leaves checkpoint.bin and the state
+// to rank 0 (it writes and removes neither); starting a new run it removes no
+// state either (rank 0 cleared the directory before dealing).
+TEST_F(RunningStates, ARankOfAJobContinuesFromTheStateAndLeavesTheFilesToRankZero) {
+  interrupted_inside("run");
+  const Scene scene = load_scene(path("longer.toml"));
+  const std::string checkpoint_bytes = bytes_of(checkpoint_path(path("run")));
+  const std::string state_bytes = bytes_of(state("run"));
+  const auto plan = std::make_shared<const EnsemblePlan>(scene, std::nullopt, std::nullopt);
+  for (const bool resuming : {true, false}) {
+    Checkpointer rank(path("run"), scene, "", "", {}, resuming, true, true);
+    RealizationPool pool(plan, {WorkItem{0, 0}}, 1, false, {}, &rank);
+    while (!pool.finished()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_FALSE(pool.failure()) << pool.failure()->message;
+    std::vector<RealizationRecord> got = pool.take_finished();
+    ASSERT_EQ(got.size(), 1u);
+    RealizationRecord whole{
+        0, 0, particles::run_realization(InitialCondition(scene.initial), 0, particle_params(scene))};
+    got[0].run.wall_seconds = whole.run.wall_seconds = 0;
+    EXPECT_EQ(encode(got[0]), encode(whole)) << "resuming: " << resuming;
+    EXPECT_EQ(rank.resumed_states().find(", 1 continues from a saved state (realization 0 at t = ") == 0,
+              resuming)
+        << rank.resumed_states();
+    EXPECT_EQ(bytes_of(checkpoint_path(path("run"))), checkpoint_bytes);
+    EXPECT_EQ(bytes_of(state("run")), state_bytes);
+  }
 }
 
 }  // namespace

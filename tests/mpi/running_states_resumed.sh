@@ -1,0 +1,86 @@
+#!/bin/sh
+# A job of 2 ranks, each running one realization, stopped by SIGNAL after both
+# ranks saved a state of their realization (checkpoint.run-0-K.bin, one per
+# realization, in the shared directory), then resumed as a job of 2 ranks and as
+# one process: each resumed run says both realizations continue from their
+# states, and ends with the result of one uninterrupted process, bit for bit
+# (compare_runs).
+#   SIGNAL: KILL to the launcher and every rank (a lost node), or TERM to them
+#     (a scheduler's pre-emption: every rank saves again and rank 0 says so).
+# usage: running_states_resumed.sh SHOCKGAS COMPARE_RUNS MPIRUN SCENE OUT SIGNAL
+set -eu
+shockgas=$1 compare=$2 mpirun=$3 scene=$4 out=$5 signal=$6
+fail() { echo "$*"; exit 1; }
+rm -rf "$out"
+mkdir -p "$out"
+# States every 0.06 s of a realization's run, the interval recorded with the
+# scene's overrides by every run.
+every="output.checkpoint_minutes=0.001"
+"$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every
+
+# Each rank stops itself (SIGSTOP, app/fault.hpp) right after its first state
+# is written (fault point "checkpoint" on rank 0, "state" on rank 1), so the
+# signal comes after both ranks saved and before the end.
+args="run $scene --out $out/stopped --quiet --no-plots --set $every"
+"$mpirun" --allow-run-as-root --oversubscribe -np 1 env SHOCKGAS_FAULT=checkpoint:stop "$shockgas" $args : \
+  -np 1 env SHOCKGAS_FAULT=state:stop "$shockgas" $args 2> "$out/stopped.stderr" &
+launcher=$!
+ranks_stopped() {  # both ranks, the launcher's children, stopped
+  n=0
+  for pid in $(pgrep -P $launcher); do
+    if ps -o stat= -p $pid | grep -q '^T'; then n=$((n + 1)); fi
+  done
+  [ $n -eq 2 ]
+}
+waited=0
+until ranks_stopped; do
+  sleep 0.05; waited=$((waited + 1))
+  [ $waited -lt 1200 ] || { kill -s KILL $launcher $(pgrep -P $launcher); fail "the ranks did not both save a state within 60 s"; }
+done
+ranks=$(pgrep -P $launcher)
+if [ "$signal" = KILL ]; then
+  kill -s KILL $launcher $ranks
+else
+  # The launcher and every rank, as a scheduler signals every task: the signal
+  # is pending while a rank is stopped and acts as it continues (mpirun alone
+  # forwards it a second late).
+  kill -s "$signal" $launcher $ranks
+  kill -s CONT $ranks
+fi
+status=0
+wait $launcher || status=$?
+waited=0
+while pgrep -f "$out/stopped" > /dev/null; do
+  sleep 0.1; waited=$((waited + 1))
+  [ $waited -lt 300 ] || fail "ranks of the stopped job still run 30 s after SIG$signal to the launcher"
+done
+cat "$out/stopped.stderr"
+[ $status -ne 0 ] || fail "the stopped job exited with status 0"
+[ ! -f "$out/stopped/result.h5" ] || fail "the job ended before the signal: make the scene longer"
+[ -f "$out/stopped/checkpoint.bin" ] || fail "no checkpoint after SIG$signal"
+for k in 0 1; do
+  [ -f "$out/stopped/checkpoint.run-0-$k.bin" ] || fail "no state of realization $k: $(ls "$out/stopped")"
+done
+if [ "$signal" = TERM ]; then
+  grep -q "realization 0 saved at t = .*realization 1 saved at t = " "$out/stopped.stderr" ||
+    fail "SIGTERM: not said that both realizations saved their states"
+fi
+
+for ranks in 2 1; do
+  resumed="$out/resumed-$ranks"
+  cp -r "$out/stopped" "$resumed"
+  if [ $ranks = 1 ]; then
+    "$shockgas" run --resume "$resumed" --no-plots 2> "$out/resumed-$ranks.stderr" ||
+      { cat "$out/resumed-$ranks.stderr"; fail "the resumed process failed"; }
+  else
+    "$mpirun" --allow-run-as-root --oversubscribe -np $ranks "$shockgas" run --resume "$resumed" --no-plots \
+      2> "$out/resumed-$ranks.stderr" || { cat "$out/resumed-$ranks.stderr"; fail "the resumed job of $ranks failed"; }
+  fi
+  cat "$out/resumed-$ranks.stderr"
+  grep -q "0 of 2 realizations kept from the checkpoint, 2 continue from a saved state" "$out/resumed-$ranks.stderr" ||
+    fail "$ranks: did not continue both realizations from their states"
+  [ ! -f "$resumed/checkpoint.bin" ] || fail "$ranks: the checkpoint is left after the result was written"
+  ls "$resumed" | grep -q "checkpoint.run-" && fail "$ranks: states left after the result was written"
+  "$compare" "$out/whole" "$resumed"
+done
+echo "stopped on 2 ranks by SIG$signal with both realizations' states saved, resumed on 2 ranks and 1: the uninterrupted result, bit for bit"
