@@ -174,16 +174,23 @@ class JobCheckpoints : public ::testing::Test {
 };
 
 // A pre-emption: SIGTERM to every rank. Rank 1's record arriving with its answer
-// is saved with rank 0's own, and the job is interrupted.
+// is saved with rank 0's own, what rank 1 said its state holds is in the one
+// message, and the job is interrupted.
 TEST_F(JobCheckpoints, AnInterruptedJobSavesWhatRankZeroGathered) {
   const auto plan = plan_of(4);
   FakeJob job;
   job.from_rank_1(kRecord, encode(record_of(*plan, {0, 1})));
   job.from_rank_1(kInterrupted, doubles({15, 0, 3}));  // then stopped in realization 3
+  job.from_rank_1(kSaved, "; realization 3 saved at t = 2.5");
   auto checkpoints = checkpointer(4);
   request_interrupt(InterruptMode::checkpoint, 15);
   ProgressBar quiet(false);
-  EXPECT_THROW(compute_records(&job, plan, 1, quiet, checkpoints.get()), CheckpointTaken);
+  try {
+    compute_records(&job, plan, 1, quiet, checkpoints.get());
+    FAIL() << "the job was not interrupted";
+  } catch (const CheckpointTaken& c) {
+    EXPECT_NE(c.note().find("; realization 3 saved at t = 2.5"), std::string::npos) << c.note();
+  }
   const auto saved =
       saved_indices();  // rank 0's own 0 and 2 too if they finished before the request was seen
   EXPECT_TRUE(std::count(saved.begin(), saved.end(), 1u)) << "rank 1's record not saved";
