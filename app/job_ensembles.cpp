@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <iostream>
 #include <optional>
 #include <thread>
 
 #include "checkpointer.hpp"
+#include "job_messages.hpp"
 #include "progress_bar.hpp"
 #include "realization_pool.hpp"
 #include "shockgas/core/error.hpp"
@@ -17,41 +17,7 @@ namespace shockgas::app {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-constexpr auto kPoll = std::chrono::milliseconds(50);
-constexpr double kBeatSeconds = 0.2;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::string pack(const std::vector<double>& numbers) {
-  return std::string(reinterpret_cast<const char*>(numbers.data()), numbers.size() * sizeof(double));
-}
-std::vector<double> unpack(const std::string& bytes) {
-  std::vector<double> numbers(bytes.size() / sizeof(double));
-  if (!numbers.empty()) std::memcpy(numbers.data(), bytes.data(), numbers.size() * sizeof(double));
-  return numbers;
-}
-
-// [head..., e0, k0, e1, k1, ...]
-std::string pack_items(std::vector<double> head, const std::vector<WorkItem>& items) {
-  for (const WorkItem& w : items)
-    head.push_back(static_cast<double>(w.ensemble)), head.push_back(static_cast<double>(w.index));
-  return pack(head);
-}
-std::vector<WorkItem> unpack_items(const std::vector<double>& numbers, std::size_t head) {
-  std::vector<WorkItem> items;
-  for (std::size_t i = head; i + 1 < numbers.size(); i += 2)
-    items.push_back({static_cast<std::size_t>(numbers[i]), static_cast<std::uint64_t>(numbers[i + 1])});
-  return items;
-}
-
-std::string describe(const EnsemblePlan& plan, const std::vector<WorkItem>& items) {
-  if (items.empty()) return "between realizations";
-  std::string text = "while running ";
-  for (std::size_t i = 0; i < items.size(); ++i) text += (i ? ", " : "") + plan.describe(items[i]);
-  return text;
-}
+using namespace job_messages;
 
 void sort_in_plan_order(std::vector<RealizationRecord>& records) {
   std::sort(records.begin(), records.end(), [](const RealizationRecord& a, const RealizationRecord& b) {
@@ -314,111 +280,6 @@ class Gatherer {
   std::optional<Clock::time_point> signalled_;  // when a rank first reported a signal
 };
 
-// Ranks 1..K-1: the share rank 0 deals them, each record sent as it finishes.
-class Worker {
- public:
-  Worker(Job& job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads, Checkpointer* checkpoints)
-      : job_(job), plan_(std::move(plan)), threads_(threads), checkpoints_(checkpoints) {}
-
-  void serve() {
-    Clock::time_point beat{};
-    bool done = false;
-    while (true) {
-      send_finished();
-      if (interrupt_requested() != InterruptMode::none)
-        answer(interrupt_signal());  // before failure(): as on rank 0
-      if (auto f = pool_ ? pool_->failure() : std::nullopt) {
-        job_.send(0, kFailed, pack_items({}, {f->item}) + f->message);
-        wait_to_be_ended();
-      }
-      while (auto m = job_.receive()) {
-        if (m->tag == kItems)
-          pool_ = std::make_unique<RealizationPool>(plan_, unpack_items(unpack(m->bytes), 0), threads_, true,
-                                                    std::filesystem::path(), checkpoints_);
-        if (m->tag == kDone) done = true;
-        if (m->tag == kStop) {
-          const auto signal = unpack(m->bytes);  // a checkpoint request: save the states first
-          if (checkpoints_ && !signal.empty() && interrupt_requested() == InterruptMode::none)
-            request_interrupt(InterruptMode::checkpoint, static_cast<int>(signal[0]));
-          answer(0);
-        }
-        if (m->tag == kProgress)
-          root_running_ = unpack_items(unpack(m->bytes), 2), root_heard_ = Clock::now();
-      }
-      if (done) return;
-      check_root();
-      if (seconds_since(beat) > kBeatSeconds) {
-        job_.send(0, kProgress, pack_items({fraction(), pool_ ? pool_->sim_time() : 0.0}, running()));
-        beat = Clock::now();
-      }
-      std::this_thread::sleep_for(kPoll);
-    }
-  }
-
- private:
-  double fraction() const { return pool_ ? pool_->fraction() : 0.0; }
-  std::vector<WorkItem> running() const { return pool_ ? pool_->running() : std::vector<WorkItem>{}; }
-
-  void send_finished() {
-    if (!pool_) return;
-    for (auto& r : pool_->take_finished()) {
-      if (checkpoints_) checkpoints_->finished(r.ensemble, r.index);  // rank 0 removes its state
-      job_.send(0, kRecord, encode(r));
-    }
-  }
-
-  [[noreturn]] void answer(int signal) {
-    job_.send(0, kInterrupted, pack_items({static_cast<double>(signal)}, running()));
-    if (checkpoints_ && interrupt_requested() == InterruptMode::checkpoint) save_states();
-    wait_to_be_ended();
-  }
-
-  // On a checkpoint request the running realizations save their states at
-  // their next safe point and stop (checkpointer.hpp); then rank 0 is told
-  // what the states hold. A realization not at a safe point within
-  // kStateGraceSeconds keeps its last periodic state.
-  void save_states() {
-    const Clock::time_point asked = Clock::now();
-    while (pool_ && !pool_->finished() && seconds_since(asked) < Checkpointer::kStateGraceSeconds) {
-      send_finished();
-      while (job_.receive()) {
-      }
-      std::this_thread::sleep_for(kPoll);
-    }
-    send_finished();
-    job_.send(0, kSaved, checkpoints_->states_said());
-  }
-
-  // Rank 0 ends the job (MPI_Abort) once it has said why; should it not, the
-  // job is ended from here after kSilenceSeconds.
-  [[noreturn]] void wait_to_be_ended() {
-    const Clock::time_point since = Clock::now();
-    while (seconds_since(since) < kSilenceSeconds) {
-      while (job_.receive()) {
-      }
-      std::this_thread::sleep_for(kPoll);
-    }
-    job_.abort(1);
-  }
-
-  // Rank 1 speaks when rank 0 falls silent (rank 0 sends it a heartbeat).
-  void check_root() {
-    if (job_.rank() != 1 || seconds_since(root_heard_) < kSilenceSeconds) return;
-    std::cerr << "shockgas: run failed: rank 0 has not answered for " << static_cast<int>(kSilenceSeconds)
-              << " s " << describe(*plan_, root_running_)
-              << " (killed, or its node was lost); the job stops, no result is written\n";
-    job_.abort(1);
-  }
-
-  Job& job_;
-  std::shared_ptr<const EnsemblePlan> plan_;
-  std::size_t threads_;
-  Checkpointer* checkpoints_;              // its realizations' states (job_rank), or nullptr
-  std::unique_ptr<RealizationPool> pool_;  // once rank 0 has dealt the items (kItems)
-  std::vector<WorkItem> root_running_;
-  Clock::time_point root_heard_ = Clock::now();
-};
-
 }  // namespace
 
 ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> plan, std::size_t threads,
@@ -434,7 +295,7 @@ ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> pl
   out.ranks = job->size();
   out.threads = threads;
   if (job->rank() != 0) {
-    Worker(*job, std::move(plan), threads, checkpoints).serve();
+    serve_job_rank(*job, std::move(plan), threads, checkpoints);
     return out;
   }
   out.records = Gatherer(*job, std::move(plan), threads, progress, checkpoints, states_dir).gather();
