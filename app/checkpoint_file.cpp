@@ -10,6 +10,7 @@
 
 #include "byte_buffer.hpp"
 #include "checkpoint.hpp"
+#include "durable_file.hpp"
 #include "merge.hpp"
 #include "run_state_file.hpp"
 #include "shockgas/core/error.hpp"
@@ -93,13 +94,6 @@ bool write_fully(int fd, const std::string& bytes) {
   return true;
 }
 
-void sync_directory(const fs::path& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;  // the rename is done; only its durability is left to the system
-  ::fsync(fd);
-  ::close(fd);
-}
-
 }  // namespace
 
 fs::path checkpoint_path(const fs::path& dir) { return dir / "checkpoint.bin"; }
@@ -132,7 +126,7 @@ void write_checkpoint(const fs::path& dir, const Checkpoint& checkpoint) {
     fs::remove(temporary, ec);
     throw RunError("cannot write the checkpoint " + file.string() + ": " + reason);
   }
-  sync_directory(dir);
+  try_sync_directory(dir);
 }
 
 Checkpoint read_checkpoint(const fs::path& dir) {

@@ -92,6 +92,11 @@ void write_file(const fs::path& path, const std::string& text) {
 
 void sync_directory(const fs::path& dir) { sync_path(dir, true); }
 
+void try_sync_directory(const fs::path& dir) noexcept {
+  Fd fd(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (fd.get() >= 0) ::fsync(fd.get());
+}
+
 void sync_tree(const fs::path& dir) {
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (entry.is_symlink()) continue;

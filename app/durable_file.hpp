@@ -17,6 +17,9 @@ void write_file(const std::filesystem::path& path, const std::string& text);
 void sync_tree(const std::filesystem::path& dir);
 // fsync of one directory (its entries: after a rename into it).
 void sync_directory(const std::filesystem::path& dir);
+// The same at best effort, where the rename is done and a directory that cannot
+// be opened or synced leaves only its durability to the system (checkpoints).
+void try_sync_directory(const std::filesystem::path& dir) noexcept;
 
 // Bytes free for an unprivileged user on the file system holding path (or its
 // nearest existing ancestor); the largest value if unknown.

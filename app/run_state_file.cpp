@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "byte_buffer.hpp"
+#include "durable_file.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -189,13 +190,6 @@ std::uint64_t hash_of(const fs::path& file, std::uint64_t end) {
   return hash.value();
 }
 
-void sync_directory(const fs::path& dir) {
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;  // the rename is done; only its durability is left to the system
-  ::fsync(fd);
-  ::close(fd);
-}
-
 }  // namespace
 
 bool is_run_state_file(const fs::path& name) {
@@ -238,7 +232,7 @@ void write_run_state(const fs::path& dir, const RunStateHeader& header,
     fs::remove(temporary, ec);
     throw RunError("cannot write the checkpoint " + file.string() + ": " + std::strerror(error));
   }
-  sync_directory(dir);
+  try_sync_directory(dir);
 }
 
 std::vector<RunStateHeader> read_run_state_headers(const fs::path& dir) {
