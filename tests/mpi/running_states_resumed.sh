@@ -11,6 +11,7 @@
 set -eu
 shockgas=$1 compare=$2 mpirun=$3 scene=$4 out=$5 signal=$6
 fail() { echo "$*"; exit 1; }
+. "$(dirname "$0")/stopped_job.sh"
 rm -rf "$out"
 mkdir -p "$out"
 # States every 0.06 s of a realization's run, the interval recorded with the
@@ -47,17 +48,7 @@ else
   kill -s "$signal" $launcher $ranks
   kill -s CONT $ranks
 fi
-status=0
-wait $launcher || status=$?
-waited=0
-while pgrep -f "$out/stopped" > /dev/null; do
-  sleep 0.1; waited=$((waited + 1))
-  [ $waited -lt 300 ] || fail "ranks of the stopped job still run 30 s after SIG$signal to the launcher"
-done
-cat "$out/stopped.stderr"
-[ $status -ne 0 ] || fail "the stopped job exited with status 0"
-[ ! -f "$out/stopped/result.h5" ] || fail "the job ended before the signal: make the scene longer"
-[ -f "$out/stopped/checkpoint.bin" ] || fail "no checkpoint after SIG$signal"
+await_stopped_job $launcher "$out" "$signal"
 for k in 0 1; do
   [ -f "$out/stopped/checkpoint.run-0-$k.bin" ] || fail "no state of realization $k: $(ls "$out/stopped")"
 done

@@ -16,6 +16,7 @@ set -eu
 shockgas=$1 compare=$2 mpirun=$3 scene=$4 out=$5 stop_ranks=$6 signal=$7
 shift 7
 fail() { echo "$*"; exit 1; }
+. "$(dirname "$0")/stopped_job.sh"
 rm -rf "$out"
 mkdir -p "$out"
 # Checkpoints every 0.06 s (as soon as a realization finished), the interval
@@ -60,18 +61,7 @@ else
   [ "$root" = "$launcher" ] || kill -s "$signal" $root
   kill -s CONT $root
 fi
-status=0
-wait $launcher || status=$?
-# None may go on writing into the directory.
-waited=0
-while pgrep -f "$out/stopped" > /dev/null; do
-  sleep 0.1; waited=$((waited + 1))
-  [ $waited -lt 300 ] || fail "ranks of the stopped job still run 30 s after SIG$signal to the launcher"
-done
-cat "$out/stopped.stderr"
-[ $status -ne 0 ] || fail "the stopped job exited with status 0"
-[ ! -f "$out/stopped/result.h5" ] || fail "the job ended before the signal: make the scene longer"
-[ -f "$out/stopped/checkpoint.bin" ] || fail "no checkpoint after SIG$signal"
+await_stopped_job $launcher "$out" "$signal"
 if [ "$signal" = TERM ]; then
   grep -q "^shockgas: interrupted by signal 15 (SIGTERM); checkpoint written: " "$out/stopped.stderr" ||
     fail "SIGTERM: not said that a checkpoint was written"
