@@ -37,6 +37,12 @@ if(NOT Eigen3_FOUND)
   shockgas_missing("Eigen3" "libeigen3-dev")
 endif()
 
+# Boost's header-only sorts (the random initial positions: core/initial_stream.cpp).
+find_package(Boost 1.71 QUIET)
+if(NOT Boost_FOUND)
+  shockgas_missing("Boost headers" "libboost-dev")
+endif()
+
 find_package(CLI11 QUIET CONFIG)
 if(NOT CLI11_FOUND)
   shockgas_missing("CLI11" "libcli11-dev")

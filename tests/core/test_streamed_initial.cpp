@@ -58,6 +58,29 @@ TEST(StreamedInitial, HoldsNoBodiesAndDrawsTheSameOnes) {
     }
 }
 
+// A stream of the velocities alone skips the positions' draws (random
+// positions are then neither kept nor sorted) and gives the same velocities.
+TEST(StreamedInitial, VelocitiesAloneAreTheVelocitiesOfTheWholeStream) {
+  for (Positions positions : {Positions::lattice, Positions::random})
+    for (bool remove_mean : {false, true}) {
+      InitialParams p = gas(positions, Velocities::gaussian);
+      p.remove_mean = remove_mean;
+      for (std::uint64_t k : {0u, 5u}) {
+        const Bodies whole = make_initial_bodies(p, k);
+        InitialStream s(p, k, InitialStream::Parts::velocities);
+        std::vector<double> v, m;
+        read_in_chunks(
+            s,
+            [&](const double*, const double* vc, const double* mc, std::size_t count) {
+              v.insert(v.end(), vc, vc + count), m.insert(m.end(), mc, mc + count);
+            },
+            1000);
+        EXPECT_EQ(v, whole.v) << "positions " << static_cast<int>(positions) << ", k = " << k;
+        EXPECT_EQ(m, whole.m);
+      }
+    }
+}
+
 TEST(StreamedInitial, DataThatCannotBeDrawnAreHeld) {
   InitialParams p;
   p.velocities = Velocities::expression;
