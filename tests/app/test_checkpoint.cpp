@@ -294,11 +294,13 @@ TEST_F(RunningStates, ARunningRealizationContinuesFromItsState) {
   EXPECT_TRUE(differences.empty()) << differences.front();
 }
 
-// A write of a state killed half-way leaves its temporary file: the resumed run
-// ignores it, and the result replaces the directory, temporary file included.
+// A write of a state or of checkpoint.bin killed half-way leaves its temporary
+// file: the resumed run ignores it, and the result replaces the directory,
+// temporary files included.
 TEST_F(RunningStates, ATemporaryFileOfAKilledWriteIsLeftBehind) {
   interrupted_inside("resumed");
   std::ofstream(state("resumed").string() + ".partial-99999", std::ios::binary) << "half a state";
+  std::ofstream(checkpoint_path(path("resumed")).string() + ".partial-99998", std::ios::binary) << "half";
   ASSERT_EQ(command({"run", "--resume", path("resumed"), "-q"}), 0) << said_;
   for (const auto& entry : fs::directory_iterator(path("resumed")))
     EXPECT_FALSE(is_checkpoint_file(entry.path().filename())) << entry.path();
