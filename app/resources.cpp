@@ -27,9 +27,8 @@ namespace {
 
 // Measured costs (tests/app/test_resources.cpp holds the total against the peak
 // resident memory of real runs):
-constexpr double kProcessBase = 24e6;     // the program and its libraries, resident (measured 18-22 MB)
-constexpr double kBodyBytes = 24;         // x, v, m of one body
-constexpr double kEngineBytes = 80;       // the event engine per body while it runs (measured 78)
+constexpr double kProcessBase = 26e6;  // the program and its libraries, resident (measured 24.5 MB)
+constexpr double kBodyBytes = 24;      // x, v, m of one body
 // Copies of the records held at the peak (measured with threads = 1): a
 // histogram 2R + 3 times (each realization's, kept and written with the
 // ensemble's, scaled and written: 5.0 at R = 1), a space-time record R + 1
@@ -47,14 +46,18 @@ std::size_t concurrent_runs(const particles::ParticleParams& p) {
   return particles::split_threads(p.threads == 0 ? usable_cores() : p.threads, p.realizations).runs;
 }
 
-// What a run of one scene (no sweep) holds at its peak.
+// What a run of one scene (no sweep) holds at its peak. Realization 0's
+// snapshots and final state stream to the output directory (state_file.hpp);
+// the other realizations keep no states.
 void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   const auto& p = s.particles;
   const double N = d(s.initial.N), R = d(p.realizations), samples = d(p.samples);
-  // Realization 0's bodies are held only for a continuum, or when they cannot be drawn in chunks (run.cpp).
-  const double initial = s.has_continuum || !InitialStream::streamable(s.initial) ? kBodyBytes : 0;
-  items.push_back({"initial.N", "the particles: the initial condition, the engines at work, the final states",
-                   N * (initial + d(concurrent_runs(p)) * (kEngineBytes + kBodyBytes) + R * kBodyBytes)});
+  // Realization 0's bodies are held only for a continuum, or when they cannot be drawn in chunks (run.cpp);
+  // bodies that are not drawn may have unequal masses.
+  const bool drawn = InitialStream::streamable(s.initial);
+  const double initial = s.has_continuum || !drawn ? kBodyBytes : 0;
+  items.push_back({"initial.N", "the particles: the initial condition and the engines at work",
+                   N * (initial + d(concurrent_runs(p)) * particles::bytes_per_body(p, drawn))});
   items.push_back({"particles.samples", "the time series of every realization", R * samples * kSeriesColumns * 8});
   if (p.histogram_bins > 0)
     items.push_back({"particles.histogram_bins", "the velocity histograms of every realization",
@@ -62,9 +65,6 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   if (p.spacetime)
     items.push_back({"particles.spacetime", "the space-time records of every realization",
                      (R + kSpacetimeCopies) * d(p.spacetime_frames) * N * 8, "initial.N"});
-  if (!p.snapshots.empty())
-    items.push_back({"particles.snapshots", "the snapshots of every realization",
-                     R * d(p.snapshots.size()) * N * kBodyBytes});
 }
 
 // A continuum solver at work, bytes per cell (its registration's measure); a

@@ -249,6 +249,11 @@ void check_schedule(const Bodies& initial, const ParticleParams& p) {
   check_schedule(initial.size(), equal_masses(initial), p);
 }
 
+double bytes_per_body(const ParticleParams& p, bool equal_masses) {
+  if (p.solver == ParticleSolver::hull) return 20;
+  return linked(rule_of(p), equal_masses) ? 52 : 40;
+}
+
 // Bodies drawn on the fly have unit masses.
 void check_schedule(const InitialCondition& initial, const ParticleParams& p) {
   if (initial.holds_bodies()) return check_schedule(initial.bodies(), p);

@@ -64,6 +64,14 @@ void check_schedule(const Bodies& initial, const ParticleParams& params);
 // The same for realization 0 of an initial condition, held or drawn.
 void check_schedule(const InitialCondition& initial, const ParticleParams& params);
 
+// Peak memory of one run per body, in bytes: the engine's arrays while it runs,
+// or the hull's. Measured as the peak resident memory of `shockgas run` less
+// that of a run of 10 bodies, at N = 2e6 on one thread (33 bytes with equal
+// masses, 36 at N = 1e7; 48 where bodies can merge or masses differ: masses and
+// links; 13.5 for the hull, 17.5-19.8 in bench/hull_bench), rounded up;
+// tests/app/test_resources.cpp holds it against real runs.
+double bytes_per_body(const ParticleParams& params, bool equal_masses);
+
 // Mean and standard error (sample standard deviation / sqrt(count)) over the
 // realizations that reached each sample.
 struct SeriesStats {
