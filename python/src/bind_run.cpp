@@ -100,8 +100,8 @@ app::CapturedOutputs capture_single(const app::Scene& scene, const std::string& 
     app::ProgressBar bar(false, listener);
     app::compute_parts(scene, initial, bar, app::capture_into(captured));
   } else {
-    const app::RunOptions options{
-        .out_dir = out_dir, .progress = false, .plots = plots, .on_progress = listener};
+    app::RunOptions options;
+    options.out_dir = out_dir, options.progress = false, options.plots = plots, options.on_progress = listener;
     app::into_run_directory(out_dir, scene, options, [&](const std::filesystem::path& staging) {
       app::run_single(scene, initial, staging, options, app::capture_into(captured));
     });
@@ -114,11 +114,9 @@ app::CapturedOutputs capture_sweep(const app::Scene& scene, const std::string& o
                                    ProgressRelay& relay) {
   require(!out_dir.empty(), "sweep", std::string("(table)"),
           "a [sweep] scene with out=DIR: each variant is written into a directory of its own");
-  const app::RunOptions options{
-      .out_dir = out_dir,
-      .progress = false,
-      .plots = plots,
-      .on_progress = [&relay](const std::string& stage, double f, double t) { relay.report(stage, f, t); }};
+  app::RunOptions options;
+  options.out_dir = out_dir, options.progress = false, options.plots = plots;
+  options.on_progress = [&relay](const std::string& stage, double f, double t) { relay.report(stage, f, t); };
   app::SweepPlan plan = app::plan_sweep(scene);
   app::into_run_directory(out_dir, scene, options, [&](const std::filesystem::path& staging) {
     app::run_sweep(scene, plan, staging, options);
