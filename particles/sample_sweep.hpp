@@ -41,27 +41,24 @@ namespace shockgas::particles::detail {
 // The velocity sums of the moments' first pass: lane k holds its bodies' sum.
 using LaneSums = double[4];
 
-// Bodies p[0 .. n) (n >= 1; n a multiple of 4 unless the run ends its range),
-// index: that of p[0]; closes: p[0] closes the chain order (ClusterScan::add).
-// Adds the velocities to s; feeds the bodies to scan unless it returns false.
-template <bool Ring, class Body>
-bool sweep_run(const Body* p, std::size_t n, double t, std::size_t index, bool closes, LaneSums& s,
-               ClusterScan& scan, PeriodWrap& wrap) {
+// How a run's positions become the scan's: as they are (a line), in the ring's
+// first period (x - 0 is x), or shifted by the period's L k.
+enum class RunWrap { none, first, shifted };
+
+// sweep_run for one RunWrap. On a ring: the period of x0, where wrap_all wraps x
+// as x - shift, clamped to 0 outside [0, L); the caller checked that no x in
+// [lo, hi) is clamped. Positions must lie in [lo, hi): with `shifted` each one
+// is checked; in the first period x0 and the last are, and no drop means none
+// in between lies outside them (w = x there).
+template <RunWrap Wrap, class Body>
+bool sweep_run_as(const Body* p, std::size_t n, double t, std::size_t index, bool closes, LaneSums& s,
+                  ClusterScan& scan, const PeriodWrap::Period& period) {
   static_assert(sizeof(Body) == 3 * sizeof(double), "Body is x, v, t");
+  constexpr bool shifted = Wrap == RunWrap::shifted;
   const double* q = &p[0].x;  // x, v, t of body k at q + 3 k
   const ClusterCriteria& c = scan.criteria();
   const double x0 = p[0].at(t), v0 = p[0].v;
-  // On a ring: the period of x0, where wrap_all wraps x as x - shift, clamped
-  // to 0 outside [0, L). x - shift is monotone in x, so when lo - shift >= 0 and
-  // hi - shift < L, no x in [lo, hi) is clamped: the clamp goes, and the run is
-  // in order if its positions lie in [lo, hi) (else the general path).
-  const PeriodWrap::Period period = Ring ? wrap.period_of(x0) : PeriodWrap::Period{};
-  if (Ring && !(period.lo - period.shift >= 0 && period.hi - period.shift < period.L)) {
-    s[0] += v0;
-    for (std::size_t k = 1; k < n; ++k) s[k < (n & ~std::size_t{3}) ? k % 4 : 0] += p[k].v;
-    return false;
-  }
-  const double w0 = Ring ? x0 - period.shift : x0;
+  const double w0 = shifted ? x0 - period.shift : x0;
   const std::size_t whole = n & ~std::size_t{3};  // bodies 0 .. whole - 1 go to lane k mod 4
   s[0] += v0;
 
@@ -73,7 +70,7 @@ bool sweep_run(const Body* p, std::size_t n, double t, std::size_t index, bool c
   const __m128d below_hi = _mm_set1_pd(std::nextafter(period.hi, -std::numeric_limits<double>::infinity()));
   __m128d s12 = _mm_set_pd(s[2], s[1]), s30 = _mm_set_pd(s[0], s[3]);  // lanes of bodies 1, 2 and 3, 4 mod 4
   __m128d w_prev = _mm_set1_pd(w0), v_prev = _mm_set1_pd(v0);          // body k - 1 in the high half
-  __m128d off = _mm_setzero_pd();        // sign bits: a gap below 0, or (ring) a position outside the period
+  __m128d off = _mm_setzero_pd();  // sign bits: a gap below 0, or (shifted) a position outside the period
   __m128i joined = _mm_setzero_si128();  // minus the join masks: counts
   // Bodies k, k + 1: positions at t (wrapped) and velocities.
   auto load = [&](std::size_t k, __m128d& w, __m128d& v) {
@@ -83,7 +80,7 @@ bool sweep_run(const Body* p, std::size_t n, double t, std::size_t index, bool c
     v = _mm_shuffle_pd(a, e, 1);                                           // v_k, v_k+1
     const __m128d tb = _mm_shuffle_pd(b, e, 2);                            // t_k, t_k+1
     const __m128d pos = _mm_add_pd(x, _mm_mul_pd(v, _mm_sub_pd(at, tb)));  // Body::at
-    if constexpr (Ring) {
+    if constexpr (shifted) {
       off = _mm_or_pd(off, _mm_or_pd(_mm_sub_pd(pos, lo), _mm_sub_pd(below_hi, pos)));
       w = _mm_sub_pd(pos, shift);
     } else {
@@ -122,16 +119,39 @@ bool sweep_run(const Body* p, std::size_t n, double t, std::size_t index, bool c
   for (; k < n; ++k) {
     const double x = p[k].at(t), v = p[k].v;
     s[k < whole ? k % 4 : 0] += v;
-    if constexpr (Ring) dropped |= !(x >= period.lo && x < period.hi);
-    const double w = Ring ? x - period.shift : x;
+    if constexpr (shifted) dropped |= !(x >= period.lo && x < period.hi);
+    const double w = shifted ? x - period.shift : x;
     dropped |= w < w_l;
     joins += c.joins(w - w_l, v - v_l);
     w_l = w, v_l = v;
   }
+  if constexpr (Wrap == RunWrap::first) dropped |= !(x0 >= period.lo && w_l < period.hi);
   if (dropped) return false;
   scan.add(w0, v0, index, closes);
   if (n > 1) scan.add_clean(joins, w_l, v_l, index + n - 1);
   return true;
+}
+
+// Bodies p[0 .. n) (n >= 1; n a multiple of 4 unless the run ends its range),
+// index: that of p[0]; closes: p[0] closes the chain order (ClusterScan::add).
+// Adds the velocities to s; feeds the bodies to scan unless it returns false.
+template <bool Ring, class Body>
+bool sweep_run(const Body* p, std::size_t n, double t, std::size_t index, bool closes, LaneSums& s,
+               ClusterScan& scan, PeriodWrap& wrap) {
+  if constexpr (!Ring) {
+    return sweep_run_as<RunWrap::none>(p, n, t, index, closes, s, scan, {});
+  } else {
+    // x - shift is monotone in x: when lo - shift >= 0 and hi - shift < L no x
+    // in [lo, hi) is clamped. In the first period (shift 0, lo > 0), x - shift
+    // is x.
+    const PeriodWrap::Period period = wrap.period_of(p[0].at(t));
+    if (period.lo - period.shift >= 0 && period.hi - period.shift < period.L) {
+      if (period.shift == 0) return sweep_run_as<RunWrap::first>(p, n, t, index, closes, s, scan, period);
+      return sweep_run_as<RunWrap::shifted>(p, n, t, index, closes, s, scan, period);
+    }
+    for (std::size_t k = 0; k < n; ++k) s[k < (n & ~std::size_t{3}) ? k % 4 : 0] += p[k].v;
+    return false;
+  }
 }
 
 #endif

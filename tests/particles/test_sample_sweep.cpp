@@ -116,9 +116,11 @@ TEST(SampleSweep, EqualsTheGeneralPathToTheBit) {
       SCOPED_TRACE("L = " + std::to_string(L) + ", trial " + std::to_string(trial));
       const bool ring = trial % 4 != 3;
       const std::size_t n = 1 + static_cast<std::size_t>(1500 * rng.uniform());
-      // Inside the first period, from just below a boundary, or far out.
+      // Inside a period, from just below a boundary, or within rounding of 0
+      // (below the first period's lo = 2^-40 L, or in the period below).
       const double k = trial % 5 == 0 ? std::floor(rng.uniform(-1500.0, 1500.0)) : 0.0;
-      const double from = trial % 3 == 0 ? (k + 1) * L - 1e-4 * L : (k + rng.uniform(0.0, 0.5)) * L;
+      double from = trial % 3 == 0 ? (k + 1) * L - 1e-4 * L : (k + rng.uniform(0.0, 0.5)) * L;
+      if (trial % 11 == 5) from = (trial % 2 == 0 ? 1e-13 : -1e-13) * L;
       const double t = rng.uniform(0.5, 10.0);
       const std::vector<Body> b = random_bodies(rng, n, from, L, t, trial % 7 == 1 ? 97 : 0);
       const ClusterCriteria criteria = trial % 2 == 0
