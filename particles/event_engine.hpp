@@ -69,10 +69,12 @@ class EventEngine {
   template <class Fill>
   EventEngine(std::size_t n, double L, bool ring, const CollisionRule& rule, Fill&& fill)
       : EventEngine(n, L, ring, rule) {
-    load_bodies(fill);
-    if constexpr (Linked) link_all();
     slot_.reset(n_);
-    for (std::size_t i = 0; i < n_; ++i) slot_[i] = pair_time(i, 0.0);
+    load_bodies(fill);
+    if constexpr (Linked) {
+      link_all();
+      for (std::size_t i = 0; i < n_; ++i) slot_[i] = pair_time(i, 0.0);
+    }
   }
   // Without bodies yet: they come from a saved state (StateIo::restore).
   EventEngine(std::size_t n, double L, bool ring, const CollisionRule& rule)
@@ -167,22 +169,28 @@ class EventEngine {
     double at(double s) const { return x + v * (s - t); }  // position at time s
   };
 
+  // The bodies in chunks, each array written once (appended, not zeroed first);
+  // with equal masses also the slot times of each chunk's pairs while its bodies
+  // are in cache (Linked: after link_all).
   template <class Fill>
   void load_bodies(Fill& fill) {
     constexpr std::size_t chunk = 4096;
     std::vector<double> x(std::min(chunk, n_)), v(x.size()), m(x.size());
-    body_.resize(n_);
-    if constexpr (Linked) mass_.resize(n_);
+    body_.reserve(n_);
+    if constexpr (Linked) mass_.reserve(n_);
     for (std::size_t lo = 0; lo < n_; lo += chunk) {
       const std::size_t size = std::min(chunk, n_ - lo);
       fill(lo, size, x.data(), v.data(), m.data());
       if (lo == 0) m0_ = m[0];
       for (std::size_t k = 0; k < size; ++k) {
-        body_[lo + k] = {x[k], v[k], 0.0};
-        if constexpr (Linked) mass_[lo + k] = m[k];
+        body_.push_back({x[k], v[k], 0.0});
+        if constexpr (Linked) mass_.push_back(m[k]);
         assert(Linked || m[k] == m0_);
       }
+      if constexpr (!Linked)  // the pairs whose right body is loaded
+        for (std::size_t i = lo > 0 ? lo - 1 : 0; i + 1 < lo + size; ++i) slot_[i] = pair_time(i, 0.0);
     }
+    if constexpr (!Linked) slot_[n_ - 1] = pair_time(n_ - 1, 0.0);
   }
   void link_all() {
     next_.resize(n_);
