@@ -30,7 +30,9 @@
 #include "ring_wrap.hpp"
 #include "stretch_observables.hpp"
 
-#if defined(__SSE2__)
+#if defined(__AVX2__)
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
@@ -45,32 +47,78 @@ using LaneSums = double[4];
 // first period (x - 0 is x), or shifted by the period's L k.
 enum class RunWrap { none, first, shifted };
 
-// sweep_run for one RunWrap. On a ring: the period of x0, where wrap_all wraps x
-// as x - shift, clamped to 0 outside [0, L); the caller checked that no x in
-// [lo, hi) is clamped. Positions must lie in [lo, hi): with `shifted` each one
-// is checked; in the first period x0 and the last are, and no drop means none
-// in between lies outside them (w = x there).
-template <RunWrap Wrap, class Body>
-bool sweep_run_as(const Body* p, std::size_t n, double t, std::size_t index, bool closes, LaneSums& s,
-                  ClusterScan& scan, const PeriodWrap::Period& period) {
-  static_assert(sizeof(Body) == 3 * sizeof(double), "Body is x, v, t");
-  constexpr bool shifted = Wrap == RunWrap::shifted;
-  const double* q = &p[0].x;  // x, v, t of body k at q + 3 k
-  const ClusterCriteria& c = scan.criteria();
-  const double x0 = p[0].at(t), v0 = p[0].v;
-  const double w0 = shifted ? x0 - period.shift : x0;
-  const std::size_t whole = n & ~std::size_t{3};  // bodies 0 .. whole - 1 go to lane k mod 4
-  s[0] += v0;
+// What the blocks of four bodies leave to the rest of a run: the next body,
+// the joins counted, whether a pair dropped (or, shifted, a position left the
+// period), and the last body's w and v.
+struct BlockSweep {
+  std::size_t next = 1, joins = 0;
+  bool off = false;
+  double w_l = 0, v_l = 0;
+};
 
+// Bodies 1 .. 4 m of a run (x, v, t of body k at q + 3 k; 4 m + 1 <= n), four at
+// a time: body k into lane k mod 4 of s, the pairs (k - 1, k) counted. w0, v0:
+// body 0's. x < lo is x - lo < 0 and x >= hi is pred(hi) - x < 0 (for doubles,
+// a - b has the sign of the difference; +0 when equal). A gap below 0 is a drop
+// (w < w_left); so is a zero gap from -0 - +0, a false alarm that only sends
+// the run the general way.
+#if defined(__AVX2__)
+template <bool Shifted>
+BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterCriteria& c,
+                        const PeriodWrap::Period& period, double w0, double v0, LaneSums& s) {
+  const __m256d at = _mm256_set1_pd(t), max_gap = _mm256_set1_pd(c.max_gap);
+  const __m256d max_dv = _mm256_set1_pd(c.max_dv), sign = _mm256_set1_pd(-0.0);
+  const __m256d shift = _mm256_set1_pd(period.shift), lo = _mm256_set1_pd(period.lo);
+  const __m256d below_hi =
+      _mm256_set1_pd(std::nextafter(period.hi, -std::numeric_limits<double>::infinity()));
+  __m256d sums = _mm256_set_pd(s[0], s[3], s[2], s[1]);  // lanes of bodies 1, 2, 3, 4 mod 4
+  __m256d w_prev = _mm256_set1_pd(w0), v_prev = _mm256_set1_pd(v0), off = _mm256_setzero_pd();
+  __m256i joined = _mm256_setzero_si256();  // minus the join masks: counts
+  // Bodies k - 1 .. k + 2 from body k - 1 (the last of before) and k .. k + 3 (now).
+  auto shifted_in = [](__m256d before, __m256d now) {
+    return _mm256_shuffle_pd(_mm256_permute2f128_pd(before, now, 0x21), now, 0b0101);
+  };
+  std::size_t k = 1;
+  for (; k + 4 <= n; k += 4) {  // k = 1 mod 4; bodies k, k + 1 | k + 2, k + 3 in the halves
+    const __m256d a = _mm256_loadu2_m128d(q + 3 * k + 6, q + 3 * k);       // x v | x v
+    const __m256d b = _mm256_loadu2_m128d(q + 3 * k + 8, q + 3 * k + 2);   // t x | t x
+    const __m256d e = _mm256_loadu2_m128d(q + 3 * k + 10, q + 3 * k + 4);  // v t | v t
+    const __m256d x = _mm256_shuffle_pd(a, b, 0b1010), v = _mm256_shuffle_pd(a, e, 0b0101);
+    const __m256d tb = _mm256_shuffle_pd(b, e, 0b1010);
+    const __m256d pos = _mm256_add_pd(x, _mm256_mul_pd(v, _mm256_sub_pd(at, tb)));  // Body::at
+    __m256d w = pos;
+    if constexpr (Shifted) {
+      off = _mm256_or_pd(off, _mm256_or_pd(_mm256_sub_pd(pos, lo), _mm256_sub_pd(below_hi, pos)));
+      w = _mm256_sub_pd(pos, shift);
+    }
+    sums = _mm256_add_pd(sums, v);
+    const __m256d gap = _mm256_sub_pd(w, shifted_in(w_prev, w));
+    const __m256d dv = _mm256_andnot_pd(sign, _mm256_sub_pd(v, shifted_in(v_prev, v)));
+    off = _mm256_or_pd(off, gap);
+    const __m256d join =
+        _mm256_and_pd(_mm256_cmp_pd(gap, max_gap, _CMP_LT_OQ), _mm256_cmp_pd(dv, max_dv, _CMP_LT_OQ));
+    joined = _mm256_sub_epi64(joined, _mm256_castpd_si256(join));
+    w_prev = w, v_prev = v;
+  }
+  alignas(32) double lane[4];
+  _mm256_store_pd(lane, sums);
+  s[1] = lane[0], s[2] = lane[1], s[3] = lane[2], s[0] = lane[3];
+  alignas(32) std::uint64_t count[4];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(count), joined);
+  alignas(32) double last_w[4], last_v[4];
+  _mm256_store_pd(last_w, w_prev), _mm256_store_pd(last_v, v_prev);
+  return {k, count[0] + count[1] + count[2] + count[3], _mm256_movemask_pd(off) != 0, last_w[3], last_v[3]};
+}
+#else
+template <bool Shifted>
+BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterCriteria& c,
+                        const PeriodWrap::Period& period, double w0, double v0, LaneSums& s) {
   const __m128d at = _mm_set1_pd(t), max_gap = _mm_set1_pd(c.max_gap), max_dv = _mm_set1_pd(c.max_dv);
-  const __m128d sign = _mm_set1_pd(-0.0), shift = _mm_set1_pd(period.shift);
-  // x < lo is x - lo < 0 and x >= hi is pred(hi) - x < 0 (for doubles, a - b
-  // has the sign of the difference; +0 when equal).
-  const __m128d lo = _mm_set1_pd(period.lo);
+  const __m128d sign = _mm_set1_pd(-0.0), shift = _mm_set1_pd(period.shift), lo = _mm_set1_pd(period.lo);
   const __m128d below_hi = _mm_set1_pd(std::nextafter(period.hi, -std::numeric_limits<double>::infinity()));
   __m128d s12 = _mm_set_pd(s[2], s[1]), s30 = _mm_set_pd(s[0], s[3]);  // lanes of bodies 1, 2 and 3, 4 mod 4
   __m128d w_prev = _mm_set1_pd(w0), v_prev = _mm_set1_pd(v0);          // body k - 1 in the high half
-  __m128d off = _mm_setzero_pd();  // sign bits: a gap below 0, or (shifted) a position outside the period
+  __m128d off = _mm_setzero_pd();
   __m128i joined = _mm_setzero_si128();  // minus the join masks: counts
   // Bodies k, k + 1: positions at t (wrapped) and velocities.
   auto load = [&](std::size_t k, __m128d& w, __m128d& v) {
@@ -80,16 +128,13 @@ bool sweep_run_as(const Body* p, std::size_t n, double t, std::size_t index, boo
     v = _mm_shuffle_pd(a, e, 1);                                           // v_k, v_k+1
     const __m128d tb = _mm_shuffle_pd(b, e, 2);                            // t_k, t_k+1
     const __m128d pos = _mm_add_pd(x, _mm_mul_pd(v, _mm_sub_pd(at, tb)));  // Body::at
-    if constexpr (shifted) {
+    w = pos;
+    if constexpr (Shifted) {
       off = _mm_or_pd(off, _mm_or_pd(_mm_sub_pd(pos, lo), _mm_sub_pd(below_hi, pos)));
       w = _mm_sub_pd(pos, shift);
-    } else {
-      w = pos;
     }
   };
-  // The pairs (k - 1, k) and (k, k + 1) given bodies k - 1 (high halves of w_l,
-  // v_l) and k, k + 1. A gap below 0 is a drop (w < w_left); so is a zero gap
-  // from -0 - +0, a false alarm that only sends the run the general way.
+  // The pairs (k - 1, k) and (k, k + 1) given body k - 1 (high halves of w_l, v_l) and k, k + 1.
   auto pairs = [&](__m128d w_l, __m128d v_l, __m128d w, __m128d v) {
     const __m128d gap = _mm_sub_pd(w, _mm_shuffle_pd(w_l, w, 1));
     const __m128d dv = _mm_andnot_pd(sign, _mm_sub_pd(v, _mm_shuffle_pd(v_l, v, 1)));
@@ -112,23 +157,40 @@ bool sweep_run_as(const Body* p, std::size_t n, double t, std::size_t index, boo
   _mm_storel_pd(&s[3], s30), _mm_storeh_pd(&s[0], s30);
   alignas(16) std::uint64_t count[2];
   _mm_store_si128(reinterpret_cast<__m128i*>(count), joined);
-  std::size_t joins = count[0] + count[1];
-  bool dropped = _mm_movemask_pd(off) != 0;
-  double w_l = _mm_cvtsd_f64(_mm_unpackhi_pd(w_prev, w_prev));
-  double v_l = _mm_cvtsd_f64(_mm_unpackhi_pd(v_prev, v_prev));
-  for (; k < n; ++k) {
+  return {k, count[0] + count[1], _mm_movemask_pd(off) != 0, _mm_cvtsd_f64(_mm_unpackhi_pd(w_prev, w_prev)),
+          _mm_cvtsd_f64(_mm_unpackhi_pd(v_prev, v_prev))};
+}
+#endif
+
+// sweep_run for one RunWrap. On a ring: the period of x0, where wrap_all wraps x
+// as x - shift, clamped to 0 outside [0, L); the caller checked that no x in
+// [lo, hi) is clamped. Positions must lie in [lo, hi): with `shifted` each one
+// is checked; in the first period x0 and the last are, and no drop means none
+// in between lies outside them (w = x there).
+template <RunWrap Wrap, class Body>
+bool sweep_run_as(const Body* p, std::size_t n, double t, std::size_t index, bool closes, LaneSums& s,
+                  ClusterScan& scan, const PeriodWrap::Period& period) {
+  static_assert(sizeof(Body) == 3 * sizeof(double), "Body is x, v, t");
+  constexpr bool shifted = Wrap == RunWrap::shifted;
+  const ClusterCriteria& c = scan.criteria();
+  const double x0 = p[0].at(t), v0 = p[0].v;
+  const double w0 = shifted ? x0 - period.shift : x0;
+  const std::size_t whole = n & ~std::size_t{3};  // bodies 0 .. whole - 1 go to lane k mod 4
+  s[0] += v0;
+  BlockSweep r = sweep_blocks<shifted>(&p[0].x, n, t, c, period, w0, v0, s);
+  for (std::size_t k = r.next; k < n; ++k) {
     const double x = p[k].at(t), v = p[k].v;
     s[k < whole ? k % 4 : 0] += v;
-    if constexpr (shifted) dropped |= !(x >= period.lo && x < period.hi);
+    if constexpr (shifted) r.off |= !(x >= period.lo && x < period.hi);
     const double w = shifted ? x - period.shift : x;
-    dropped |= w < w_l;
-    joins += c.joins(w - w_l, v - v_l);
-    w_l = w, v_l = v;
+    r.off |= w < r.w_l;
+    r.joins += c.joins(w - r.w_l, v - r.v_l);
+    r.w_l = w, r.v_l = v;
   }
-  if constexpr (Wrap == RunWrap::first) dropped |= !(x0 >= period.lo && w_l < period.hi);
-  if (dropped) return false;
+  if constexpr (Wrap == RunWrap::first) r.off |= !(x0 >= period.lo && r.w_l < period.hi);
+  if (r.off) return false;
   scan.add(w0, v0, index, closes);
-  if (n > 1) scan.add_clean(joins, w_l, v_l, index + n - 1);
+  if (n > 1) scan.add_clean(r.joins, r.w_l, r.v_l, index + n - 1);
   return true;
 }
 
