@@ -13,6 +13,7 @@
 
 #include "event_engine.hpp"
 #include "ring_wrap.hpp"
+#include "sample_sweep.hpp"
 #include "stretch_observables.hpp"
 #include "window_domain.hpp"
 
@@ -31,14 +32,11 @@ class DomainSampler {
     StretchPart p;
     p.count = d.count, p.dissipated = d.dissipated;
     d.count = {}, d.dissipated = 0;
-    if constexpr (Linked)
-      moments_linked(d, p);
-    else
-      moments_equal(d, p);
     if (spec_.clusters) {
       ClusterScan scan(spec_);
       PeriodWrap wrap(spec_.L);
       if constexpr (Linked) {
+        moments_linked(d, p);
         std::size_t previous = d.head;
         for_each(d, [&](std::size_t i) {
           const double x = e_.body_[i].at(t);
@@ -46,12 +44,14 @@ class DomainSampler {
           previous = i;
         });
       } else {
-        for_ranges(d, [&](std::size_t lo, std::size_t hi) {
-          scan_range(lo, hi, t, lo == 0 && lo != d.head, scan, wrap);
-        });
+        sweep_equal(d, t, p, scan, wrap);
       }
       p.clusters = scan.part();
       if (out_of_order(p.clusters, spec_)) sorted = sorted_of(d, t, p.clusters);
+    } else if constexpr (Linked) {
+      moments_linked(d, p);
+    } else {
+      moments_equal(d, p);
     }
     p.taken = true;
     return p;
@@ -85,43 +85,84 @@ class DomainSampler {
     });
   }
   // Equal masses m: M = k m, P = m sum v, C = m sum (v - mean)^2, each sum in
-  // four lanes (the additions of one lane wait on each other; four overlap).
+  // four lanes (the additions of one lane wait on each other; four overlap):
+  // body i of a range lo .. hi in lane (i - lo) mod 4, the last (hi - lo) mod 4
+  // in lane 0.
   void moments_equal(const Domain& d, StretchPart& p) const {
     const typename Engine::Body* body = e_.body_.data();
-    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    double s[4] = {0, 0, 0, 0};
     for_ranges(d, [&](std::size_t lo, std::size_t hi) {
       std::size_t i = lo;
       for (; i + 4 <= hi; i += 4)
-        s0 += body[i].v, s1 += body[i + 1].v, s2 += body[i + 2].v, s3 += body[i + 3].v;
-      for (; i < hi; ++i) s0 += body[i].v;
+        s[0] += body[i].v, s[1] += body[i + 1].v, s[2] += body[i + 2].v, s[3] += body[i + 3].v;
+      for (; i < hi; ++i) s[0] += body[i].v;
       p.bodies += hi - lo;
     });
+    spread_equal(d, s, p);
+  }
+  // The moments from the lane sums of v (p.bodies counted), with the second pass.
+  void spread_equal(const Domain& d, const double (&s)[4], StretchPart& p) const {
+    const typename Engine::Body* body = e_.body_.data();
     const double m = e_.m0_;
     p.mass = static_cast<double>(p.bodies) * m;
-    p.momentum = m * ((s0 + s1) + (s2 + s3));
+    p.momentum = m * ((s[0] + s[1]) + (s[2] + s[3]));
     const double mean = p.momentum / p.mass;
-    s0 = s1 = s2 = s3 = 0;
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
     auto sq = [&](std::size_t i) { return (body[i].v - mean) * (body[i].v - mean); };
     for_ranges(d, [&](std::size_t lo, std::size_t hi) {
       std::size_t i = lo;
+#if defined(__SSE2__)
+      // Lanes 0, 1 and 2, 3 two at a time: the same operations.
+      const __m128d mu = _mm_set1_pd(mean);
+      __m128d s01 = _mm_set_pd(s1, s0), s23 = _mm_set_pd(s3, s2);
+      auto sq2 = [&](std::size_t j) {
+        const __m128d dv = _mm_sub_pd(_mm_loadh_pd(_mm_load_sd(&body[j].v), &body[j + 1].v), mu);
+        return _mm_mul_pd(dv, dv);
+      };
+      for (; i + 4 <= hi; i += 4) s01 = _mm_add_pd(s01, sq2(i)), s23 = _mm_add_pd(s23, sq2(i + 2));
+      _mm_storel_pd(&s0, s01), _mm_storeh_pd(&s1, s01), _mm_storel_pd(&s2, s23), _mm_storeh_pd(&s3, s23);
+#endif
       for (; i + 4 <= hi; i += 4) s0 += sq(i), s1 += sq(i + 1), s2 += sq(i + 2), s3 += sq(i + 3);
       for (; i < hi; ++i) s0 += sq(i);
     });
     p.spread = m * ((s0 + s1) + (s2 + s3));
   }
-  // The cluster scan of bodies lo .. hi - 1 (equal masses), in runs: positions
-  // at t wrapped together, then the pairs. closes: body lo closes the chain.
-  void scan_range(std::size_t lo, std::size_t hi, double t, bool closes, ClusterScan& scan,
-                  PeriodWrap& wrap) const {
-    constexpr std::size_t run = 256;
-    std::array<double, run> x, w, v;
-    for (std::size_t b = lo; b < hi; b += run) {
-      const std::size_t n = std::min(run, hi - b);
-      for (std::size_t k = 0; k < n; ++k) x[k] = e_.body_[b + k].at(t), v[k] = e_.body_[b + k].v;
-      if (spec_.ring) wrap.wrap_all(x.data(), w.data(), n);
-      scan.add_run(spec_.ring ? w.data() : x.data(), v.data(), n, b, closes && b == lo);
-    }
+  // Moments and cluster scan of an equal-mass domain: one pass for the sums of
+  // v and the clusters (sample_sweep.hpp) in runs, the general scan for the
+  // runs that need it, then the spread's pass.
+  void sweep_equal(const Domain& d, double t, StretchPart& p, ClusterScan& scan, PeriodWrap& wrap) const {
+#if defined(__SSE2__)
+    double s[4] = {0, 0, 0, 0};
+    const typename Engine::Body* body = e_.body_.data();
+    for_ranges(d, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t b = lo; b < hi; b += run) {
+        const std::size_t n = std::min(run, hi - b);
+        const bool closes = b == 0 && lo != d.head;
+        const bool swept = spec_.ring ? sweep_run<true>(body + b, n, t, b, closes, s, scan, wrap)
+                                      : sweep_run<false>(body + b, n, t, b, closes, s, scan, wrap);
+        if (!swept) scan_run(b, n, t, closes, scan, wrap);
+      }
+      p.bodies += hi - lo;
+    });
+    spread_equal(d, s, p);
+#else
+    moments_equal(d, p);
+    for_ranges(d, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t b = lo; b < hi; b += run)
+        scan_run(b, std::min(run, hi - b), t, b == 0 && lo != d.head, scan, wrap);
+    });
+#endif
   }
+  // The cluster scan of bodies b .. b + n - 1 (equal masses, n <= run): positions
+  // at t wrapped together, then the pairs. closes: body b closes the chain.
+  void scan_run(std::size_t b, std::size_t n, double t, bool closes, ClusterScan& scan,
+                PeriodWrap& wrap) const {
+    std::array<double, run> x, w, v;
+    for (std::size_t k = 0; k < n; ++k) x[k] = e_.body_[b + k].at(t), v[k] = e_.body_[b + k].v;
+    if (spec_.ring) wrap.wrap_all(x.data(), w.data(), n);
+    scan.add_run(spec_.ring ? w.data() : x.data(), v.data(), n, b, closes);
+  }
+  static constexpr std::size_t run = 256;  // bodies per run of the scan (a multiple of 4)
   // f(lo, hi) for the index ranges of d's bodies (equal masses): one, or two
   // where the domain wraps past the last body of a ring.
   template <class F>

@@ -28,6 +28,10 @@
 #include <cstdint>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "event_tree.hpp"
 #include "huge_page_allocator.hpp"
 #include "shockgas/particles/collision.hpp"
@@ -69,10 +73,12 @@ class EventEngine {
   template <class Fill>
   EventEngine(std::size_t n, double L, bool ring, const CollisionRule& rule, Fill&& fill)
       : EventEngine(n, L, ring, rule) {
-    load_bodies(fill);
-    if constexpr (Linked) link_all();
     slot_.reset(n_);
-    for (std::size_t i = 0; i < n_; ++i) slot_[i] = pair_time(i, 0.0);
+    load_bodies(fill);
+    if constexpr (Linked) {
+      link_all();
+      for (std::size_t i = 0; i < n_; ++i) slot_[i] = pair_time(i, 0.0);
+    }
   }
   // Without bodies yet: they come from a saved state (StateIo::restore).
   EventEngine(std::size_t n, double L, bool ring, const CollisionRule& rule)
@@ -167,22 +173,54 @@ class EventEngine {
     double at(double s) const { return x + v * (s - t); }  // position at time s
   };
 
+  // The bodies in chunks, each array written once (appended, not zeroed first);
+  // with equal masses also the slot times of each chunk's pairs while its bodies
+  // are in cache (Linked: after link_all).
   template <class Fill>
   void load_bodies(Fill& fill) {
     constexpr std::size_t chunk = 4096;
     std::vector<double> x(std::min(chunk, n_)), v(x.size()), m(x.size());
-    body_.resize(n_);
-    if constexpr (Linked) mass_.resize(n_);
+    body_.reserve(n_);
+    if constexpr (Linked) mass_.reserve(n_);
     for (std::size_t lo = 0; lo < n_; lo += chunk) {
       const std::size_t size = std::min(chunk, n_ - lo);
       fill(lo, size, x.data(), v.data(), m.data());
       if (lo == 0) m0_ = m[0];
       for (std::size_t k = 0; k < size; ++k) {
-        body_[lo + k] = {x[k], v[k], 0.0};
-        if constexpr (Linked) mass_[lo + k] = m[k];
+        body_.push_back({x[k], v[k], 0.0});
+        if constexpr (Linked) mass_.push_back(m[k]);
         assert(Linked || m[k] == m0_);
       }
+      if constexpr (!Linked) loaded_slot_times(lo > 0 ? lo - 1 : 0, lo + size - 1);  // right body loaded
     }
+    if constexpr (!Linked) slot_[n_ - 1] = pair_time(n_ - 1, 0.0);
+  }
+  // slot_[i] = pair_time(i, 0) for i = first .. last - 1 (pairs (i, i + 1), equal
+  // masses): contact_time's operations, two pairs at a time without branches.
+  void loaded_slot_times(std::size_t first, std::size_t last) {
+    std::size_t i = first;
+#if defined(__SSE2__)
+    const double* q = &body_[0].x;  // x, v, t of body i at q + 3 i
+    const __m128d zero = _mm_setzero_pd(), never = _mm_set1_pd(EventTree::never);
+    auto two = [&](std::size_t j, std::size_t field) {
+      return _mm_set_pd(q[3 * j + 3 + field], q[3 * j + field]);
+    };
+    for (; i + 2 <= last; i += 2) {
+      const __m128d ax = two(i, 0), av = two(i, 1), at = two(i, 2);  // bodies i, i + 1
+      const __m128d cx = two(i + 1, 0), cv = two(i + 1, 1), ct = two(i + 1, 2);
+      const __m128d g = _mm_sub_pd(av, cv);
+      const __m128d tm = _mm_max_pd(ct, at);  // std::max(a.t, c.t): c.t unless a.t >= c.t (or NaN)
+      const __m128d c_at = _mm_add_pd(cx, _mm_mul_pd(cv, _mm_sub_pd(tm, ct)));
+      const __m128d a_at = _mm_add_pd(ax, _mm_mul_pd(av, _mm_sub_pd(tm, at)));
+      const __m128d gap = _mm_sub_pd(_mm_add_pd(c_at, zero), a_at);  // shift 0
+      // std::max(y, 0.0) is maxpd(0, y): y unless 0 > y (also for NaN and -0).
+      const __m128d when = _mm_max_pd(zero, _mm_add_pd(tm, _mm_div_pd(_mm_max_pd(zero, gap), g)));
+      const __m128d approach = _mm_cmpgt_pd(g, zero);
+      const __m128d out = _mm_or_pd(_mm_and_pd(approach, when), _mm_andnot_pd(approach, never));
+      _mm_storel_pd(&slot_[i], out), _mm_storeh_pd(&slot_[i + 1], out);
+    }
+#endif
+    for (; i < last; ++i) slot_[i] = pair_time(i, 0.0);
   }
   void link_all() {
     next_.resize(n_);

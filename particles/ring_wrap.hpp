@@ -33,11 +33,20 @@ class PeriodWrap {
     return w >= L_ || w < 0 ? 0.0 : w;
   }
 
+  // The period of x: operator()(y) for y in [lo, hi) is y - shift, or 0 where
+  // that is >= L or < 0 (lo = +inf, hi = -inf when it holds no other position).
+  struct Period {
+    double lo = 0, hi = 0, shift = 0, L = 0;
+  };
+  Period period_of(double x) {
+    if (!(x >= lo_ && x < hi_)) enter(x);
+    return {lo_, hi_, L_ * k_, L_};
+  }
+
   // w[k] = operator()(x[k]) for k < n: the expression of x[0]'s period for all,
   // two at a time, unless one lies outside it (then one by one).
   void wrap_all(const double* x, double* w, std::size_t n) {
-    if (!(x[0] >= lo_ && x[0] < hi_)) enter(x[0]);
-    const double shift = L_ * k_;
+    const double shift = period_of(x[0]).shift;
     std::size_t k = 0;
     bool inside = true;
 #if defined(__SSE2__)

@@ -37,11 +37,12 @@ class SlotTimes {
   static constexpr double never = std::numeric_limits<double>::infinity();
   static constexpr std::size_t block = 8;  // slot times per cache line
 
-  // n slots, all at +inf.
+  // n slots, all at +inf (each line written once).
   void reset(std::size_t n) {
     n_ = n;
-    lines_.assign((n + block - 1) / block, Line{});
-    for (Line& line : lines_) std::fill(line.t, line.t + block, never);
+    Line unset;
+    std::fill(unset.t, unset.t + block, never);
+    lines_.assign((n + block - 1) / block, unset);
   }
   std::size_t size() const { return n_; }
   std::size_t blocks() const { return lines_.size(); }

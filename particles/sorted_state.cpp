@@ -100,13 +100,16 @@ class WindowedOrder {
   bool failed_ = false;
 };
 
-// Calls f(x, v, m) for every body, wrapped, in chain order from the seam.
+// Calls f(x, v, m) for every body, wrapped, in chain order from the seam (one
+// pass when the seam is the first body).
 template <class F>
 void from_seam(const ChainView& view, double L, bool ring, std::size_t seam, F&& f) {
-  for (const bool after : {true, false})
+  for (const bool after : {true, false}) {
+    if (!after && seam == 0) break;
     for_each_wrapped(view, L, ring, [&](std::size_t k, double x, double v, double m) {
       if ((k >= seam) == after) f(x, v, m);
     });
+  }
 }
 
 // b in the stable sort's order by x, in place through a WindowedOrder, if the

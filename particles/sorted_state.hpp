@@ -42,12 +42,12 @@ class SeamSearch {
 Bodies sorted_bodies(const ChainView& s, double L, bool ring);
 
 // The state as a StateReader: two passes over the view per read (from the
-// seam, then up to it) in chunks of ChainChunk::capacity; the view must stay
-// valid while the reader is used. Out of order from the seam (rounding), the
-// bodies pass through a window of kWindow bodies kept in order (WindowedOrder),
-// which gives the stable sort's order whenever no body lies more than the
-// window behind its place (checked by a pass at construction); else, only
-// then, through a sorted copy.
+// seam, then up to it; one when the seam is the first body) in chunks of
+// ChainChunk::capacity; the view must stay valid while the reader is used.
+// Out of order from the seam (rounding), the bodies pass through a window of
+// kWindow bodies kept in order (WindowedOrder), which gives the stable sort's
+// order whenever no body lies more than the window behind its place (checked
+// by a pass at construction); else, only then, through a sorted copy.
 class SortedState final : public StateReader {
  public:
   SortedState(const ChainView& view, double L, bool ring);

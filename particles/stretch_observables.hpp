@@ -116,7 +116,14 @@ class ClusterScan {
       for (std::size_t j = 1; j < n; ++j) p_.max_drop = std::max(p_.max_drop, w[j - 1] - w[j]);
     p_.last_w = w[n - 1], p_.last_v = v[n - 1], p_.last_index = index + n - 1;
   }
+  // After add() of a run's first body: the rest of the run, whose pairs do not
+  // drop, `joined` of them join; w, v and index of its last body.
+  void add_clean(std::size_t joined, double w, double v, std::size_t index) {
+    p_.joined += joined;
+    p_.last_w = w, p_.last_v = v, p_.last_index = index;
+  }
   const ClusterPart& part() const { return p_; }
+  const ClusterCriteria& criteria() const { return criteria_; }
 
  private:
   ClusterCriteria criteria_;

@@ -165,6 +165,7 @@ class WindowPlanner {
   // The widest pair of live bodies among slots c - w .. c + w (mod n on a ring,
   // inside the line); none if there is none.
   std::size_t widest_near(std::size_t c, std::size_t w, double t) const {
+    if constexpr (!Linked) return widest_near_equal(c, w, t);
     std::size_t best = none;
     double widest = -std::numeric_limits<double>::infinity();
     for (std::size_t d = 0; d <= 2 * w; ++d) {
@@ -174,6 +175,27 @@ class WindowPlanner {
       if (j == none) continue;
       const double g = gap(i, j, t);
       if (g > widest) widest = g, best = i;
+    }
+    return best;
+  }
+
+  // widest_near without merges: the slots in the same order, each body's
+  // position at t computed once (the right body of one pair is the left of the
+  // next, body wrap(i + 1)).
+  std::size_t widest_near_equal(std::size_t c, std::size_t w, double t) const {
+    std::size_t best = none;
+    double widest = -std::numeric_limits<double>::infinity();
+    std::size_t i = wrap(c + n() - w);
+    double xi = e_.body_[i].at(t);
+    for (std::size_t d = 0; d <= 2 * w; ++d) {
+      const std::size_t j = e_.right(i);
+      const std::size_t next = wrap(i + 1);
+      const double xj = e_.body_[next].at(t);
+      if (j != none) {
+        const double g = (xj + e_.shift(i, j)) - xi;
+        if (g > widest) widest = g, best = i;
+      }
+      i = next, xi = xj;
     }
     return best;
   }

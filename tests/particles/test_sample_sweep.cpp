@@ -1,0 +1,140 @@
+// The one-pass sweep of a run of equal-mass bodies (sample_sweep.hpp) against
+// the general path it replaces: positions at t into a buffer, wrap_all, add_run,
+// and the velocity sums in four lanes. Equal to the bit: the lane sums, every
+// field of the cluster part (also after runs that went the general way), on
+// rings (near and across period boundaries, far periods) and lines, with
+// bodies at several local times and rounding-sized drops.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "sample_sweep.hpp"
+#include "shockgas/core/random.hpp"
+
+#if defined(__SSE2__)
+
+namespace shockgas::particles::detail {
+namespace {
+
+struct Body {
+  double x, v, t;
+  double at(double s) const { return x + v * (s - t); }
+};
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void expect_same_part(const ClusterPart& a, const ClusterPart& b) {
+  EXPECT_EQ(a.joined, b.joined);
+  EXPECT_EQ(a.drops, b.drops);
+  EXPECT_TRUE(same_bits(a.max_drop, b.max_drop));
+  EXPECT_EQ(a.closing_counted, b.closing_counted);
+  EXPECT_EQ(a.closing_wrapped, b.closing_wrapped);
+  EXPECT_TRUE(same_bits(a.first_w, b.first_w));
+  EXPECT_TRUE(same_bits(a.first_v, b.first_v));
+  EXPECT_TRUE(same_bits(a.last_w, b.last_w));
+  EXPECT_TRUE(same_bits(a.last_v, b.last_v));
+  EXPECT_EQ(a.first_index, b.first_index);
+  EXPECT_EQ(a.last_index, b.last_index);
+}
+
+// The general path for bodies p[0 .. n), and the lane sums as DomainSampler's
+// first moments pass adds them (body k of the range in lane k mod 4, the last
+// n mod 4 in lane 0).
+void general(const Body* p, std::size_t n, double t, std::size_t index, bool closes, double (&s)[4],
+             ClusterScan& scan, PeriodWrap& wrap, bool ring) {
+  std::vector<double> x(n), w(n), v(n);
+  for (std::size_t k = 0; k < n; ++k) x[k] = p[k].at(t), v[k] = p[k].v;
+  if (ring) wrap.wrap_all(x.data(), w.data(), n);
+  scan.add_run(ring ? w.data() : x.data(), v.data(), n, index, closes);
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) s[0] += p[k].v, s[1] += p[k + 1].v, s[2] += p[k + 2].v, s[3] += p[k + 3].v;
+  for (; k < n; ++k) s[0] += p[k].v;
+}
+
+// A chain of n bodies from position `from`: gaps mostly small (clusters), some
+// wide, some rounding-sized drops (drop_every > 0), local times before t.
+std::vector<Body> random_bodies(Rng& rng, std::size_t n, double from, double L, double t, int drop_every) {
+  std::vector<Body> b(n);
+  double at = from;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double u = rng.uniform();
+    at += u < 0.6 ? rng.uniform(0.0, 1e-6) * L : rng.uniform(0.0, 2e-3) * L;
+    const double v = u < 0.3 ? 0.25 : rng.uniform(-1.0, 1.0);
+    const double tb = rng.uniform() < 0.5 ? t : rng.uniform(0.0, t);
+    b[k] = {at - v * (t - tb), v, tb};
+    if (drop_every > 0 && k > 0 && k % static_cast<std::size_t>(drop_every) == 0)
+      b[k] = {std::nextafter(b[k - 1].at(t), -1e300), v, t};
+  }
+  return b;
+}
+
+// Runs as DomainSampler cuts a range: of `run` bodies, the last shorter.
+void expect_sweep_equals_general(const std::vector<Body>& b, double t, double L, bool ring,
+                                 const ClusterCriteria& criteria, std::size_t& swept) {
+  SampleSpec spec{true, criteria, L, ring};
+  ClusterScan fast(spec), slow(spec);
+  PeriodWrap fast_wrap(L), slow_wrap(L);
+  double fs[4] = {0, 0, 0, 0}, ss[4] = {0, 0, 0, 0};
+  constexpr std::size_t run = 256;
+  for (std::size_t lo = 0; lo < b.size(); lo += run) {
+    const std::size_t n = std::min(run, b.size() - lo);
+    const bool closes = lo == 0;
+    const bool done = ring ? sweep_run<true>(b.data() + lo, n, t, lo, closes, fs, fast, fast_wrap)
+                           : sweep_run<false>(b.data() + lo, n, t, lo, closes, fs, fast, fast_wrap);
+    if (!done) {
+      double unused[4] = {0, 0, 0, 0};
+      general(b.data() + lo, n, t, lo, closes, unused, fast, fast_wrap, ring);
+    }
+    swept += done;
+    general(b.data() + lo, n, t, lo, closes, ss, slow, slow_wrap, ring);
+  }
+  for (int k = 0; k < 4; ++k) EXPECT_TRUE(same_bits(fs[k], ss[k])) << "lane " << k;
+  expect_same_part(fast.part(), slow.part());
+}
+
+// Criteria with a pair exactly on an edge (gap < max_gap and |dv| < max_dv are
+// strict): its own gap as max_gap (every |dv| below max_dv), or its own |dv|
+// as max_dv (every gap below max_gap).
+ClusterCriteria criteria_at_a_pair(const std::vector<Body>& b, double t, double L, bool ring, bool gap,
+                                   Rng& rng) {
+  if (b.size() < 2) return {0.5 * L, 0.3};
+  const std::size_t k = 1 + static_cast<std::size_t>((b.size() - 1) * rng.uniform());
+  const double w = ring ? wrap_into(b[k].at(t), L) : b[k].at(t);
+  const double w_l = ring ? wrap_into(b[k - 1].at(t), L) : b[k - 1].at(t);
+  if (gap) return {w - w_l, 10.0};
+  return {2 * L, std::abs(b[k].v - b[k - 1].v)};
+}
+
+TEST(SampleSweep, EqualsTheGeneralPathToTheBit) {
+  Rng rng(61);
+  std::size_t swept = 0, runs = 0;
+  for (double L : {1.0, 3000.0, 1e7, 0.1 * 3}) {
+    for (int trial = 0; trial < 60; ++trial) {
+      SCOPED_TRACE("L = " + std::to_string(L) + ", trial " + std::to_string(trial));
+      const bool ring = trial % 4 != 3;
+      const std::size_t n = 1 + static_cast<std::size_t>(1500 * rng.uniform());
+      // Inside a period, from just below a boundary, or within rounding of 0
+      // (below the first period's lo = 2^-40 L, or in the period below).
+      const double k = trial % 5 == 0 ? std::floor(rng.uniform(-1500.0, 1500.0)) : 0.0;
+      double from = trial % 3 == 0 ? (k + 1) * L - 1e-4 * L : (k + rng.uniform(0.0, 0.5)) * L;
+      if (trial % 11 == 5) from = (trial % 2 == 0 ? 1e-13 : -1e-13) * L;
+      const double t = rng.uniform(0.5, 10.0);
+      const std::vector<Body> b = random_bodies(rng, n, from, L, t, trial % 7 == 1 ? 97 : 0);
+      const ClusterCriteria criteria = trial % 2 == 0
+                                           ? default_cluster_criteria(0.02, 1.0)
+                                           : criteria_at_a_pair(b, t, L, ring, trial % 3 == 0, rng);
+      expect_sweep_equals_general(b, t, L, ring, criteria, swept);
+      runs += (n + 255) / 256;
+    }
+  }
+  EXPECT_GT(swept, runs / 2);  // the sweep itself was tested, not only its fallback
+  EXPECT_LT(swept, runs);      // ... and the fallback too
+}
+
+}  // namespace
+}  // namespace shockgas::particles::detail
+
+#endif
