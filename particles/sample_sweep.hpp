@@ -56,6 +56,11 @@ struct BlockSweep {
   double w_l = 0, v_l = 0;
 };
 
+// The double below hi where it is needed (a library call per run otherwise).
+inline double below(double hi, bool needed) {
+  return needed ? std::nextafter(hi, -std::numeric_limits<double>::infinity()) : hi;
+}
+
 // Bodies 1 .. 4 m of a run (x, v, t of body k at q + 3 k; 4 m + 1 <= n), four at
 // a time: body k into lane k mod 4 of s, the pairs (k - 1, k) counted. w0, v0:
 // body 0's. x < lo is x - lo < 0 and x >= hi is pred(hi) - x < 0 (for doubles,
@@ -69,8 +74,7 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
   const __m256d at = _mm256_set1_pd(t), max_gap = _mm256_set1_pd(c.max_gap);
   const __m256d max_dv = _mm256_set1_pd(c.max_dv), sign = _mm256_set1_pd(-0.0);
   const __m256d shift = _mm256_set1_pd(period.shift), lo = _mm256_set1_pd(period.lo);
-  const __m256d below_hi =
-      _mm256_set1_pd(std::nextafter(period.hi, -std::numeric_limits<double>::infinity()));
+  const __m256d below_hi = _mm256_set1_pd(below(period.hi, Shifted));
   __m256d sums = _mm256_set_pd(s[0], s[3], s[2], s[1]);  // lanes of bodies 1, 2, 3, 4 mod 4
   __m256d w_prev = _mm256_set1_pd(w0), v_prev = _mm256_set1_pd(v0), off = _mm256_setzero_pd();
   __m256i joined = _mm256_setzero_si256();  // minus the join masks: counts
@@ -115,7 +119,7 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
                         const PeriodWrap::Period& period, double w0, double v0, LaneSums& s) {
   const __m128d at = _mm_set1_pd(t), max_gap = _mm_set1_pd(c.max_gap), max_dv = _mm_set1_pd(c.max_dv);
   const __m128d sign = _mm_set1_pd(-0.0), shift = _mm_set1_pd(period.shift), lo = _mm_set1_pd(period.lo);
-  const __m128d below_hi = _mm_set1_pd(std::nextafter(period.hi, -std::numeric_limits<double>::infinity()));
+  const __m128d below_hi = _mm_set1_pd(below(period.hi, Shifted));
   __m128d s12 = _mm_set_pd(s[2], s[1]), s30 = _mm_set_pd(s[0], s[3]);  // lanes of bodies 1, 2 and 3, 4 mod 4
   __m128d w_prev = _mm_set1_pd(w0), v_prev = _mm_set1_pd(v0);          // body k - 1 in the high half
   __m128d off = _mm_setzero_pd();
