@@ -100,16 +100,29 @@ class WindowedOrder {
   bool failed_ = false;
 };
 
-// Calls f(x, v, m) for every body, wrapped, in chain order from the seam (one
-// pass when the seam is the first body).
+// Calls f(x, v, m) for every body, wrapped, in chain order from the seam. One
+// pass when at most `held` bodies lie before the seam (they wait in a buffer of
+// at most 1.5 MiB until the rest has gone), else a pass from the seam and one up
+// to it.
 template <class F>
 void from_seam(const ChainView& view, double L, bool ring, std::size_t seam, F&& f) {
-  for (const bool after : {true, false}) {
-    if (!after && seam == 0) break;
+  constexpr std::size_t held = std::size_t{1} << 16;
+  if (seam <= held) {
+    std::vector<std::array<double, 3>> before;
+    before.reserve(seam);
+    for_each_wrapped(view, L, ring, [&](std::size_t k, double x, double v, double m) {
+      if (k < seam)
+        before.push_back({x, v, m});
+      else
+        f(x, v, m);
+    });
+    for (const auto& [x, v, m] : before) f(x, v, m);
+    return;
+  }
+  for (const bool after : {true, false})
     for_each_wrapped(view, L, ring, [&](std::size_t k, double x, double v, double m) {
       if ((k >= seam) == after) f(x, v, m);
     });
-  }
 }
 
 // b in the stable sort's order by x, in place through a WindowedOrder, if the

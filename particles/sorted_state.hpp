@@ -41,9 +41,10 @@ class SeamSearch {
 // (or, when that cannot order it, through a stable sort of a copy).
 Bodies sorted_bodies(const ChainView& s, double L, bool ring);
 
-// The state as a StateReader: two passes over the view per read (from the
-// seam, then up to it; one when the seam is the first body) in chunks of
-// ChainChunk::capacity; the view must stay valid while the reader is used.
+// The state as a StateReader: one pass over the view per read from the seam
+// (the bodies before it held back, when they are few; else two passes: from the
+// seam, then up to it) in chunks of ChainChunk::capacity; the view must stay
+// valid while the reader is used.
 // Out of order from the seam (rounding), the bodies pass through a window of
 // kWindow bodies kept in order (WindowedOrder), which gives the stable sort's
 // order whenever no body lies more than the window behind its place (checked

@@ -226,6 +226,29 @@ TEST(SortedState, ABodyFarOutOfPlaceReadsAsTheSortedCopy) {
   }
 }
 
+// The bodies before the seam are held back while the rest is read when they are
+// few (up to 2^16), and read in a second pass when they are many: both in the
+// sorted copy's order, bit for bit, in order from the seam and misordered.
+TEST(SortedState, ManyOrFewBodiesBeforeTheSeamReadAsTheSortedCopy) {
+  Rng rng(29);
+  for (const double start : {0.999, 0.6}) {  // about 200 and 80000 bodies before the seam
+    for (const bool misordered : {false, true}) {
+      SCOPED_TRACE("start " + std::to_string(start) + (misordered ? ", misordered" : ""));
+      Chain c;
+      const std::size_t n = 200000;
+      c.L = static_cast<double>(n), c.particles = n;
+      for (std::size_t b = 0; b < n; ++b) {
+        c.first.push_back(b);
+        c.x.push_back(start * c.L + static_cast<double>(b) + rng.uniform(0.0, 0.5));
+        c.v.push_back(rng.uniform(-1.0, 1.0));
+        c.m.push_back(1.0);
+      }
+      if (misordered) c.x[150000] = std::nextafter(c.x[149999], 0.0);  // a rounding-sized drop
+      expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, true)), ref_sorted(c, true));
+    }
+  }
+}
+
 // Merging gas (r = 0, delta = 0): every body is its own cluster.
 TEST(ChainObservables, MergedBodiesAreCountedOneEach) {
   Rng rng(24);
