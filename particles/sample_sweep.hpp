@@ -9,7 +9,8 @@
 //
 // The numbers are those of the general path, operation for operation:
 //  * position x + v (t - t_body) (Body::at), on a ring wrapped as wrap_all does
-//    for a run inside the period of its first body, x - L k with the same clamp;
+//    for a run inside the period of its first body, x - L k (its clamp to 0
+//    outside [0, L) is checked, once per period, not to act there; see sweep_run);
 //  * pairs as add_run: gap w - w_left, join when gap < max_gap and
 //    |v - v_left| < max_dv (ClusterCriteria::joins);
 //  * velocity sums in four lanes in the order of DomainSampler's moments: body k
