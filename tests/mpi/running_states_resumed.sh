@@ -23,7 +23,10 @@ every="output.checkpoint_minutes=0.001"
 # is written (fault point "checkpoint" on rank 0, "state" on rank 1), so the
 # signal comes after both ranks saved and before the end.
 args="run $scene --out $out/stopped --quiet --no-plots --set $every"
-"$mpirun" --allow-run-as-root --oversubscribe -np 1 env SHOCKGAS_FAULT=checkpoint:stop "$shockgas" $args : \
+# The launcher waits 30 s, not its default 1 s, before it kills the ranks it
+# forwarded the signal to, as docs/cluster.md advises: a rank of a loaded
+# machine may need more than a second to save.
+"$mpirun" --allow-run-as-root --oversubscribe --mca odls_base_sigkill_timeout 30 -np 1 env SHOCKGAS_FAULT=checkpoint:stop "$shockgas" $args : \
   -np 1 env SHOCKGAS_FAULT=state:stop "$shockgas" $args 2> "$out/stopped.stderr" &
 launcher=$!
 ranks_stopped() {  # both ranks, the launcher's children, stopped

@@ -28,7 +28,10 @@ launch() {  # RANKS ARGS...: shockgas as one process or as a job of RANKS ranks 
   if [ "$ranks" = 1 ]; then
     exec "$shockgas" "$@"
   else
-    exec "$mpirun" --allow-run-as-root --oversubscribe -np "$ranks" "$shockgas" "$@"
+    # 30 s before the launcher kills the ranks it forwarded a signal to (its
+    # default is 1 s; docs/cluster.md): a rank of a loaded machine may need more.
+    exec "$mpirun" --allow-run-as-root --oversubscribe --mca odls_base_sigkill_timeout 30 -np "$ranks" \
+      "$shockgas" "$@"
   fi
 }
 "$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every
