@@ -177,7 +177,8 @@ int dispatch(const CLI::App& app, const Arguments& args) {
 
 int run_command(int argc, char** argv) {
   CLI::App app{"shockgas: the 1-D inelastic/sticky gas and the Burgers equation, side by side"};
-  app.set_version_flag("--version", std::string("shockgas ") + kVersion + " (commit " + kGitCommit + ")");
+  app.set_version_flag("--version", std::string("shockgas ") + kVersion + " (commit " + kGitCommit +
+                                        ", built for " + kBuildTarget + ")");
   app.require_subcommand(0, 1);
   Arguments args;
   add_run(app, args);

@@ -50,6 +50,8 @@ std::vector<Declaration> provenance_and_initial() {
       key(p, "shockgas_version", "", "the program that wrote it", "",
           always([](const RunResults&) { return kVersion; })),
       key(p, "git_commit", "", "its commit", "", always([](const RunResults&) { return kGitCommit; })),
+      key(p, "build", "", "the instruction set it was compiled for (SHOCKGAS_NATIVE)", "",
+          always([](const RunResults&) { return kBuildTarget; })),
       key(p, "overrides", "", "the --set overrides, in order", "",
           always([](const RunResults& r) { return r.scene->overrides; })),
       key(i, "initial.N", "1", as_used("initial", "N"), "",

@@ -1,0 +1,33 @@
+# The instruction set of the build (SHOCKGAS_NATIVE). ON (the default where the
+# compiler accepts -march=native): every file is compiled for the build
+# machine's processor, so the engine's SIMD paths (AVX-512, AVX2) are used where
+# it has them; the binary may then not start on an older processor. OFF: the
+# compiler's portable default (baseline x86-64 on x86: SSE2).
+#
+# Either way -ffp-contract=off: a multiply and an add are never fused into one
+# FMA, so both builds compute every result to the same bits (test
+# EventTree.BlockMinimumIsThePairwiseTournament, docs/performance.md).
+include(CheckCXXCompilerFlag)
+check_cxx_compiler_flag(-march=native SHOCKGAS_COMPILER_HAS_MARCH_NATIVE)
+option(SHOCKGAS_NATIVE "Compile for the build machine's processor (-march=native); OFF: portable"
+       ${SHOCKGAS_COMPILER_HAS_MARCH_NATIVE})
+
+check_cxx_compiler_flag(-ffp-contract=off SHOCKGAS_COMPILER_HAS_FP_CONTRACT)
+if(SHOCKGAS_COMPILER_HAS_FP_CONTRACT)
+  add_compile_options(-ffp-contract=off)
+endif()
+
+if(SHOCKGAS_NATIVE)
+  add_compile_options(-march=native)
+  # The processor GCC resolved -march=native to, for the record (version.hpp).
+  set(_march "")
+  execute_process(COMMAND ${CMAKE_CXX_COMPILER} -march=native -Q --help=target
+                  OUTPUT_VARIABLE _target ERROR_QUIET RESULT_VARIABLE _rc)
+  if(_rc EQUAL 0 AND _target MATCHES "-march=[ \t]*([^ \t\n]+)")
+    set(_march " = ${CMAKE_MATCH_1}")
+  endif()
+  set(SHOCKGAS_BUILD_TARGET "native (-march=native${_march})")
+else()
+  set(SHOCKGAS_BUILD_TARGET "portable (the compiler's default target)")
+endif()
+message(STATUS "shockgas instruction set: ${SHOCKGAS_BUILD_TARGET}; SHOCKGAS_NATIVE=OFF for a portable build")
