@@ -1,16 +1,28 @@
-# The instruction set of the build (SHOCKGAS_NATIVE). ON (the default where the
-# compiler accepts -march=native): every file is compiled for the build
+# The instruction set of the build (SHOCKGAS_NATIVE). ON (the default on x86-64
+# where the compiler accepts -march=native): every file is compiled for the build
 # machine's processor, so the engine's SIMD paths (AVX-512, AVX2) are used where
 # it has them; the binary may then not start on an older processor. OFF: the
 # compiler's portable default (baseline x86-64 on x86: SSE2).
 #
 # Either way -ffp-contract=off: a multiply and an add are never fused into one
-# FMA, so both builds compute every result to the same bits (test
-# EventTree.BlockMinimumIsThePairwiseTournament, docs/performance.md).
+# FMA, so both builds compute every result to the same bits (the engine's SIMD
+# paths: test EventTree.ReplaceThreeIsSetAndRefresh; whole runs compared in
+# docs/performance.md).
+#
+# Eigen sums in packets of the vector width, so its fits (compare/statistics.cpp)
+# would change in the last bits with AVX: that file keeps the portable x86-64
+# target (it is the only one that includes Eigen), and SHOCKGAS_NATIVE defaults
+# to ON only on x86-64, where that target is known.
 include(CheckCXXCompilerFlag)
 check_cxx_compiler_flag(-march=native SHOCKGAS_COMPILER_HAS_MARCH_NATIVE)
+set(_native_default OFF)
+if(SHOCKGAS_COMPILER_HAS_MARCH_NATIVE AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
+  set(_native_default ON)
+endif()
 option(SHOCKGAS_NATIVE "Compile for the build machine's processor (-march=native); OFF: portable"
-       ${SHOCKGAS_COMPILER_HAS_MARCH_NATIVE})
+       ${_native_default})
+# The options that put a file back on the portable target (compare/CMakeLists.txt).
+set(SHOCKGAS_PORTABLE_OPTIONS "")
 
 check_cxx_compiler_flag(-ffp-contract=off SHOCKGAS_COMPILER_HAS_FP_CONTRACT)
 if(SHOCKGAS_COMPILER_HAS_FP_CONTRACT)
@@ -19,6 +31,9 @@ endif()
 
 if(SHOCKGAS_NATIVE)
   add_compile_options(-march=native)
+  if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
+    set(SHOCKGAS_PORTABLE_OPTIONS -march=x86-64 -mtune=generic)
+  endif()
   # The processor GCC resolved -march=native to, for the record (version.hpp).
   set(_march "")
   execute_process(COMMAND ${CMAKE_CXX_COMPILER} -march=native -Q --help=target
