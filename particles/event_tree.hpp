@@ -34,10 +34,7 @@
 #include <limits>
 #include <vector>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include "block_minimum.hpp"
 #include "slot_times.hpp"
 
 namespace shockgas::particles {
@@ -52,7 +49,7 @@ class EventTree {
   static constexpr std::size_t block = SlotTimes::block;
   // Node storage of a tree of nb blocks: 2 nb keys and 2 nb slots.
   static constexpr std::size_t nodes(std::size_t nb) { return 2 * nb; }
-  using Key = std::int64_t;
+  using Key = detail::TimeKey;
 
   EventTree() = default;
   // A standalone tree over n slots of its own, all at +inf.
@@ -145,6 +142,37 @@ class EventTree {
       return refresh_block(ba);
     refresh_two(position(ba), position(bb));
   }
+  // Slots p, p + 1 and p + 2 (past the last slot: 0, 1) := tp, +inf, tj, then
+  // refreshed: a bounce's three slots, all in the run, as set() thrice and
+  // refresh(p, p + 2). With AVX-512 the times are merged into their lines in a
+  // register, each line is stored whole and its minimum read off the register:
+  // no load of a line just written by narrower stores, which cannot be served
+  // from them and waits until they reach the cache (a failed store forward).
+  [[gnu::always_inline]] void replace_three(std::size_t p, double tp, double tj) {
+#if defined(__AVX512F__)
+    const std::size_t b = p / block, pos = position(b);
+    const detail::ThreeTimes three(p % block, tp, never, tj);
+    const std::size_t lines = three.one_line() ? 1 : 2;
+    if (p + 2 < times_->size() && owns_lines(pos, lines)) [[likely]] {
+      double* line = time_ + b * block;
+      const __m512d first = three.merged(line, 0);
+      _mm512_store_pd(line, first);
+      if (lines == 1) [[likely]] {
+        put(nb_ + pos, node_of(detail::lane_winner(first), b));
+        return climb(nb_ + pos);
+      }
+      const __m512d second = three.merged(line + block, 1);
+      _mm512_store_pd(line + block, second);
+      return refresh_two(pos, pos + 1, node_of(detail::lane_winner(first), b),
+                         node_of(detail::lane_winner(second), b + 1));
+    }
+#endif
+    const std::size_t n = times_->size(), i = p + 1 == n ? 0 : p + 1, j = i + 1 == n ? 0 : i + 1;
+    set(p, tp);
+    set(i, never);
+    set(j, tj);
+    refresh(p, j);
+  }
   // Hints the cache about a slot's block and the deep part of its path.
   void prefetch_path(std::size_t slot) const {
     prefetch_line(time_ + slot);
@@ -154,26 +182,9 @@ class EventTree {
 
  private:
   friend struct detail::StateIo;  // saves and restores the nodes as they are
-  // Event times are >= 0 (or +inf), and for such doubles the order of their bit
-  // patterns read as signed integers is the order of the numbers: an integer
-  // compare and a conditional move take 2 cycles against 4 for a floating-point
-  // minimum, which matters on the climb's serial chain. (A NaN would sort after
-  // +inf: never.)
-  static Key key_of(double t) { return std::bit_cast<Key>(t); }
-  // (t, slot) := (u, at) if u < t: compare and two conditional moves. Written as
-  // assembly on x86-64 because GCC 12 turns the equivalent ternaries into
-  // branches, which mispredict half the time here. Ties keep (t, slot).
+  static Key key_of(double t) { return detail::key_of(t); }
   static void take_earlier(Key& t, std::uint32_t& slot, Key u, std::uint32_t at) {
-#if defined(__x86_64__)
-    asm("cmpq %[u], %[t]\n\tcmovgq %[u], %[t]\n\tcmovgl %[at], %[slot]"
-        : [t] "+r"(t), [slot] "+r"(slot)
-        : [u] "r"(u), [at] "r"(at)
-        : "cc");
-#else
-    const bool take = u < t;
-    slot = take ? at : slot;
-    t = take ? u : t;
-#endif
+    detail::take_earlier(t, slot, u, at);
   }
   struct Node {
     Key t;               // winner's event time, as key_of
@@ -192,33 +203,15 @@ class EventTree {
   [[gnu::always_inline]] Node block_winner(std::size_t p, std::size_t b) const {
     if (p - 1 >= nb_ - 2) [[unlikely]]  // the first or the last (or nb <= 2)
       if ((p == 0 && head_partial_) || (p == nb_ - 1 && tail_partial_)) return partial_winner(p);
-    const double* t = time_ + b * block;
-#if defined(__SSE2__)
-    // The smallest of the 8 in three packed minima, then its first slot by an
-    // equality mask: the same winner as the pairwise tournament (the earliest
-    // slot of the tied ones), in fewer instructions. Times are never NaN.
-    const __m128d a = _mm_load_pd(t), c = _mm_load_pd(t + 2), e = _mm_load_pd(t + 4), g = _mm_load_pd(t + 6);
-    const __m128d m2 = _mm_min_pd(_mm_min_pd(a, c), _mm_min_pd(e, g));
-    const __m128d m1 = _mm_min_sd(m2, _mm_unpackhi_pd(m2, m2));
-    const __m128d m = _mm_unpacklo_pd(m1, m1);
-    const unsigned mask = static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(a, m))) |
-                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(c, m))) << 2 |
-                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(e, m))) << 4 |
-                          static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(g, m))) << 6;
-    return Node{key_of(_mm_cvtsd_f64(m1)), static_cast<std::uint32_t>(b * block) + std::countr_zero(mask)};
-#else
-    Key k0 = key_of(t[0]), k1 = key_of(t[1]), k2 = key_of(t[2]), k3 = key_of(t[3]);
-    Key k4 = key_of(t[4]), k5 = key_of(t[5]), k6 = key_of(t[6]), k7 = key_of(t[7]);
-    std::uint32_t a0 = 0, a2 = 2, a4 = 4, a6 = 6;
-    take_earlier(k0, a0, k1, 1);
-    take_earlier(k2, a2, k3, 3);
-    take_earlier(k4, a4, k5, 5);
-    take_earlier(k6, a6, k7, 7);
-    take_earlier(k0, a0, k2, a2);
-    take_earlier(k4, a4, k6, a6);
-    take_earlier(k0, a0, k4, a4);
-    return Node{k0, static_cast<std::uint32_t>(b * block) + a0};
-#endif
+    return node_of(detail::lane_winner(time_ + b * block), b);
+  }
+  static Node node_of(detail::LaneWinner w, std::size_t b) {
+    return Node{w.t, static_cast<std::uint32_t>(b * block) + w.lane};
+  }
+  // Whether the lines at positions pos .. pos + count - 1 hold only the run's
+  // slots (and padding): the first and last may be shared with a neighbouring run.
+  bool owns_lines(std::size_t pos, std::size_t count) const {
+    return (pos > 0 || !head_partial_) && (pos + count < nb_ || !tail_partial_);
   }
   // A first or last block shared with a neighbouring run: only the run's slots
   // are read (another thread may be writing the others).
@@ -250,8 +243,14 @@ class EventTree {
   // up), then one climb; leaves at two depths (rare) take a climb each, the
   // second redoing the common part with both leaves new.
   [[gnu::noinline]] void refresh_two(std::size_t a, std::size_t b) {
+    join_paths(a, b, block_winner(a, block_at(a)), block_winner(b, block_at(b)));
+  }
+  // The same with the leaves' new winners wa and wb.
+  [[gnu::noinline]] void refresh_two(std::size_t a, std::size_t b, Node wa, Node wb) {
+    join_paths(a, b, wa, wb);
+  }
+  [[gnu::always_inline]] void join_paths(std::size_t a, std::size_t b, Node wa, Node wb) {
     std::size_t ka = nb_ + a, kb = nb_ + b;
-    const Node wa = block_winner(a, block_at(a)), wb = block_winner(b, block_at(b));
     const bool same_a = wa.t == key_[ka] && wa.slot == win_[ka],
                same_b = wb.t == key_[kb] && wb.slot == win_[kb];
     put(ka, wa);

@@ -116,10 +116,7 @@ class DomainStepper<false> {
     double tp, tj;
     two_contact_times(t, (x + (i == 0 ? e_.L_ : 0.0)) - bp.at(t), bp.v - v1,
                       (bk.at(t) + (k == 0 ? e_.L_ : 0.0)) - xj, u1 - bk.v, tp, tj);
-    d.tree.set(p, tp);
-    d.tree.set(i, EventTree::never);  // i and j separate
-    d.tree.set(j, tj);
-    d.tree.refresh(p, j);
+    d.tree.replace_three(p, tp, tj);  // i and j separate: slot i at +inf
     return !stalls(d);
   }
 

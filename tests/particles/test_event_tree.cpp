@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 
 #include "event_tree.hpp"
 #include "shockgas/core/random.hpp"
@@ -56,6 +59,49 @@ TEST(EventTree, HintIsTheRunnerUpAlongTheRefreshedPath) {
   EXPECT_EQ(tree.top(), near);
   EXPECT_EQ(tree.hint(), far);
   EXPECT_FALSE(EventTree(1000).hinting());  // small trees: no hint work in the climb
+}
+
+// A bounce's three slots at once (replace_three: with AVX-512, merged into their
+// lines in registers) leave the times and every node exactly as three set()
+// calls and refresh(p, p + 2) do (the block minimum of the portable build), on
+// runs that start and end inside a line shared with a neighbouring run (whose
+// slots it must not write) and wrap past the ring's last slot. Times from a few
+// values, so that ties are common and the lane a minimum is taken from shows.
+TEST(EventTree, ReplaceThreeIsSetAndRefresh) {
+  struct Run {
+    std::size_t n, first, last;
+  };
+  for (const Run run :
+       {Run{1000, 0, 999}, Run{1003, 5, 1001}, Run{1003, 13, 15}, Run{1000, 990, 20}, Run{4099, 3, 4094}}) {
+    SCOPED_TRACE(testing::Message() << run.n << " " << run.first << " " << run.last);
+    Rng rng(run.n + run.first);
+    SlotTimes fast, plain;
+    fast.reset(run.n), plain.reset(run.n);
+    const double outside = -1.0;  // the neighbours' slots: never written by the run
+    const std::size_t length = (run.last + run.n - run.first) % run.n + 1;
+    for (std::size_t s = 0; s < run.n; ++s) fast[s] = plain[s] = outside;
+    for (std::size_t k = 0; k < length; ++k)
+      fast[(run.first + k) % run.n] = plain[(run.first + k) % run.n] = 7.0;
+    EventTree a, b;
+    a.attach(fast, run.first, run.last);
+    b.attach(plain, run.first, run.last);
+    for (int step = 0; step < 20000; ++step) {
+      const std::size_t p = (run.first + static_cast<std::size_t>(rng.uniform() * (length - 2))) % run.n;
+      const double tp = std::floor(rng.uniform(0.0, 8.0)), tj = rng.uniform() < 0.2 ? EventTree::never : 3.0;
+      a.replace_three(p, tp, tj);
+      const std::size_t i = (p + 1) % run.n, j = (p + 2) % run.n;
+      b.set(p, tp), b.set(i, EventTree::never), b.set(j, tj);
+      b.refresh(p, j);
+      ASSERT_EQ(a.top(), b.top());
+      ASSERT_EQ(a.top_time(), b.top_time());
+    }
+    for (std::size_t k = 0; k < a.node_count(); ++k) {
+      ASSERT_EQ(a.node_keys()[k], b.node_keys()[k]) << k;
+      ASSERT_EQ(a.node_slots()[k], b.node_slots()[k]) << k;
+    }
+    for (std::size_t s = 0; s < run.n; ++s)
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(fast[s]), std::bit_cast<std::uint64_t>(plain[s])) << s;
+  }
 }
 
 }  // namespace
