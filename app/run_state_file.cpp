@@ -177,6 +177,16 @@ std::uint64_t size_of(const fs::path& file) {
   return ec ? 0 : size;
 }
 
+// The header of a state file; InputError (damaged) where it cannot be read.
+RunStateHeader header_of(const fs::path& file) {
+  try {
+    FileIn in(file, size_of(file));
+    return read_header(in, file);
+  } catch (const RunError& e) {
+    throw damaged(file, e.what());
+  }
+}
+
 // Hashes the first `end` bytes of file.
 std::uint64_t hash_of(const fs::path& file, std::uint64_t end) {
   FileIn in(file, end);
@@ -239,13 +249,7 @@ std::vector<RunStateHeader> read_run_state_headers(const fs::path& dir) {
   std::vector<RunStateHeader> out;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    if (!is_run_state_file(entry.path().filename())) continue;
-    try {
-      FileIn in(entry.path(), size_of(entry.path()));
-      out.push_back(read_header(in, entry.path()));
-    } catch (const RunError& e) {
-      throw damaged(entry.path(), e.what());
-    }
+    if (is_run_state_file(entry.path().filename())) out.push_back(header_of(entry.path()));
   }
   return out;
 }
@@ -253,12 +257,7 @@ std::vector<RunStateHeader> read_run_state_headers(const fs::path& dir) {
 std::optional<RunStateHeader> read_run_state_header(const fs::path& file) {
   std::error_code ec;
   if (!fs::is_regular_file(file, ec)) return std::nullopt;
-  try {
-    FileIn in(file, size_of(file));
-    return read_header(in, file);
-  } catch (const RunError& e) {
-    throw damaged(file, e.what());
-  }
+  return header_of(file);
 }
 
 std::unique_ptr<particles::RunStateReader> open_run_state(const fs::path& file) {
