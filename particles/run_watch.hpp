@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/core/progress.hpp"
@@ -47,6 +48,11 @@ struct RunWatch {
     if (saves_on_request()) save_and_stop(t);
     if (saves && go_on && saves->due()) saves->save(t, work_fraction(t, p.t_end), write_state);
     return go_on;
+  }
+  // Collisions before the limit stops the run (the largest count when there is none).
+  std::uint64_t collisions_left(std::uint64_t collisions) const {
+    if (p.max_collisions == 0) return std::numeric_limits<std::uint64_t>::max();
+    return collisions >= p.max_collisions ? 0 : p.max_collisions - collisions;
   }
   // Whether a checkpoint request stopped the run (tick() returned false) and it saves.
   bool saves_on_request() const { return saves && reason == StopReason::interrupted; }

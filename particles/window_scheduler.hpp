@@ -9,8 +9,8 @@
 // between its steps.
 //
 // A plan (window_plan.hpp for the cuts and their bounds) holds from its start T
-// to its horizon T_w = T + the smallest bound of its cuts, at most about 4
-// collisions per body at the last plan's rate. Each domain (the bodies between
+// to its horizon T_w = T + the smallest bound of its cuts, and for at most
+// plan_collisions(N) collisions at the last plan's rate. Each domain (the bodies between
 // two cuts) has a tournament tree of its own over its pair slots, small enough
 // for a core's caches; the trees live as long as the plan. run_until(t) runs
 // every domain to min(t, T_w) (a sub-window: snapshots and whole-state samples
@@ -105,7 +105,7 @@ class WindowScheduler {
   template <class Watch>
   std::optional<EngineStop> run_windows(double t_stop, Watch& watch, SampleBatch* batch) {
     while (!global_) {
-      if (!planned_ && !start_plan()) break;
+      if (!planned_ && !start_plan(watch.collisions_left(e_.count_[3]))) break;
       const bool to_stop = t_stop <= horizon_;  // then collisions at exactly t_stop are included
       const double end = to_stop ? t_stop : horizon_;
       bool halt = false;
@@ -135,14 +135,27 @@ class WindowScheduler {
     return std::nullopt;
   }
 
+  // The collisions a plan holds at most (at the last plan's rate): 4 per body,
+  // and at least 2^24. Each plan re-cuts the chain, rebuilds the domains' trees
+  // and loads every domain into a cache again, so a plan of a small system
+  // should hold more than a few collisions per body (docs/performance.md, "Two
+  // threads on one realization"). The stops that wait for a sub-window's end
+  // (periodic saves, the wall-clock limit, a checkpoint request in a sub-window
+  // with samples) then wait at most about 0.6 s of one core below N = 2^22, and
+  // as long as before above it.
+  static double plan_collisions(std::size_t n) { return std::max(4.0 * static_cast<double>(n), 16777216.0); }
+
   // Cuts the chain at now(); false when no cut can open (then the run goes on
-  // on the global queue).
-  bool start_plan() {
+  // on the global queue). A plan holds no more than the collisions left to
+  // the limit (but at least about N: a plan thinner than N / 64 counts as thin).
+  bool start_plan(std::uint64_t collisions_left) {
     const double t = e_.now_;
     if (!v_known_ || ++plans_ % 8 == 0) gather_velocity_range();
     const double lookahead = planner_.choose(t, v_max_ - v_min_, team_, cuts_);
     horizon_ = t + lookahead;
-    if (rate_ > 0) horizon_ = std::min(horizon_, t + 4.0 * static_cast<double>(n()) / rate_);
+    const double budget = std::min(plan_collisions(n()),
+                                   std::max(static_cast<double>(collisions_left), static_cast<double>(n())));
+    if (rate_ > 0) horizon_ = std::min(horizon_, t + budget / rate_);
     if (!(horizon_ > t)) {
       why_global_ = "no cut could open (the gas is in contact everywhere)";
       switch_to_global();
@@ -197,7 +210,7 @@ class WindowScheduler {
     for (std::size_t d = 0; d < domains_.size(); ++d) {
       const Domain& dom = domains_[d];
       const std::size_t blocks = dom.empty ? 0 : EventTree::blocks_of(e_.slot_, dom.head, before(dom.tail));
-      offset[d + 1] = offset[d] + EventTree::nodes(blocks);
+      offset[d + 1] = offset[d] + padded_nodes(blocks);
     }
     // The old nodes are not needed: a larger arena replaces the old one instead
     // of being copied from it (which would hold both at once), with room to grow.
@@ -216,6 +229,13 @@ class WindowScheduler {
                           win_.data() + offset[d]);
       }
     });
+  }
+  // A domain's nodes rounded up to whole pairs of cache lines of keys: the root
+  // of one domain, written at every collision, then shares no line with the
+  // leaves of the domain before it, which another member may be running.
+  static std::size_t padded_nodes(std::size_t blocks) {
+    constexpr std::size_t unit = 128 / sizeof(EventTree::Key);
+    return (EventTree::nodes(blocks) + unit - 1) / unit * unit;
   }
   std::size_t before(std::size_t i) const { return i == 0 ? n() - 1 : i - 1; }
   std::size_t last_live() const {
@@ -304,9 +324,12 @@ class WindowScheduler {
         d.limit = ++d.sample < samples ? batch->time(d.sample) : limit;
       }
     };
-    const std::size_t lines = prefetch_lines(end);
-    std::atomic<std::size_t> next{0};
+    const std::size_t lines_per_round = prefetch_lines(end);
+    // On a line of its own: the members claim through it, and the lines around
+    // it on member 0's stack are read by all.
+    alignas(128) std::atomic<std::size_t> next{0};
     team_.run([&](std::size_t member) {
+      const std::size_t lines = lines_per_round;  // a copy in the member's own frame
       auto claim = [&]() -> Domain* {
         for (std::size_t d = next++; d < domains_.size(); d = next++)
           if (ready(domains_[d], member)) return &domains_[d];
