@@ -324,7 +324,10 @@ class WindowScheduler {
         d.limit = ++d.sample < samples ? batch->time(d.sample) : limit;
       }
     };
-    const std::size_t lines_per_round = prefetch_lines(end);
+    const double domains = static_cast<double>(std::max<std::size_t>(domains_.size(), 1));
+    const std::size_t lines_per_round = DomainPrefetcher::lines_per_round(
+        static_cast<double>(n()) / domains, sizeof(typename Engine::Body) + sizeof(double),
+        last_rate_ * (end - e_.now_) / domains);
     // On a line of its own: the members claim through it, and the lines around
     // it on member 0's stack are read by all.
     alignas(128) std::atomic<std::size_t> next{0};
@@ -342,7 +345,7 @@ class WindowScheduler {
       auto take = [&]() {
         Domain* d = ahead;
         ahead = claim();
-        aim(prefetch, ahead);
+        prefetch.aim(ahead, e_.body_.data(), &e_.slot_[0], n());
         return d;
       };
       // Two domains at once, a step of each per round (step() is false when a
@@ -374,41 +377,6 @@ class WindowScheduler {
         }
       }
     });
-  }
-
-  // How many lines of the next domain to load per round of the streams: enough
-  // to have it all in cache when it starts. Sub-windows that hold few collisions
-  // per body (early times, dense samples) would otherwise wait on one miss after
-  // another. Estimated from the rate of the last sub-window; speed only.
-  std::size_t prefetch_lines(double end) const {
-    const double domains = static_cast<double>(std::max<std::size_t>(domains_.size(), 1));
-    const double steps = last_rate_ * (end - e_.now_) / domains;
-    const double lines =
-        static_cast<double>(n()) / domains * (sizeof(typename Engine::Body) + sizeof(double)) / 64.0;
-    if (!(steps > 0)) return 2;
-    // Four times the even rate: the domain taken next has been claimed ahead for
-    // only part of a domain's run (measured best at N = 10^7, t = 10: 3 to 6).
-    return static_cast<std::size_t>(std::clamp(4.0 * lines / steps, 2.0, 64.0));
-  }
-  // The memory of domain d: its bodies and slot times (on a ring they may wrap
-  // past the end) and its tree's nodes.
-  void aim(DomainPrefetcher& p, const Domain* d) const {
-    p.clear();
-    if (!d) return;
-    const auto* body = e_.body_.data();
-    const double* slot = &e_.slot_[0];
-    auto add = [&](std::size_t lo, std::size_t hi) {  // bodies and slots lo .. hi - 1
-      p.add(body + lo, body + hi);
-      p.add(slot + lo, slot + hi);
-    };
-    if (d->head <= d->tail) {
-      add(d->head, d->tail + 1);
-    } else {
-      add(d->head, n());
-      add(0, d->tail + 1);
-    }
-    p.add(d->tree.node_keys(), d->tree.node_keys() + d->tree.node_count());
-    p.add(d->tree.node_slots(), d->tree.node_slots() + d->tree.node_count());
   }
 
   Engine& e_;
