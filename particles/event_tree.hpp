@@ -182,10 +182,6 @@ class EventTree {
 
  private:
   friend struct detail::StateIo;  // saves and restores the nodes as they are
-  static Key key_of(double t) { return detail::key_of(t); }
-  static void take_earlier(Key& t, std::uint32_t& slot, Key u, std::uint32_t at) {
-    detail::take_earlier(t, slot, u, at);
-  }
   struct Node {
     Key t;               // winner's event time, as key_of
     std::uint32_t slot;  // winner's slot
@@ -220,8 +216,9 @@ class EventTree {
     std::size_t lo = b * block, hi = lo + block;  // slots lo..hi-1 of the run
     if (p == 0 && head_partial_) lo = first_;
     if (p == nb_ - 1 && tail_partial_) hi = last_ + 1;
-    Node best{key_of(never), static_cast<std::uint32_t>(lo)};
-    for (std::size_t s = lo; s < hi; ++s) take_earlier(best.t, best.slot, key_of(time_[s]), s);
+    Node best{detail::key_of(never), static_cast<std::uint32_t>(lo)};
+    for (std::size_t s = lo; s < hi; ++s)
+      detail::take_earlier(best.t, best.slot, detail::key_of(time_[s]), s);
     return best;
   }
 
@@ -284,7 +281,7 @@ class EventTree {
     auto level = [&]() __attribute__((always_inline)) {
       const Key sib_t = key_[k ^ 1];
       const std::uint32_t sib_slot = win_[k ^ 1];
-      take_earlier(t, slot, sib_t, sib_slot);
+      detail::take_earlier(t, slot, sib_t, sib_slot);
       k >>= 1;
       key_[k] = t;
       win_[k] = slot;
@@ -310,17 +307,17 @@ class EventTree {
   void climb(std::size_t k) {
     Key t = key_[k];
     std::uint32_t slot = win_[k];
-    Key t2 = key_of(never);
+    Key t2 = detail::key_of(never);
     std::uint32_t slot2 = slot;
     for (; k > 1; k >>= 1) {
       const Key sib_t = key_[k ^ 1];
       const std::uint32_t sib_slot = win_[k ^ 1];
       const Key old_t = t;
       const std::uint32_t old_slot = slot;
-      take_earlier(t, slot, sib_t, sib_slot);
+      detail::take_earlier(t, slot, sib_t, sib_slot);
       if constexpr (Hint) {
         // The loser of this match (the one of the two not kept) may be the runner-up.
-        take_earlier(t2, slot2, old_t ^ sib_t ^ t, old_slot ^ sib_slot ^ slot);
+        detail::take_earlier(t2, slot2, old_t ^ sib_t ^ t, old_slot ^ sib_slot ^ slot);
       }
       key_[k >> 1] = t;
       win_[k >> 1] = slot;
