@@ -1,7 +1,8 @@
 #pragma once
-// The earliest of the 8 slot times of one cache line (private to particles/),
-// for the event tree's leaves (event_tree.hpp), in the widest SIMD the build
-// targets (cmake/Native.cmake): AVX-512, else SSE2, else a scalar tournament.
+// The earliest of the 16 slot times of one block, two cache lines (private to
+// particles/), for the event tree's leaves (event_tree.hpp), in the widest SIMD
+// the build targets (cmake/Native.cmake): AVX-512, else SSE2, else a scalar
+// tournament.
 //
 // Contract: times are >= 0 or +inf, never NaN. The result is the smallest time
 // (as its integer key, see key_of) and the first lane holding it: the same for
@@ -44,74 +45,112 @@ inline void take_earlier(TimeKey& t, std::uint32_t& slot, TimeKey u, std::uint32
 
 struct LaneWinner {
   TimeKey t;           // the smallest time, as key_of
-  std::uint32_t lane;  // the first of the 8 lanes that hold it
+  std::uint32_t lane;  // the first of the 16 lanes that hold it
 };
 
+// (t, lane) := (u, at) if (u, at) < (t, lane) lexicographically: the earliest
+// time, and of equal times the first lane. A compare of the lanes and a
+// subtract with borrow of the times (the two-word compare of a 128-bit integer)
+// and two conditional moves, as take_earlier.
+inline void take_earlier_lane(TimeKey& t, std::uint32_t& lane, TimeKey u, std::uint32_t at) {
+#if defined(__x86_64__)
+  TimeKey diff;  // u - t - borrow, for the flags (early clobber: written before u is read last)
+  asm("movq %[u], %[diff]\n\tcmpl %[lane], %[at]\n\tsbbq %[t], %[diff]\n\t"
+      "cmovlq %[u], %[t]\n\tcmovll %[at], %[lane]"
+      : [t] "+r"(t), [lane] "+r"(lane), [diff] "=&r"(diff)
+      : [u] "r"(u), [at] "r"(at)
+      : "cc");
+#else
+  const bool take = u < t || (u == t && at < lane);
+  lane = take ? at : lane;
+  t = take ? u : t;
+#endif
+}
+
+inline constexpr std::uint32_t block_lanes = 16;
+
 #if defined(__AVX512F__)
-// The 8 times of a line in one register: the smallest by a reduction of packed
-// minima, its first lane by an equality mask. (Halves by __builtin_shufflevector:
-// GCC 12 warns of an undefined operand inside the intrinsics for them.)
-[[gnu::always_inline]] inline LaneWinner lane_winner(__m512d line) {
-  const __m256d m4 = _mm256_min_pd(__builtin_shufflevector(line, line, 0, 1, 2, 3),
-                                   __builtin_shufflevector(line, line, 4, 5, 6, 7));
+// The 16 times of a block in two registers (lanes 0-7 and 8-15): the smallest by
+// a reduction of packed minima, its first lane by equality masks. (Halves by
+// __builtin_shufflevector: GCC 12 warns of an undefined operand inside the
+// intrinsics for them.)
+[[gnu::always_inline]] inline LaneWinner lane_winner(__m512d low, __m512d high) {
+  const __m512d m8 = _mm512_maskz_min_pd(0xFF, low, high);  // (the unmasked form warns as above)
+  const __m256d m4 =
+      _mm256_min_pd(__builtin_shufflevector(m8, m8, 0, 1, 2, 3), __builtin_shufflevector(m8, m8, 4, 5, 6, 7));
   const __m128d m2 = _mm_min_pd(__builtin_shufflevector(m4, m4, 0, 1), __builtin_shufflevector(m4, m4, 2, 3));
   const __m128d m1 = _mm_min_sd(m2, _mm_unpackhi_pd(m2, m2));
-  const unsigned mask = _mm512_cmpeq_pd_mask(line, _mm512_set1_pd(_mm_cvtsd_f64(m1)));
+  const __m512d all = _mm512_set1_pd(_mm_cvtsd_f64(m1));
+  const unsigned mask = static_cast<unsigned>(_mm512_cmpeq_pd_mask(low, all)) |
+                        static_cast<unsigned>(_mm512_cmpeq_pd_mask(high, all)) << 8;
   return {key_of(_mm_cvtsd_f64(m1)), static_cast<std::uint32_t>(std::countr_zero(mask))};
 }
 #endif
 
-// The earliest of the 8 times at t (a 64-byte aligned line).
+// The earliest of the 16 times at t (a 128-byte aligned block).
 [[gnu::always_inline]] inline LaneWinner lane_winner(const double* t) {
 #if defined(__AVX512F__)
-  return lane_winner(_mm512_load_pd(t));
+  return lane_winner(_mm512_load_pd(t), _mm512_load_pd(t + 8));
 #elif defined(__SSE2__)
-  // Three packed minima, then the first lane by an equality mask: the same
-  // winner as the pairwise tournament below, in fewer instructions. (Loading
-  // each pair as two 8-byte halves, which the 8-byte stores of a collision can
-  // forward, measured no faster: 0.99x, 5 pairs at N = 10^6, t = 10^3.)
-  const __m128d a = _mm_load_pd(t), c = _mm_load_pd(t + 2), e = _mm_load_pd(t + 4), g = _mm_load_pd(t + 6);
-  const __m128d m2 = _mm_min_pd(_mm_min_pd(a, c), _mm_min_pd(e, g));
-  const __m128d m1 = _mm_min_sd(m2, _mm_unpackhi_pd(m2, m2));
+  // Packed minima, then the first lane by equality masks: the same winner as the
+  // pairwise tournament below, in fewer instructions. (Loading each pair as two
+  // 8-byte halves, which the 8-byte stores of a collision can forward, measured
+  // no faster: 0.99x, 5 pairs at N = 10^6, t = 10^3.)
+  __m128d pair[8];
+  for (int k = 0; k < 8; ++k) pair[k] = _mm_load_pd(t + 2 * k);
+  const __m128d m4 = _mm_min_pd(_mm_min_pd(_mm_min_pd(pair[0], pair[1]), _mm_min_pd(pair[2], pair[3])),
+                                _mm_min_pd(_mm_min_pd(pair[4], pair[5]), _mm_min_pd(pair[6], pair[7])));
+  const __m128d m1 = _mm_min_sd(m4, _mm_unpackhi_pd(m4, m4));
   const __m128d m = _mm_unpacklo_pd(m1, m1);
-  const unsigned mask = static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(a, m))) |
-                        static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(c, m))) << 2 |
-                        static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(e, m))) << 4 |
-                        static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(g, m))) << 6;
+  unsigned mask = 0;
+  for (int k = 0; k < 8; ++k)
+    mask |= static_cast<unsigned>(_mm_movemask_pd(_mm_cmpeq_pd(pair[k], m))) << 2 * k;
   return {key_of(_mm_cvtsd_f64(m1)), static_cast<std::uint32_t>(std::countr_zero(mask))};
 #else
-  TimeKey k0 = key_of(t[0]), k1 = key_of(t[1]), k2 = key_of(t[2]), k3 = key_of(t[3]);
-  TimeKey k4 = key_of(t[4]), k5 = key_of(t[5]), k6 = key_of(t[6]), k7 = key_of(t[7]);
-  std::uint32_t a0 = 0, a2 = 2, a4 = 4, a6 = 6;
-  take_earlier(k0, a0, k1, 1);
-  take_earlier(k2, a2, k3, 3);
-  take_earlier(k4, a4, k5, 5);
-  take_earlier(k6, a6, k7, 7);
-  take_earlier(k0, a0, k2, a2);
-  take_earlier(k4, a4, k6, a6);
-  take_earlier(k0, a0, k4, a4);
-  return {k0, a0};
+  // Rounds of matches between neighbours: ties keep the left, so the first lane wins.
+  TimeKey k[block_lanes];
+  std::uint32_t at[block_lanes];
+  for (std::uint32_t l = 0; l < block_lanes; ++l) k[l] = key_of(t[l]), at[l] = l;
+  for (std::uint32_t stride = 1; stride < block_lanes; stride *= 2)
+    for (std::uint32_t l = 0; l < block_lanes; l += 2 * stride)
+      take_earlier(k[l], at[l], k[l + stride], at[l + stride]);
+  return {k[0], at[0]};
 #endif
 }
 
 #if defined(__AVX512F__)
 // A collision's three new slot times (tp, +inf, tj for slots p, p + 1, p + 2)
-// merged into the lines that hold them, in registers. o = p mod 8: the slots
-// are lanes o .. o + 2 of line 0 and, past lane 7, the first lanes of line 1.
+// merged into the lines that hold them, in registers. o = p mod 16: the slots
+// are lanes o .. o + 2 of the block, lines 0 and 1, and past lane 15 the first
+// lanes of the next block's line 0 (line 2 here).
 class ThreeTimes {
  public:
   ThreeTimes(std::uint32_t o, double tp, double never, double tj)
       : values_(spread(_mm_set_pd(never, tp), _mm_set1_pd(tj))),
-        // Lane l takes value (l - o) mod 8: lanes o, o + 1, o + 2 of line 0 and
-        // lanes o - 8, o - 7, o - 6 of line 1 take 0, 1, 2 (the permute reads 3 bits).
+        // Lane l of every line takes value (l - o) mod 8: the lanes of slots p,
+        // p + 1, p + 2 take 0, 1, 2 (the permute reads 3 bits).
         index_(_mm512_sub_epi64(_mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7), _mm512_set1_epi64(o))),
         lanes_(0b111u << o) {}
-  // Whether the three lie in one line.
-  bool one_line() const { return lanes_ < 0x100; }
-  // Line k (0 or 1) at t with its slots replaced.
-  __m512d merged(const double* t, int k) const {
-    const auto lanes = static_cast<__mmask8>(k == 0 ? lanes_ : lanes_ >> 8);
-    return _mm512_mask_permutexvar_pd(_mm512_load_pd(t), lanes, index_, values_);
+  // Whether the three lie in one block.
+  bool one_block() const { return lanes_ < (1u << block_lanes); }
+  // Line k (0, 1 or 2), as loaded, with the three slots replaced.
+  __m512d merged(__m512d line, int k) const {
+    return _mm512_mask_permutexvar_pd(line, lanes(k), index_, values_);
+  }
+  // The same with +inf in their places: the block's other slots, whose minimum
+  // does not wait for the new times (see earliest_with).
+  __m512d cleared(__m512d line, int k) const {
+    return _mm512_mask_mov_pd(line, lanes(k), _mm512_set1_pd(__builtin_inf()));
+  }
+  // The earliest of block 0 from that of its cleared lines: the lexicographic
+  // minimum of (time, lane) over it and the new times' lanes. The +inf put in
+  // their places changes nothing: it ties at best with lane o's own time, or
+  // loses to it.
+  LaneWinner earliest_with(LaneWinner rest, TimeKey tp, TimeKey tj) const {
+    const auto o = static_cast<std::uint32_t>(std::countr_zero(lanes_));
+    take_earlier_lane(rest.t, rest.lane, tp, o);
+    take_earlier_lane(rest.t, rest.lane, tj, o + 2);
+    return rest;
   }
 
  private:
@@ -120,9 +159,10 @@ class ThreeTimes {
     const __m256d four = __builtin_shufflevector(a, b, 0, 1, 2, 3);
     return __builtin_shufflevector(four, four, 0, 1, 2, 3, 0, 1, 2, 3);
   }
+  __mmask8 lanes(int k) const { return static_cast<__mmask8>(lanes_ >> 8 * k); }
   __m512d values_;
   __m512i index_;
-  unsigned lanes_;  // bit l: lane l of line 0, bit 8 + l: lane l of line 1
+  unsigned lanes_;  // bit l: lane l of the block (lines 0 and 1), bit 16 + l: of the next
 };
 #endif
 

@@ -16,16 +16,19 @@
 //    earlier one within a block and, above, the one the refreshes left in place:
 //    the same for the same sequence of operations.
 //
-// Layout. The times are stored in blocks of 8 (one cache line); the tree is over
-// the blocks of the run: the implicit heap of the bottom-up segment tree, leaves
-// at nb..2nb-1 (nb blocks), node k < nb the winner of nodes 2k and 2k+1, so node
-// 1 is the winner for any nb (no padding to a power of two, which would put every
-// leaf at the deepest level). A node stores the winner's time and slot (12 bytes),
-// so a comparison never leaves the path being refreshed. A collision changes at
-// most three adjacent slots, nearly always in one block: one line of times, then
-// one path to the root. The tree is 3 bytes per slot (8 for the times), so at
-// N = 10^6 its upper levels stay in cache. A run's first and last blocks may be
-// shared with the neighbouring runs: their winners read only the run's own slots.
+// Layout. The times are stored in blocks of 16 (two cache lines, which the
+// second-level cache fetches as a pair); the tree is over the blocks of the run:
+// the implicit heap of the bottom-up segment tree, leaves at nb..2nb-1 (nb
+// blocks), node k < nb the winner of nodes 2k and 2k+1, so node 1 is the winner
+// for any nb (no padding to a power of two, which would put every leaf at the
+// deepest level). A node stores the winner's time and slot (12 bytes), so a
+// comparison never leaves the path being refreshed. A collision changes at most
+// three adjacent slots, in one block but for one collision in eight: one block of
+// times, then one path to the root. (Blocks of 16 rather than one line of 8: a
+// level less to climb, and half as many collisions that span two blocks.) The
+// tree is 1.5 bytes per slot (8 for the times), so at N = 10^6 its upper levels
+// stay in cache. A run's first and last blocks may be shared with the
+// neighbouring runs: their winners read only the run's own slots.
 #include <algorithm>
 #include <bit>
 #include <cassert>
@@ -47,6 +50,7 @@ class EventTree {
  public:
   static constexpr double never = SlotTimes::never;
   static constexpr std::size_t block = SlotTimes::block;
+  static_assert(block == detail::block_lanes, "a leaf is one block of slot times");
   // Node storage of a tree of nb blocks: 2 nb keys and 2 nb slots.
   static constexpr std::size_t nodes(std::size_t nb) { return 2 * nb; }
   using Key = detail::TimeKey;
@@ -144,27 +148,33 @@ class EventTree {
   }
   // Slots p, p + 1 and p + 2 (past the last slot: 0, 1) := tp, +inf, tj, then
   // refreshed: a bounce's three slots, all in the run, as set() thrice and
-  // refresh(p, p + 2). With AVX-512 the times are merged into their lines in a
-  // register, each line is stored whole and its minimum read off the register:
-  // no load of a line just written by narrower stores, which cannot be served
-  // from them and waits until they reach the cache (a failed store forward).
+  // refresh(p, p + 2). With AVX-512 the times are merged into their block's two
+  // lines in registers and each line is stored whole (the one the three miss
+  // unchanged): no load of a line just written by narrower stores, which cannot
+  // be served from them and waits until they reach the cache (a failed store
+  // forward). The minimum of the block's other slots is taken from the lines as
+  // loaded, so that only two compares wait for tp and tj, not a reduction of 16.
   [[gnu::always_inline]] void replace_three(std::size_t p, double tp, double tj) {
 #if defined(__AVX512F__)
     const std::size_t b = p / block, pos = position(b);
     const detail::ThreeTimes three(p % block, tp, never, tj);
-    const std::size_t lines = three.one_line() ? 1 : 2;
-    if (p + 2 < times_->size() && owns_lines(pos, lines)) [[likely]] {
+    const std::size_t blocks = three.one_block() ? 1 : 2;
+    if (p + 2 < times_->size() && owns_blocks(pos, blocks)) [[likely]] {
       double* line = time_ + b * block;
-      const __m512d first = three.merged(line, 0);
-      _mm512_store_pd(line, first);
-      if (lines == 1) [[likely]] {
-        put(nb_ + pos, node_of(detail::lane_winner(first), b));
-        return climb(nb_ + pos);
+      const __m512d low = _mm512_load_pd(line), high = _mm512_load_pd(line + 8);
+      _mm512_store_pd(line, three.merged(low, 0));
+      _mm512_store_pd(line + 8, three.merged(high, 1));
+      if (blocks == 1) [[likely]] {
+        const auto rest = detail::lane_winner(three.cleared(low, 0), three.cleared(high, 1));
+        const Node leaf = node_of(three.earliest_with(rest, detail::key_of(tp), detail::key_of(tj)), b);
+        put(nb_ + pos, leaf);
+        return climb(nb_ + pos, leaf);
       }
-      const __m512d second = three.merged(line + block, 1);
-      _mm512_store_pd(line + block, second);
-      return refresh_two(pos, pos + 1, node_of(detail::lane_winner(first), b),
-                         node_of(detail::lane_winner(second), b + 1));
+      const __m512d next = three.merged(_mm512_load_pd(line + 16), 2);
+      _mm512_store_pd(line + 16, next);
+      return refresh_two(pos, pos + 1,
+                         node_of(detail::lane_winner(three.merged(low, 0), three.merged(high, 1)), b),
+                         node_of(detail::lane_winner(next, _mm512_load_pd(line + 24)), b + 1));
     }
 #endif
     const std::size_t n = times_->size(), i = p + 1 == n ? 0 : p + 1, j = i + 1 == n ? 0 : i + 1;
@@ -175,7 +185,8 @@ class EventTree {
   }
   // Hints the cache about a slot's block and the deep part of its path.
   void prefetch_path(std::size_t slot) const {
-    prefetch_line(time_ + slot);
+    const double* times = time_ + slot / block * block;
+    prefetch_line(times), prefetch_line(times + 8);
     for (std::size_t k = nb_ + position(slot / block); k >= 4096; k >>= 1)
       prefetch_line(&key_[k]), prefetch_line(&win_[k]);
   }
@@ -194,8 +205,8 @@ class EventTree {
     return b < all_blocks_ ? b : b - all_blocks_;
   }
 
-  // The earliest slot of block b, at position p: a tournament of depth 3 over
-  // one cache line.
+  // The earliest slot of block b, at position p: packed minima over its two
+  // cache lines.
   [[gnu::always_inline]] Node block_winner(std::size_t p, std::size_t b) const {
     if (p - 1 >= nb_ - 2) [[unlikely]]  // the first or the last (or nb <= 2)
       if ((p == 0 && head_partial_) || (p == nb_ - 1 && tail_partial_)) return partial_winner(p);
@@ -204,9 +215,9 @@ class EventTree {
   static Node node_of(detail::LaneWinner w, std::size_t b) {
     return Node{w.t, static_cast<std::uint32_t>(b * block) + w.lane};
   }
-  // Whether the lines at positions pos .. pos + count - 1 hold only the run's
+  // Whether the blocks at positions pos .. pos + count - 1 hold only the run's
   // slots (and padding): the first and last may be shared with a neighbouring run.
-  bool owns_lines(std::size_t pos, std::size_t count) const {
+  bool owns_blocks(std::size_t pos, std::size_t count) const {
     return (pos > 0 || !head_partial_) && (pos + count < nb_ || !tail_partial_);
   }
   // A first or last block shared with a neighbouring run: only the run's slots
@@ -230,8 +241,9 @@ class EventTree {
   // Block b and its path to the root.
   [[gnu::always_inline]] void refresh_block(std::size_t b) {
     const std::size_t p = position(b);
-    put(nb_ + p, block_winner(p, b));
-    climb(nb_ + p);
+    const Node leaf = block_winner(p, b);
+    put(nb_ + p, leaf);
+    climb(nb_ + p, leaf);
   }
   // Adjacent leaves at positions a and b = a + 1 and their paths to the root. A
   // leaf whose winner did not change leaves its path as it was below the joint
@@ -252,11 +264,11 @@ class EventTree {
                same_b = wb.t == key_[kb] && wb.slot == win_[kb];
     put(ka, wa);
     put(kb, wb);
-    if (same_a) return climb(kb);
-    if (same_b) return climb(ka);
+    if (same_a) return climb(kb, wb);
+    if (same_b) return climb(ka, wa);
     if (std::bit_width(ka) != std::bit_width(kb)) {
-      climb(ka);
-      return climb(kb);
+      climb(ka, wa);
+      return climb(kb, wb);
     }
     for (; (ka ^ 1) != kb; ka >>= 1, kb >>= 1) pull(ka >> 1), pull(kb >> 1);
     climb(ka);
@@ -272,12 +284,16 @@ class EventTree {
   // after the next one whenever that lies outside the next one's subtree (for
   // random positions, with probability 1 - sum_j 4^-j = 2/3). hint() serves it
   // for prefetching.
-  [[gnu::always_inline]] void climb(std::size_t k) { hinting_ ? climb<true>(k) : climb_unrolled(k); }
+  [[gnu::always_inline]] void climb(std::size_t k) { climb(k, Node{key_[k], win_[k]}); }
+  // The same with node k's value at hand (not reloaded from where it was just stored).
+  [[gnu::always_inline]] void climb(std::size_t k, Node node) {
+    hinting_ ? climb<true>(k, node) : climb_unrolled(k, node);
+  }
   // The climb without the hint (the trees of a window's domains), unrolled: one
   // case per level, entered at node k's depth, no loop counter.
-  [[gnu::always_inline]] void climb_unrolled(std::size_t k) {
-    Key t = key_[k];
-    std::uint32_t slot = win_[k];
+  [[gnu::always_inline]] void climb_unrolled(std::size_t k, Node node) {
+    Key t = node.t;
+    std::uint32_t slot = node.slot;
     auto level = [&]() __attribute__((always_inline)) {
       const Key sib_t = key_[k ^ 1];
       const std::uint32_t sib_slot = win_[k ^ 1];
@@ -304,9 +320,9 @@ class EventTree {
     }
   }
   template <bool Hint>
-  void climb(std::size_t k) {
-    Key t = key_[k];
-    std::uint32_t slot = win_[k];
+  void climb(std::size_t k, Node node) {
+    Key t = node.t;
+    std::uint32_t slot = node.slot;
     Key t2 = detail::key_of(never);
     std::uint32_t slot2 = slot;
     for (; k > 1; k >>= 1) {

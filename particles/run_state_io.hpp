@@ -49,7 +49,7 @@ void StateIo::save(const EventEngine<Linked>& e, RunStateWriter& out) {
   put(out, e.m0_);
   put_vector(out, e.body_);
   put<std::uint64_t>(out, e.slot_.blocks() * SlotTimes::block);
-  out.write(e.slot_.line(0), e.slot_.blocks() * SlotTimes::block * sizeof(double));
+  out.write(e.slot_.block_data(0), e.slot_.blocks() * SlotTimes::block * sizeof(double));
   if constexpr (Linked) put_vector(out, e.mass_), put_vector(out, e.next_), put_vector(out, e.prev_);
   put(out, e.now_), put(out, e.window_start_), put(out, e.stall_);
   put(out, e.last_x_), put(out, e.dissipated_), put(out, e.count_);

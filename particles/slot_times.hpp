@@ -1,6 +1,7 @@
 #pragma once
-// The predicted event times of the pair slots (private to particles/), in cache
-// lines of 8, and the cache hints the engine uses on them.
+// The predicted event times of the pair slots (private to particles/), in blocks
+// of 16 (two cache lines, one 128-byte unit), and the cache hints the engine uses
+// on them.
 #include <algorithm>
 #include <cstddef>
 #include <limits>
@@ -30,32 +31,33 @@ inline void prefetch_line_l2(const void* p) {
 #endif
 }
 
-// The event times of n pair slots, in cache lines of 8; the padding after slot
-// n - 1 stays at +inf.
+// The event times of n pair slots, in blocks of 16 (the event tree's leaves:
+// two cache lines that the second-level cache fetches as a pair); the padding
+// after slot n - 1 stays at +inf.
 class SlotTimes {
  public:
   static constexpr double never = std::numeric_limits<double>::infinity();
-  static constexpr std::size_t block = 8;  // slot times per cache line
+  static constexpr std::size_t block = 16;  // slot times per block (two cache lines)
 
-  // n slots, all at +inf (each line written once).
+  // n slots, all at +inf (each block written once).
   void reset(std::size_t n) {
     n_ = n;
-    Line unset;
+    Block unset;
     std::fill(unset.t, unset.t + block, never);
-    lines_.assign((n + block - 1) / block, unset);
+    blocks_.assign((n + block - 1) / block, unset);
   }
   std::size_t size() const { return n_; }
-  std::size_t blocks() const { return lines_.size(); }
-  double& operator[](std::size_t i) { return lines_[i / block].t[i % block]; }
-  double operator[](std::size_t i) const { return lines_[i / block].t[i % block]; }
-  const double* line(std::size_t b) const { return lines_[b].t; }
-  double* data() { return lines_.empty() ? nullptr : lines_[0].t; }
+  std::size_t blocks() const { return blocks_.size(); }
+  double& operator[](std::size_t i) { return blocks_[i / block].t[i % block]; }
+  double operator[](std::size_t i) const { return blocks_[i / block].t[i % block]; }
+  const double* block_data(std::size_t b) const { return blocks_[b].t; }
+  double* data() { return blocks_.empty() ? nullptr : blocks_[0].t; }
 
  private:
-  struct alignas(64) Line {
+  struct alignas(128) Block {
     double t[block];
   };
-  std::vector<Line, HugePageAllocator<Line>> lines_;
+  std::vector<Block, HugePageAllocator<Block>> blocks_;
   std::size_t n_ = 0;
 };
 

@@ -15,7 +15,7 @@ namespace {
 // Sizes around the block size and powers of two (leaves at two depths).
 TEST(EventTree, TopIsTheMinimumAfterRandomUpdates) {
   // The last size is large enough for the hinting climb (EventTree::hint_slots).
-  for (std::size_t n : {1u, 2u, 3u, 7u, 8u, 9u, 17u, 100u, 1000u, 1025u, (1u << 18) + 3u}) {
+  for (std::size_t n : {1u, 2u, 3u, 7u, 8u, 9u, 15u, 16u, 17u, 33u, 100u, 1000u, 1025u, (1u << 18) + 3u}) {
     SCOPED_TRACE(n);
     Rng rng(n);
     EventTree tree(n);
@@ -71,8 +71,8 @@ TEST(EventTree, ReplaceThreeIsSetAndRefresh) {
   struct Run {
     std::size_t n, first, last;
   };
-  for (const Run run :
-       {Run{1000, 0, 999}, Run{1003, 5, 1001}, Run{1003, 13, 15}, Run{1000, 990, 20}, Run{4099, 3, 4094}}) {
+  for (const Run run : {Run{1000, 0, 999}, Run{1003, 5, 1001}, Run{1003, 13, 15}, Run{1003, 21, 46},
+                        Run{1000, 990, 20}, Run{4099, 3, 4094}, Run{4099, 30, 4081}}) {
     SCOPED_TRACE(testing::Message() << run.n << " " << run.first << " " << run.last);
     Rng rng(run.n + run.first);
     SlotTimes fast, plain;
