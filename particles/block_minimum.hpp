@@ -4,7 +4,8 @@
 // the build targets (cmake/Native.cmake): AVX-512, else SSE2, else a scalar
 // tournament.
 //
-// Contract: times are >= 0 or +inf, never NaN. The result is the smallest time
+// Contract: times are +0.0 or greater, or +inf; never -0.0 or NaN (whose keys
+// would sort apart from the numbers' order). The result is the smallest time
 // (as its integer key, see key_of) and the first lane holding it: the same for
 // every path, to the bit, because a minimum and an equality compare are exact
 // (test EventTree.ReplaceThreeIsSetAndRefresh, run by both builds).
@@ -144,8 +145,9 @@ class ThreeTimes {
   }
   // The earliest of block 0 from that of its cleared lines: the lexicographic
   // minimum of (time, lane) over it and the new times' lanes. The +inf put in
-  // their places changes nothing: it ties at best with lane o's own time, or
-  // loses to it.
+  // their places changes nothing: (+inf, o) and (+inf, o + 2) are never earlier
+  // than (tp, o) and (tj, o + 2), and (+inf, o + 1), slot p + 1's true time,
+  // never earlier than (+inf, o).
   LaneWinner earliest_with(LaneWinner rest, TimeKey tp, TimeKey tj) const {
     const auto o = static_cast<std::uint32_t>(std::countr_zero(lanes_));
     take_earlier_lane(rest.t, rest.lane, tp, o);

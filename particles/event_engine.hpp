@@ -12,11 +12,11 @@
 //
 // Two layouts, chosen once per run:
 //  * Linked = false: equal masses, no merges; neighbours are i +- 1 (mod N on the
-//    ring). 24 bytes per body + 8 per slot time + 3 per slot for a tree = 35
-//    bytes per particle.
+//    ring). 24 bytes per body + 8 per slot time + 1.5 per slot for a tree =
+//    33.5 bytes per particle.
 //  * Linked = true: masses and merges; the live bodies form a doubly linked list
 //    (a ring on the ring). A merge keeps the left body, unlinks the right one and
-//    sets its slot to +inf. 35 + 8 (mass) + 8 (links) = 51 bytes per particle.
+//    sets its slot to +inf. 33.5 + 8 (mass) + 8 (links) = 49.5 bytes per particle.
 //
 // Ring geometry: positions are unrolled (never wrapped while running); the pair
 // whose right body has the lower index wraps, the right body counted at x + L.

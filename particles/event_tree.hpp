@@ -205,8 +205,7 @@ class EventTree {
     return b < all_blocks_ ? b : b - all_blocks_;
   }
 
-  // The earliest slot of block b, at position p: packed minima over its two
-  // cache lines.
+  // The earliest slot of block b, at position p (block_minimum.hpp).
   [[gnu::always_inline]] Node block_winner(std::size_t p, std::size_t b) const {
     if (p - 1 >= nb_ - 2) [[unlikely]]  // the first or the last (or nb <= 2)
       if ((p == 0 && head_partial_) || (p == nb_ - 1 && tail_partial_)) return partial_winner(p);

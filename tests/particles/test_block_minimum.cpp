@@ -64,7 +64,8 @@ TEST(BlockMinimum, EarliestWithTheThreeIsTheMergedMinimum) {
     alignas(128) Block t;
     for (double& x : t) x = few_values(rng);
     const auto o = static_cast<std::uint32_t>(trial % (block_lanes - 2));
-    const double tp = few_values(rng), tj = few_values(rng);
+    double tp = few_values(rng), tj = few_values(rng);
+    if (trial < static_cast<int>(block_lanes)) t.fill(never), tp = tj = never;  // all +inf: lane 0
     const ThreeTimes three(o, tp, never, tj);
     ASSERT_TRUE(three.one_block());
     const __m512d low = _mm512_load_pd(t.data()), high = _mm512_load_pd(t.data() + 8);

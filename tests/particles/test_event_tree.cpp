@@ -62,17 +62,18 @@ TEST(EventTree, HintIsTheRunnerUpAlongTheRefreshedPath) {
 }
 
 // A bounce's three slots at once (replace_three: with AVX-512, merged into their
-// lines in registers) leave the times and every node exactly as three set()
-// calls and refresh(p, p + 2) do (the block minimum of the portable build), on
-// runs that start and end inside a line shared with a neighbouring run (whose
-// slots it must not write) and wrap past the ring's last slot. Times from a few
+// block's lines in registers) leave the times and every node exactly as three
+// set() calls and refresh(p, p + 2) do (the block minimum of the portable
+// build), on runs that start and end inside a block shared with a neighbouring
+// run (whose slots it must not write), or on a block boundary beside one, and
+// wrap past the ring's last slot. Times from a few
 // values, so that ties are common and the lane a minimum is taken from shows.
 TEST(EventTree, ReplaceThreeIsSetAndRefresh) {
   struct Run {
     std::size_t n, first, last;
   };
   for (const Run run : {Run{1000, 0, 999}, Run{1003, 5, 1001}, Run{1003, 13, 15}, Run{1003, 21, 46},
-                        Run{1000, 990, 20}, Run{4099, 3, 4094}, Run{4099, 30, 4081}}) {
+                        Run{1003, 32, 95}, Run{1000, 990, 20}, Run{4099, 3, 4094}, Run{4099, 30, 4081}}) {
     SCOPED_TRACE(testing::Message() << run.n << " " << run.first << " " << run.last);
     Rng rng(run.n + run.first);
     SlotTimes fast, plain;
