@@ -162,8 +162,9 @@ class EventTree {
     if (p + 2 < times_->size() && owns_blocks(pos, blocks)) [[likely]] {
       double* line = time_ + b * block;
       const __m512d low = _mm512_load_pd(line), high = _mm512_load_pd(line + 8);
-      _mm512_store_pd(line, three.merged(low, 0));
-      _mm512_store_pd(line + 8, three.merged(high, 1));
+      const __m512d new_low = three.merged(low, 0), new_high = three.merged(high, 1);
+      _mm512_store_pd(line, new_low);
+      _mm512_store_pd(line + 8, new_high);
       if (blocks == 1) [[likely]] {
         const auto rest = detail::lane_winner(three.cleared(low, 0), three.cleared(high, 1));
         const Node leaf = node_of(three.earliest_with(rest, detail::key_of(tp), detail::key_of(tj)), b);
@@ -172,8 +173,7 @@ class EventTree {
       }
       const __m512d next = three.merged(_mm512_load_pd(line + 16), 2);
       _mm512_store_pd(line + 16, next);
-      return refresh_two(pos, pos + 1,
-                         node_of(detail::lane_winner(three.merged(low, 0), three.merged(high, 1)), b),
+      return refresh_two(pos, pos + 1, node_of(detail::lane_winner(new_low, new_high), b),
                          node_of(detail::lane_winner(next, _mm512_load_pd(line + 24)), b + 1));
     }
 #endif
