@@ -12,6 +12,8 @@
 #include <bit>
 #include <cstdint>
 
+#include "slot_times.hpp"
+
 #if defined(__AVX512F__)
 #include <immintrin.h>
 #elif defined(__SSE2__)
@@ -68,7 +70,10 @@ inline void take_earlier_lane(TimeKey& t, std::uint32_t& lane, TimeKey u, std::u
 #endif
 }
 
-inline constexpr std::uint32_t block_lanes = 16;
+// The slot times of one block (SlotTimes::block): the code below reads them as
+// two lines of 8.
+inline constexpr std::uint32_t block_lanes = SlotTimes::block;
+static_assert(block_lanes == 16, "lane_winner and ThreeTimes read a block as two lines of 8");
 
 #if defined(__AVX512F__)
 // The 16 times of a block in two registers (lanes 0-7 and 8-15): the smallest by

@@ -50,7 +50,6 @@ class EventTree {
  public:
   static constexpr double never = SlotTimes::never;
   static constexpr std::size_t block = SlotTimes::block;
-  static_assert(block == detail::block_lanes, "a leaf is one block of slot times");
   // Node storage of a tree of nb blocks: 2 nb keys and 2 nb slots.
   static constexpr std::size_t nodes(std::size_t nb) { return 2 * nb; }
   using Key = detail::TimeKey;
