@@ -35,6 +35,9 @@ struct alignas(128) Domain {
   double dissipated = 0;                 // since the last settle
   double limit = 0;                      // runs to this time (inclusive): the sub-window's end or a sample
   std::size_t sample = 0;                // samples of the sub-window it has measured
+
+  // Whether it holds the ring's seam, the pair of bodies N - 1 and 0.
+  bool wraps() const { return head > tail; }
 };
 
 // A domain whose collisions stopped advancing time (EventEngine::frozen_limit in
@@ -85,11 +88,23 @@ class DomainStepper<false> {
   // The domain's next collision if its time is <= limit; false when there is
   // none, or when the domain stalls (then stalled is set).
   [[gnu::always_inline]] bool step(Domain& d, double limit) {
+    return d.wraps() ? step<true>(d, limit) : step<false>(d, limit);
+  }
+
+ private:
+  // The step of a domain that holds the ring's seam (Wraps) or not. Without it
+  // the neighbours of i are i - 1 and i + 1 and no position is shifted by L: the
+  // same numbers, without the wrap's selects (x - 0.0 is x; (x + 0.0) - y differs
+  // from x - y only in the sign of a zero gap, whose quotient t + (+-0) / g is t).
+  template <bool Wraps>
+  [[gnu::always_inline]] bool step(Domain& d, double limit) {
     const double t = d.tree.top_time();
     if (t > limit) return false;
     const std::size_t n = e_.n_;
+    auto after = [n](std::size_t s) { return !Wraps || s + 1 != n ? s + 1 : 0; };
+    auto shift_if = [this](bool wrapped) { return Wraps && wrapped ? e_.L_ : 0.0; };
     const std::size_t i = d.tree.top();
-    const std::size_t j = i + 1 == n ? 0 : i + 1;  // inside the domain: never past a line's end
+    const std::size_t j = after(i);  // inside the domain: never past a line's end
     auto* body = e_.body_.data();
     // collide_equal(i, j, t): meet, then bounce_equal with r or 1.
     const double x = body[i].at(t);
@@ -100,7 +115,7 @@ class DomainStepper<false> {
     const double v1 = v - dv, u1 = u + dv;
     d.dissipated += loss_[sub] * g * g;
     ++d.count[sub];
-    const double xj = x - (j == 0 ? e_.L_ : 0.0);
+    const double xj = Wraps ? x - shift_if(j == 0) : x;
     body[i] = {x, v1, t};
     body[j] = {xj, u1, t};
     d.frozen = t == d.now ? d.frozen + 1 : 0;
@@ -109,18 +124,18 @@ class DomainStepper<false> {
     if (i == d.head || j == d.tail) [[unlikely]]
       return edge(d, i, j, t) && !stalls(d);
     // Pairs (p, i) and (j, k), both inside: contact_time with tm = now = t.
-    const std::size_t p = i == 0 ? n - 1 : i - 1;
-    const std::size_t k = j + 1 == n ? 0 : j + 1;
+    const std::size_t p = Wraps && i == 0 ? n - 1 : i - 1;
+    const std::size_t k = after(j);
     const auto& bp = body[p];
     const auto& bk = body[k];
+    const double xi = Wraps ? x + shift_if(i == 0) : x;
+    const double xk = Wraps ? bk.at(t) + shift_if(k == 0) : bk.at(t);
     double tp, tj;
-    two_contact_times(t, (x + (i == 0 ? e_.L_ : 0.0)) - bp.at(t), bp.v - v1,
-                      (bk.at(t) + (k == 0 ? e_.L_ : 0.0)) - xj, u1 - bk.v, tp, tj);
+    two_contact_times(t, xi - bp.at(t), bp.v - v1, xk - xj, u1 - bk.v, tp, tj);
     d.tree.replace_three(p, tp, tj);  // i and j separate: slot i at +inf
     return !stalls(d);
   }
 
- private:
   // The slots of a collision at the domain's edge: only those inside.
   bool edge(Domain& d, std::size_t i, std::size_t j, double t) {
     std::size_t a = i, b = i;
