@@ -19,6 +19,15 @@ namespace {
 
 using namespace job_messages;
 
+// A rank's input that was not allowed, named with the rank and its realization
+// by rank 0: exit 2, as the same input gives one process. Its place is the rank
+// (so that no scene line is put before the message).
+class RankInputError : public InputError {
+ public:
+  RankInputError(int rank, std::string text)
+      : InputError("", "", "", "rank " + std::to_string(rank), Message{std::move(text)}) {}
+};
+
 void sort_in_plan_order(std::vector<RealizationRecord>& records) {
   std::sort(records.begin(), records.end(), [](const RealizationRecord& a, const RealizationRecord& b) {
     return a.index != b.index ? a.index < b.index : a.ensemble < b.ensemble;
@@ -84,7 +93,7 @@ class Gatherer {
       // An interruption first: the engine stops inside a window on it, and the
       // realization it stopped is not a failure of its own.
       if (interrupt_requested() != InterruptMode::none) stop_on_interrupt();
-      if (auto f = pool_->failure()) fail(0, f->item, f->message);
+      if (auto f = pool_->failure()) fail(0, f->item, f->message, f->bad_input);
       check_signalled();
       check_silence();
       keep_records();
@@ -141,8 +150,9 @@ class Gatherer {
       p.fraction = n.at(0);
       p.running = unpack_items(n, 2);
     } else if (m.tag == kFailed) {
-      const std::size_t head = 2 * sizeof(double);  // the item, then the message
-      fail(m.source, unpack_items(unpack(m.bytes.substr(0, head)), 0).at(0), m.bytes.substr(head));
+      const std::size_t head = 3 * sizeof(double);  // bad input, the item, then the message
+      const std::vector<double> numbers = unpack(m.bytes.substr(0, head));
+      fail(m.source, unpack_items(numbers, 1).at(0), m.bytes.substr(head), numbers.at(0) != 0);
     } else if (m.tag == kInterrupted) {
       const auto n = unpack(m.bytes);
       p.answered = true;
@@ -164,9 +174,13 @@ class Gatherer {
                        "; the job stops, no result is written");
   }
 
-  [[noreturn]] void fail(int rank, const WorkItem& item, const std::string& message) {
-    throw RunError("rank " + std::to_string(rank) + " failed in " + plan_.describe(item) + ": " + message +
-                   "; the job stops, no result is written");
+  // bad_input: the rank's input was not allowed (a damaged saved state), exit 2
+  // as in one process; else the run failed, exit 1.
+  [[noreturn]] void fail(int rank, const WorkItem& item, const std::string& message, bool bad_input) {
+    std::string text = "rank " + std::to_string(rank) + " failed in " + plan_.describe(item) + ": " + message +
+                       "; the job stops, no result is written";
+    if (bad_input) throw RankInputError(rank, std::move(text));
+    throw RunError(text);
   }
 
   // A signal reached rank 0: every rank still working must answer; those that

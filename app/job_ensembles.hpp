@@ -38,7 +38,7 @@ class Checkpointer;
 enum JobTag : int {
   kProgress = 1,     // any rank -> 0 (and 0 -> 1): fraction done, time reached, items running
   kRecord = 2,       // -> 0: a finished realization (encode())
-  kFailed = 3,       // -> 0: an item, then the text of the error that stopped it
+  kFailed = 3,       // -> 0: 1 if the input was bad (else 0), an item, then the text of the error
   kInterrupted = 4,  // -> 0: a signal (0: an answer to kStop), then the items running
   kStop = 5,         // 0 -> all: the job is ending, answer with kInterrupted
   kDone = 6,         // 0 -> all: every record arrived

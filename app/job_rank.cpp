@@ -30,7 +30,7 @@ class Worker {
       if (interrupt_requested() != InterruptMode::none)
         answer(interrupt_signal());  // before failure(): as on rank 0
       if (auto f = pool_ ? pool_->failure() : std::nullopt) {
-        job_.send(0, kFailed, pack_items({}, {f->item}) + f->message);
+        job_.send(0, kFailed, pack_items({f->bad_input ? 1.0 : 0.0}, {f->item}) + f->message);
         wait_to_be_ended();
       }
       while (auto m = job_.receive()) {

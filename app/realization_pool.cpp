@@ -82,22 +82,24 @@ struct RealizationPool::State {
       }
       try {
         run(i);
+      } catch (const InputError& e) {
+        fail(i, std::current_exception(), e.what(), true);
       } catch (const std::exception& e) {
-        fail(i, std::current_exception(), e.what());
+        fail(i, std::current_exception(), e.what(), false);
       } catch (...) {
-        fail(i, std::current_exception(), "unknown error");
+        fail(i, std::current_exception(), "unknown error", false);
       }
     }
     std::lock_guard lock(mutex);
     --workers;
   }
 
-  void fail(std::size_t i, std::exception_ptr error, std::string message) {
+  void fail(std::size_t i, std::exception_ptr error, std::string message, bool bad_input) {
     stop = true;
     std::lock_guard lock(mutex);
     active[i] = false;
     ++ended;
-    if (!failure) failure = Failure{items[i], error, std::move(message)};
+    if (!failure) failure = Failure{items[i], error, std::move(message), bad_input};
   }
 };
 

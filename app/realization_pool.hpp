@@ -25,6 +25,7 @@ class RealizationPool {
     WorkItem item;
     std::exception_ptr error;
     std::string message;  // error's what()
+    bool bad_input;       // an InputError (a damaged saved state): exit 2, as for any input
   };
 
   // Starts `items` of `plan` on `threads` threads (>= 1). abandon_unfinished:

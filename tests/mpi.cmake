@@ -63,7 +63,8 @@ shockgas_mpi_test(one_process_checkpoint_resumed sh ${mpi_dir}/stopped_job_resum
 # The states of running realizations in a job (running_states_resumed.sh): a
 # 2-rank job of 2 long realizations stopped by SIGKILL or SIGTERM after both
 # ranks saved a state, resumed with 2 ranks and as one process, equals the
-# one-process run bit for bit.
+# one-process run bit for bit; with rank 1's state damaged, the resumed job
+# exits 2 (bad input, as one process) and writes nothing.
 foreach(signal KILL TERM)
   shockgas_mpi_test(running_states_resumed_after_${signal} sh ${mpi_dir}/running_states_resumed.sh
                     $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs> ${SHOCKGAS_MPIRUN} ${mpi_dir}/running.toml

@@ -115,9 +115,25 @@ std::string failure_of(FakeJob& job, std::size_t realizations) {
 
 TEST(JobEnsembles, ARealizationThatFailsOnRankOneIsNamed) {
   FakeJob job;
-  job.from_rank_1(kFailed, doubles({0, 3}) + "out of memory");
+  job.from_rank_1(kFailed, doubles({0, 0, 3}) + "out of memory");
   EXPECT_EQ(failure_of(job, 4),
             "rank 1 failed in realization 3: out of memory; the job stops, no result is written");
+}
+
+// Bad input on rank 1 (a damaged saved state) ends the job as bad input ends one
+// process: an InputError, which the command maps to exit 2.
+TEST(JobEnsembles, BadInputOnRankOneIsAnInputError) {
+  FakeJob job;
+  job.from_rank_1(kFailed, doubles({1, 0, 3}) + "--resume = \"s.bin\": damaged");
+  ProgressBar quiet(false);
+  try {
+    compute_records(&job, plan_of(4), 1, quiet);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "rank 1 failed in realization 3: --resume = \"s.bin\": damaged; the job stops, no result is "
+                 "written");
+  }
 }
 
 TEST(JobEnsembles, ARankStoppedByItsOwnSignalIsNamed) {

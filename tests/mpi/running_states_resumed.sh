@@ -4,7 +4,8 @@
 # realization, in the shared directory), then resumed as a job of 2 ranks and as
 # one process: each resumed run says both realizations continue from their
 # states, and ends with the result of one uninterrupted process, bit for bit
-# (compare_runs).
+# (compare_runs). Then, with realization 1's state damaged, a resumed job of 2
+# ranks exits 2 and writes nothing.
 #   SIGNAL: KILL to the launcher and every rank (a lost node), or TERM to them
 #     (a scheduler's pre-emption: every rank saves again and rank 0 says so).
 # usage: running_states_resumed.sh SHOCKGAS COMPARE_RUNS MPIRUN SCENE OUT SIGNAL
@@ -77,4 +78,27 @@ for ranks in 2 1; do
   ls "$resumed" | grep -q "checkpoint.run-" && fail "$ranks: states left after the result was written"
   "$compare" "$out/whole" "$resumed"
 done
-echo "stopped on 2 ranks by SIG$signal with both realizations' states saved, resumed on 2 ranks and 1: the uninterrupted result, bit for bit"
+
+# Realization 1's state damaged (a byte in its middle): the job of 2 ranks, in
+# which rank 1 reads that state, stops as one process does on bad input, with
+# exit 2, naming the rank, the realization and the file; the damaged state and
+# the checkpoint are left as they were and no result is written (rank 0 may
+# save a newer state of its own realization meanwhile).
+damaged="$out/damaged"
+cp -r "$out/stopped" "$damaged"
+state="$damaged/checkpoint.run-0-1.bin"
+size=$(wc -c < "$state")
+byte=$(dd if="$state" bs=1 skip=$((size / 2)) count=1 2>/dev/null | od -An -tu1 | tr -d ' ')
+printf "\\$(printf %o $(((byte + 1) % 256)))" | dd of="$state" bs=1 seek=$((size / 2)) conv=notrunc 2>/dev/null
+listing() { md5sum "$state" "$damaged/checkpoint.bin"; }
+before=$(listing)
+code=0
+"$mpirun" --allow-run-as-root --oversubscribe -np 2 "$shockgas" run --resume "$damaged" --no-plots \
+  2> "$out/damaged.stderr" || code=$?
+cat "$out/damaged.stderr"
+[ $code -eq 2 ] || fail "a damaged state on rank 1: exit $code, not 2 (bad input)"
+grep -q "^shockgas: error: rank 1 failed in realization 1: .*checkpoint.run-0-1.bin.*damaged" "$out/damaged.stderr" ||
+  fail "a damaged state on rank 1: not named"
+[ "$(listing)" = "$before" ] || fail "a damaged state on rank 1: the state or the checkpoint changed"
+[ ! -f "$damaged/result.h5" ] || fail "a damaged state on rank 1: a result was written"
+echo "stopped on 2 ranks by SIG$signal with both realizations' states saved, resumed on 2 ranks and 1: the uninterrupted result, bit for bit; a damaged state on rank 1: exit 2, nothing written"
