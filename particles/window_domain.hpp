@@ -93,16 +93,16 @@ class DomainStepper<false> {
 
  private:
   // The step of a domain that holds the ring's seam (Wraps) or not. Without it
-  // the neighbours of i are i - 1 and i + 1 and no position is shifted by L: the
-  // same numbers, without the wrap's selects (x - 0.0 is x; (x + 0.0) - y differs
-  // from x - y only in the sign of a zero gap, whose quotient t + (+-0) / g is t).
+  // the neighbours of i are i - 1 and i + 1 and no position is shifted by L. A
+  // position is shifted only where the pair wraps, not by +0.0 elsewhere: the
+  // same numbers (x - 0.0 is x; (x + 0.0) - y differs from x - y only in the
+  // sign of a zero gap, whose contact time t + (+-0) / g is t).
   template <bool Wraps>
   [[gnu::always_inline]] bool step(Domain& d, double limit) {
     const double t = d.tree.top_time();
     if (t > limit) return false;
     const std::size_t n = e_.n_;
     auto after = [n](std::size_t s) { return !Wraps || s + 1 != n ? s + 1 : 0; };
-    auto shift_if = [this](bool wrapped) { return Wraps && wrapped ? e_.L_ : 0.0; };
     const std::size_t i = d.tree.top();
     const std::size_t j = after(i);  // inside the domain: never past a line's end
     auto* body = e_.body_.data();
@@ -115,7 +115,7 @@ class DomainStepper<false> {
     const double v1 = v - dv, u1 = u + dv;
     d.dissipated += loss_[sub] * g * g;
     ++d.count[sub];
-    const double xj = Wraps ? x - shift_if(j == 0) : x;
+    const double xj = Wraps && j == 0 ? x - e_.L_ : x;
     body[i] = {x, v1, t};
     body[j] = {xj, u1, t};
     d.frozen = t == d.now ? d.frozen + 1 : 0;
@@ -128,8 +128,8 @@ class DomainStepper<false> {
     const std::size_t k = after(j);
     const auto& bp = body[p];
     const auto& bk = body[k];
-    const double xi = Wraps ? x + shift_if(i == 0) : x;
-    const double xk = Wraps ? bk.at(t) + shift_if(k == 0) : bk.at(t);
+    const double xi = Wraps && i == 0 ? x + e_.L_ : x;
+    const double xk = Wraps && k == 0 ? bk.at(t) + e_.L_ : bk.at(t);
     double tp, tj;
     two_contact_times(t, xi - bp.at(t), bp.v - v1, xk - xj, u1 - bk.v, tp, tj);
     d.tree.replace_three(p, tp, tj);  // i and j separate: slot i at +inf
