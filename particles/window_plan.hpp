@@ -15,7 +15,9 @@
 // Cuts: near every D-th pair (D about domain_bodies), the pair with the widest gap
 // among the D/8 pairs on either side. Cuts whose bound is below a quarter of the
 // median bound are dropped (their domains join), so that one dense cluster does
-// not shorten every window. Everything here is a function of the state alone,
+// not shorten every window. The smallest bound kept is the plan's length; then
+// the candidates near every fine_bodies-th pair that hold that long are cut too
+// (refine), where a plan holds many collisions per body. Everything here is a function of the state alone,
 // computed per candidate (in parallel): the same cuts for any number of threads.
 #include <algorithm>
 #include <atomic>
@@ -38,6 +40,9 @@ class WindowPlanner {
   // Nominal bodies per domain: a domain's bodies and tree (~150 kB) stay in the
   // second-level cache.
   static constexpr std::size_t domain_bodies = 4096;
+  // Nominal bodies per domain of a refined plan (refine): a domain's bodies and
+  // tree (~20 kB) in the first-level cache.
+  static constexpr std::size_t fine_bodies = 512;
   // At least this many domains, and at least min_domain_bodies bodies in each.
   static constexpr std::size_t min_domains = 4;
   static constexpr std::size_t min_domain_bodies = 256;
@@ -49,18 +54,8 @@ class WindowPlanner {
   // open: then cuts is empty).
   double choose(double t, double dv, ThreadTeam& team, std::vector<std::size_t>& cuts) {
     const std::size_t domains = std::max(min_domains, n() / domain_bodies);
-    const std::size_t w = n() / domains / 8;
-    const std::size_t k0 = e_.ring_ ? 0 : 1;
-    candidate_.assign(domains, none);
-    bound_.assign(domains, 0.0);
-    std::atomic<std::size_t> next{k0};
-    team.run([&](std::size_t) {
-      for (std::size_t k = next++; k < domains; k = next++) {
-        const std::size_t c = widest_near(k * n() / domains, w, t);
-        candidate_[k] = c;
-        if (c != none) bound_[k] = cut_bound(c, t, dv);
-      }
-    });
+    const std::size_t k0 = first_candidate();
+    find_candidates(domains, t, dv, team);
     std::vector<double> sorted;
     for (std::size_t k = k0; k < domains; ++k)
       if (candidate_[k] != none) sorted.push_back(bound_[k]);
@@ -79,6 +74,22 @@ class WindowPlanner {
     return lookahead;
   }
 
+  // Adds to the cuts of choose (ascending) the candidates near every
+  // fine_bodies-th pair that surely stay open for the whole plan, lookahead from
+  // t: the plan is as long as before, and its domains, where the gas allows, an
+  // eighth of the size, so a collision climbs three levels less of its domain's
+  // tree. Each candidate costs a scan of 2 w + 1 gaps and its bound, so only a
+  // plan of many collisions per body is worth refining (WindowScheduler).
+  void refine(double t, double dv, double lookahead, ThreadTeam& team, std::vector<std::size_t>& cuts) {
+    const std::size_t fine = n() / fine_bodies;
+    if (fine <= cuts.size()) return;
+    find_candidates(fine, t, dv, team);
+    for (std::size_t k = first_candidate(); k < fine; ++k)
+      if (candidate_[k] != none && bound_[k] >= lookahead) cuts.push_back(candidate_[k]);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  }
+
   // Widens [lo, hi] by the velocities of bodies a .. b - 1.
   void fold_velocities(std::size_t a, std::size_t b, double& lo, double& hi) const {
     double lo4[4] = {lo, lo, lo, lo}, hi4[4] = {hi, hi, hi, hi};  // four independent chains
@@ -94,6 +105,24 @@ class WindowPlanner {
  private:
   std::size_t n() const { return e_.n_; }
   std::size_t wrap(std::size_t i) const { return i >= n() ? i - n() : i; }
+  // On a line the nominal cut at body 0 is skipped: the line's first pairs.
+  std::size_t first_candidate() const { return e_.ring_ ? 0 : 1; }
+
+  // candidate_[k]: the widest pair near body k n / count (none if there is none),
+  // bound_[k]: its bound, for k from first_candidate(); in parallel, by index.
+  void find_candidates(std::size_t count, double t, double dv, ThreadTeam& team) {
+    const std::size_t w = n() / count / 8;
+    candidate_.assign(count, none);
+    bound_.assign(count, 0.0);
+    std::atomic<std::size_t> next{first_candidate()};
+    team.run([&](std::size_t) {
+      for (std::size_t k = next++; k < count; k = next++) {
+        const std::size_t c = widest_near(k * n() / count, w, t);
+        candidate_[k] = c;
+        if (c != none) bound_[k] = cut_bound(c, t, dv);
+      }
+    });
+  }
 
   // Gap of the pair (i, j = right(i)) at time t.
   double gap(std::size_t i, std::size_t j, double t) const {
@@ -201,7 +230,7 @@ class WindowPlanner {
   }
 
   const Engine& e_;
-  std::vector<std::size_t> candidate_;  // per nominal cut: the widest pair near it, or none
+  std::vector<std::size_t> candidate_;  // per nominal cut (find_candidates): the widest pair near it, or none
   std::vector<double> bound_;           // its bound
 };
 

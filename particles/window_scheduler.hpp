@@ -70,9 +70,19 @@ class WindowScheduler {
   using Engine = EventEngine<Linked>;
   using Planner = WindowPlanner<Linked>;
   static constexpr std::size_t none = Engine::none;
+  // A plan expected to hold at least this many collisions per body (at the last
+  // plan's rate) is cut finer (WindowPlanner::refine): the refinement scans the
+  // chain once (about 5 ns per body at N = 10^6) and saves about as much per
+  // collision (docs/performance.md, "Finer cuts"); it also multiplies the
+  // domains, and with them the parts of every sample taken in the plan. Plans
+  // at the collision budget (4 per body above N = 2^22) are refined.
+  static constexpr double refine_collisions_per_body = 3;
 
-  // threads: members of the team that runs the domains (>= 1).
-  WindowScheduler(Engine& e, std::size_t threads) : e_(e), stepper_(e), planner_(e), team_(threads) {}
+  // threads: members of the team that runs the domains (>= 1); refine_from: the
+  // collisions per body from which a plan is cut finer (refine_collisions_per_body;
+  // 0 refines every plan).
+  WindowScheduler(Engine& e, std::size_t threads, double refine_from = refine_collisions_per_body)
+      : e_(e), stepper_(e), planner_(e), team_(threads), refine_from_(refine_from) {}
 
   // As Engine::run_until: processes every collision at time <= t_stop.
   template <class Watch>
@@ -161,6 +171,8 @@ class WindowScheduler {
       switch_to_global();
       return false;
     }
+    if (rate_ * (horizon_ - t) >= refine_from_ * static_cast<double>(n()))
+      planner_.refine(t, v_max_ - v_min_, horizon_ - t, team_, cuts_);
     make_domains();
     planned_ = true;
     plan_start_ = t;
@@ -383,6 +395,7 @@ class WindowScheduler {
   DomainStepper<Linked> stepper_;
   Planner planner_;
   ThreadTeam team_;
+  double refine_from_;
   std::vector<std::size_t> cuts_;                                       // of the current plan, ascending
   std::vector<Domain> domains_;                                         // of the current plan, in chain order
   std::vector<EventTree::Key, HugePageAllocator<EventTree::Key>> key_;  // the domains' tree nodes
