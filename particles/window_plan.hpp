@@ -17,8 +17,9 @@
 // median bound are dropped (their domains join), so that one dense cluster does
 // not shorten every window. The smallest bound kept is the plan's length; then
 // the candidates near every fine_bodies-th pair that hold that long are cut too
-// (refine), where a plan holds many collisions per body. Everything here is a function of the state alone,
-// computed per candidate (in parallel): the same cuts for any number of threads.
+// (refine), where a plan holds many collisions per body. Everything here is a
+// function of the state alone, computed per candidate (in parallel): the same
+// cuts for any number of threads.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -43,7 +44,8 @@ class WindowPlanner {
   // Nominal bodies per domain of a refined plan (refine): a domain's bodies and
   // tree (~20 kB) in the first-level cache.
   static constexpr std::size_t fine_bodies = 512;
-  // At least this many domains, and at least min_domain_bodies bodies in each.
+  // At least this many coarse domains; windows need min_domains x
+  // min_domain_bodies bodies (window_obstacle). Refined domains may hold fewer.
   static constexpr std::size_t min_domains = 4;
   static constexpr std::size_t min_domain_bodies = 256;
 

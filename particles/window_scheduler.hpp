@@ -71,11 +71,10 @@ class WindowScheduler {
   using Planner = WindowPlanner<Linked>;
   static constexpr std::size_t none = Engine::none;
   // A plan expected to hold at least this many collisions per body (at the last
-  // plan's rate) is cut finer (WindowPlanner::refine): the refinement scans the
-  // chain once (about 5 ns per body at N = 10^6) and saves about as much per
-  // collision (docs/performance.md, "Finer cuts"); it also multiplies the
-  // domains, and with them the parts of every sample taken in the plan. Plans
-  // at the collision budget (4 per body above N = 2^22) are refined.
+  // plan's rate) is cut finer (WindowPlanner::refine), whose scan of the chain
+  // costs about what the smaller trees save per collision (docs/performance.md,
+  // "Finer cuts inside a plan"). Plans of fewer keep the coarse domains, and with
+  // them the few parts per sample of short, densely sampled runs.
   static constexpr double refine_collisions_per_body = 3;
 
   // threads: members of the team that runs the domains (>= 1); refine_from: the

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "shockgas/core/initial_condition.hpp"
@@ -16,8 +17,6 @@
 
 namespace shockgas::particles::detail {
 namespace {
-
-using Engine = EventEngine<false>;
 
 // A watch that never stops the run and never saves.
 struct Unlimited {
@@ -37,77 +36,99 @@ Bodies gas(std::size_t n) {
   return make_initial_bodies(ip);
 }
 
-Engine engine_of(const Bodies& b, bool ring, const CollisionRule& rule) {
-  return Engine(b.size(), static_cast<double>(b.size()), ring, rule,
-                [&](std::size_t first, std::size_t count, double* x, double* v, double*) {
-                  std::copy_n(b.x.begin() + first, count, x);
-                  std::copy_n(b.v.begin() + first, count, v);
-                });
+// Bodies b of unit mass on a ring or a line of length N.
+template <bool Linked>
+EventEngine<Linked> engine_of(const Bodies& b, bool ring, const CollisionRule& rule) {
+  return EventEngine<Linked>(b.size(), static_cast<double>(b.size()), ring, rule,
+                             [&](std::size_t first, std::size_t count, double* x, double* v, double* m) {
+                               std::copy_n(b.x.begin() + first, count, x);
+                               std::copy_n(b.v.begin() + first, count, v);
+                               std::fill_n(m, count, 1.0);
+                             });
 }
 
 struct Final {
   std::uint64_t collisions = 0;
-  std::vector<double> x, v;
+  std::vector<double> x, v, m;
 };
 
-Final final_of(const Engine& e, double t) {
-  Final f{e.collisions(), {}, {}};
-  e.for_each_body(t, [&](std::size_t, double x, double v, double) { f.x.push_back(x), f.v.push_back(v); });
+template <bool Linked>
+Final final_of(const EventEngine<Linked>& e, double t) {
+  Final f{e.collisions(), {}, {}, {}};
+  e.for_each_body(t, [&](std::size_t, double x, double v, double m) {
+    f.x.push_back(x), f.v.push_back(v), f.m.push_back(m);
+  });
   return f;
 }
 
-// The global queue, and windows whose every plan is refined, from bodies b to t.
+// Windows whose every plan is refined, from bodies b to t on 1, 2 and 3 threads:
+// the global queue's collisions (more than min_collisions) and final state to the bit.
+template <bool Linked>
 void expect_refined_windows_exact(const Bodies& b, bool ring, const CollisionRule& rule, double t,
-                                  std::size_t threads) {
+                                  std::uint64_t min_collisions) {
   Unlimited watch;
-  Engine global = engine_of(b, ring, rule);
+  EventEngine<Linked> global = engine_of<Linked>(b, ring, rule);
   global.use_global_queue();
   ASSERT_EQ(global.run_until(t, watch), EngineStop::reached);
-  Engine windowed = engine_of(b, ring, rule);
-  WindowScheduler<false> scheduler(windowed, threads, 0.0);
-  ASSERT_EQ(scheduler.run_until(t, watch), EngineStop::reached);
-  ASSERT_FALSE(scheduler.on_global_queue()) << scheduler.why_global();
-  const Final a = final_of(global, t), w = final_of(windowed, t);
-  ASSERT_GT(a.collisions, 10 * b.size());  // many plans
-  EXPECT_EQ(w.collisions, a.collisions);
-  EXPECT_EQ(w.x, a.x);
-  EXPECT_EQ(w.v, a.v);
+  const Final a = final_of(global, t);
+  ASSERT_GT(a.collisions, min_collisions);
+  for (std::size_t threads : {1, 2, 3}) {
+    EventEngine<Linked> windowed = engine_of<Linked>(b, ring, rule);
+    WindowScheduler<Linked> scheduler(windowed, threads, 0.0);
+    ASSERT_EQ(scheduler.run_until(t, watch), EngineStop::reached);
+    ASSERT_FALSE(scheduler.on_global_queue()) << scheduler.why_global();
+    const Final w = final_of(windowed, t);
+    EXPECT_EQ(w.collisions, a.collisions) << threads << " threads";
+    EXPECT_EQ(w.x, a.x) << threads << " threads";
+    EXPECT_EQ(w.v, a.v) << threads << " threads";
+    EXPECT_EQ(w.m, a.m) << threads << " threads";
+  }
 }
 
 TEST(WindowPlanner, RefiningAddsCutsAndKeepsTheCoarseOnes) {
   const Bodies b = gas(1 << 15);
-  const Engine e = engine_of(b, true, {0.9, 1e-2, false});
+  const EventEngine<false> e = engine_of<false>(b, true, {0.9, 1e-2, false});
   WindowPlanner<false> planner(e);
-  ThreadTeam team(1);
-  std::vector<std::size_t> coarse;
-  const double lookahead = planner.choose(0.0, 2.0, team, coarse);  // uniform velocities in [-1, 1]
-  ASSERT_GT(lookahead, 0.0);
-  std::vector<std::size_t> fine = coarse;
-  planner.refine(0.0, 2.0, lookahead, team, fine);
-  // Random gaps at t = 0: 19 of the 64 fine candidates hold as long as the
-  // coarse cut of the shortest bound (8 cuts become 27).
-  EXPECT_GT(fine.size(), 2 * coarse.size());
+  auto cuts_on = [&](std::size_t threads) {
+    ThreadTeam team(threads);
+    std::vector<std::size_t> coarse;
+    const double lookahead = planner.choose(0.0, 2.0, team, coarse);  // velocities uniform in [-1, 1]
+    std::vector<std::size_t> fine = coarse;
+    planner.refine(0.0, 2.0, lookahead, team, fine);
+    return std::pair{coarse, fine};
+  };
+  const auto [coarse, fine] = cuts_on(1);
+  // This seed's random gaps at t = 0: 19 of the 64 fine candidates hold as long
+  // as the coarse cut of the shortest bound, and 8 cuts become 27.
+  EXPECT_EQ(coarse.size(), 8u);
+  EXPECT_EQ(fine.size(), 27u);
   EXPECT_TRUE(std::is_sorted(fine.begin(), fine.end()));
   EXPECT_EQ(std::adjacent_find(fine.begin(), fine.end()), fine.end());
   for (std::size_t c : coarse) EXPECT_TRUE(std::binary_search(fine.begin(), fine.end(), c)) << "cut " << c;
+  // Candidates are claimed by index: the same cuts on any team.
+  EXPECT_EQ(cuts_on(3), cuts_on(1));
 }
 
 TEST(WindowPlanner, RefinedPlansGiveTheGlobalQueuesCollisionsOnARing) {
-  expect_refined_windows_exact(gas(20000), true, {0.9, 1e-2, false}, 300.0, 1);
+  expect_refined_windows_exact<false>(gas(20000), true, {0.9, 1e-2, false}, 300.0, 200000);
 }
 
 TEST(WindowPlanner, RefinedPlansGiveTheGlobalQueuesCollisionsOnALine) {
-  expect_refined_windows_exact(gas(12000), false, {1.0, 0.0, false}, 100.0, 2);
+  expect_refined_windows_exact<false>(gas(12000), false, {1.0, 0.0, false}, 100.0, 120000);
 }
 
-TEST(WindowPlanner, FastBodiesDoNotCrossTheFineCuts) {
+TEST(WindowPlanner, RefinedPlansGiveTheGlobalQueuesMerges) {
+  // r = 0: every collision merges (the engine with links and masses), most bodies.
+  expect_refined_windows_exact<true>(gas(12000), true, {0.0, 0.0, false}, 200.0, 6000);
+}
+
+TEST(WindowPlanner, RefinedPlansWithPistonsDrivenAtTheFineCandidates) {
   // Pistons 20 times faster than the gas drive shocks toward the fine candidates
-  // near bodies 2560 and 5632 (coarse ones lie near multiples of 2048 here): a
-  // fine cut whose bound is shorter than the plan must not be taken.
+  // near bodies 2560 and 5632 (coarse ones lie near multiples of 2048 here).
   Bodies b = gas(8192);
   for (std::size_t i = 2300; i < 2450; ++i) b.v[i] = 20.0;
   for (std::size_t i = 5750; i < 5900; ++i) b.v[i] = -20.0;
-  expect_refined_windows_exact(b, true, {0.9, 1e-2, false}, 6.0, 1);
+  expect_refined_windows_exact<false>(b, true, {0.9, 1e-2, false}, 6.0, 10 * b.size());
 }
 
 }  // namespace
