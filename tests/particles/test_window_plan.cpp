@@ -7,25 +7,15 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
-#include <limits>
 #include <utility>
 #include <vector>
 
+#include "run_watch.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "window_scheduler.hpp"
 
 namespace shockgas::particles::detail {
 namespace {
-
-// A watch that never stops the run and never saves.
-struct Unlimited {
-  bool operator()(double, std::uint64_t) { return true; }
-  std::uint64_t collisions_left(std::uint64_t) const { return std::numeric_limits<std::uint64_t>::max(); }
-  bool tick(double) { return true; }
-  bool saves_on_request() const { return false; }
-  [[noreturn]] void save_and_stop(double) { std::abort(); }
-};
 
 Bodies gas(std::size_t n) {
   InitialParams ip;
@@ -66,7 +56,10 @@ Final final_of(const EventEngine<Linked>& e, double t) {
 template <bool Linked>
 void expect_refined_windows_exact(const Bodies& b, bool ring, const CollisionRule& rule, double t,
                                   std::uint64_t min_collisions) {
-  Unlimited watch;
+  // The run's own watch, without limits, saves or progress.
+  const ParticleParams unlimited;
+  const ProgressCallback no_progress;
+  RunWatch watch{unlimited, no_progress};
   EventEngine<Linked> global = engine_of<Linked>(b, ring, rule);
   global.use_global_queue();
   ASSERT_EQ(global.run_until(t, watch), EngineStop::reached);
