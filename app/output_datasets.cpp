@@ -258,11 +258,13 @@ std::vector<Declaration> provenance_datasets() {
 
 std::vector<Declaration> particle_datasets() {
   const Part p = Part::initial;
-  // A column of realization 0's bodies (0: x, 1: v, 2: m), drawn in chunks.
+  // A column of realization 0's bodies (0: x, 1: v, 2: m), drawn in chunks. Only
+  // the positions' column draws and sorts random positions; v and m skip them.
   auto initial = [](int column) {
     return [column](const RunResults& r, Emitter& out) {
       if (!r.scene->has_particles || !r.initial) return;
-      InitialStream bodies = stream_realization(*r.initial, 0);
+      InitialStream bodies = stream_realization(
+          *r.initial, 0, column == 0 ? InitialStream::Parts::all : InitialStream::Parts::velocities);
       out.pieces(bodies.size(), [&](const Emitter::PutPiece& put) {
         read_in_chunks(bodies, [&](const double* x, const double* v, const double* m, std::size_t count) {
           put(column == 0 ? x : column == 1 ? v : m, count);

@@ -15,6 +15,7 @@
 #include "hdf5_file.hpp"
 #include "output_layout.hpp"
 #include "run_command.hpp"
+#include "shockgas/core/initial_condition.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -35,7 +36,8 @@ using testing_support::run;
 fs::path run_scene(const std::string& name, const std::string& scene, std::vector<std::string> options = {}) {
   const fs::path dir = testing_support::fresh_process_directory("shockgas-test-layout-", name);
   std::ofstream(dir / "scene.toml") << scene;
-  std::vector<std::string> args = {"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(), "-q"};
+  std::vector<std::string> args = {"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(),
+                                   "-q"};
   args.insert(args.end(), options.begin(), options.end());
   EXPECT_EQ(run(args), 0);
   return dir / "out";
@@ -127,6 +129,23 @@ TEST(OutputDocs, DocsOutputMdHoldsTheDeclaredLayout) {
 TEST(OutputDocs, ARunWritesTheDeclaredLayout) {
   expect_file_follows_layout(run_scene("full", kFullScene), {Part::provenance, Part::initial, Part::particles,
                                                              Part::analysis, Part::continuum, Part::compare});
+}
+
+// /initial/x, v, m are realization 0 as make_initial_bodies draws it, to the bit
+// (each column streams the realization again; only x draws the positions).
+TEST(OutputDocs, TheInitialDatasetsAreRealizationZeroAsDrawn) {
+  InitialParams p;
+  p.N = 3000, p.L = 2500, p.positions = Positions::random, p.velocities = Velocities::gaussian;
+  p.amplitude = 0.7, p.remove_mean = true, p.seed = 11;
+  const fs::path out = run_scene("initial",
+                                 "[initial]\nN = 3000\nL = 2500\npositions = \"random\"\nvelocities = "
+                                 "\"gaussian\"\namplitude = 0.7\nremove_mean = true\nseed = 11\n"
+                                 "[particles]\nt_end = 1\nsamples = 2\n[output]\nplots = false\n");
+  const Bodies drawn = make_initial_bodies(p, 0);
+  const Hdf5File h5 = Hdf5File::open((out / "result.h5").string());
+  EXPECT_EQ(h5.read("/initial/x"), drawn.x);
+  EXPECT_EQ(h5.read("/initial/v"), drawn.v);
+  EXPECT_EQ(h5.read("/initial/m"), drawn.m);
 }
 
 // The plot script reads only the result file (scripts/plot_result.py): it must find
