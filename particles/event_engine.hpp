@@ -147,6 +147,9 @@ class EventEngine {
   double dissipated() const { return dissipated_; }
   // Position (unrolled) of the body of the last collision.
   double last_position() const { return last_x_; }
+  // The predicted contact time of pair slot i (body i and its right neighbour) as
+  // the queue holds it; +inf for none.
+  double slot_time(std::size_t i) const { return slot_[i]; }
 
   // Visits the live bodies in chain order from body 0: f(index, x at time t
   // (unrolled), v, m).
