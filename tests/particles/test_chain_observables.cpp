@@ -221,7 +221,10 @@ TEST(SortedState, ABodyFarOutOfPlaceReadsAsTheSortedCopy) {
     SCOPED_TRACE(ring ? "ring" : "line");
     Chain c = random_chain(rng, 20000, 0.02, ring);
     c.x[15000] = c.x[10] + 1e-9 * c.L;  // behind 14990 bodies
-    expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, ring)), ref_sorted(c, ring));
+    const auto view = view_of(c);       // outlives the state, which reads it
+    const SortedState state(view, c.L, ring);
+    EXPECT_TRUE(state.through_copy());
+    expect_bodies_equal(read_whole(state), ref_sorted(c, ring));
     expect_bodies_equal(sorted_bodies(view_of(c), c.L, ring), ref_sorted(c, ring));
   }
 }
@@ -247,6 +250,56 @@ TEST(SortedState, ManyOrFewBodiesBeforeTheSeamReadAsTheSortedCopy) {
       expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, true)), ref_sorted(c, true));
     }
   }
+}
+
+// A rounding-sized drop before the ring's seam (touching bodies out of order,
+// anywhere in a long run at large N) is not the seam: the state is read in the
+// sorted copy's order through the window, without a copy, on either side of the
+// seam and with both.
+TEST(SortedState, ARoundingDropBeforeTheSeamIsNotTheSeam) {
+  Rng rng(30);
+  const std::size_t n = 200000, seam = 80000;  // the chain starts at 0.6 L
+  for (const std::vector<std::size_t>& drops :
+       std::vector<std::vector<std::size_t>>{{100}, {79999}, {100, 150000}, {150000}}) {
+    SCOPED_TRACE("drops at " + std::to_string(drops.front()) +
+                 (drops.size() > 1 ? " and after the seam" : ""));
+    Chain c;
+    c.L = static_cast<double>(n), c.particles = n;
+    for (std::size_t b = 0; b < n; ++b) {
+      c.first.push_back(b);
+      c.x.push_back(0.6 * c.L + static_cast<double>(b) + rng.uniform(0.0, 0.5));
+      c.v.push_back(rng.uniform(-1.0, 1.0));
+      c.m.push_back(1.0);
+    }
+    for (std::size_t k : drops) c.x[k] = std::nextafter(c.x[k - 1], 0.0);
+    ASSERT_LT(c.x[seam] - c.L, c.x[seam - 1]);  // wrapped, the positions drop at the seam
+    const auto view = view_of(c);               // outlives the state, which reads it
+    const SortedState state(view, c.L, true);
+    EXPECT_FALSE(state.through_copy());
+    expect_bodies_equal(read_whole(state), ref_sorted(c, true));
+    expect_bodies_equal(sorted_bodies(view_of(c), c.L, true), ref_sorted(c, true));
+  }
+}
+
+// Without a crossing of the ring's period the chain's start is the seam, also
+// when rounding left a drop: read through the window, without a copy.
+TEST(SortedState, ARoundingDropWithoutACrossingKeepsTheStart) {
+  Rng rng(31);
+  const std::size_t n = 20000;
+  Chain c;
+  c.L = static_cast<double>(n), c.particles = n;
+  for (std::size_t b = 0; b < n; ++b) {
+    c.first.push_back(b);
+    c.x.push_back(static_cast<double>(b) + rng.uniform(0.0, 0.5));
+    c.v.push_back(rng.uniform(-1.0, 1.0));
+    c.m.push_back(1.0);
+  }
+  c.x[5000] = std::nextafter(c.x[4999], 0.0);
+  const auto view = view_of(c);  // outlives the state, which reads it
+  const SortedState state(view, c.L, true);
+  EXPECT_FALSE(state.through_copy());
+  expect_bodies_equal(read_whole(state), ref_sorted(c, true));
+  expect_bodies_equal(sorted_bodies(view_of(c), c.L, true), ref_sorted(c, true));
 }
 
 // Merging gas (r = 0, delta = 0): every body is its own cluster.
