@@ -229,6 +229,31 @@ TEST(SortedState, ABodyFarOutOfPlaceReadsAsTheSortedCopy) {
   }
 }
 
+// n unit bodies on a ring of length n, one per unit cell from start * n on
+// (unrolled: the chain crosses the period after (1 - start) n bodies), at a
+// random place in the first half of its cell; velocities in [-1, 1].
+Chain ring_chain_from(Rng& rng, std::size_t n, double start) {
+  Chain c;
+  c.L = static_cast<double>(n), c.particles = n;
+  for (std::size_t b = 0; b < n; ++b) {
+    c.first.push_back(b);
+    c.x.push_back(start * c.L + static_cast<double>(b) + rng.uniform(0.0, 0.5));
+    c.v.push_back(rng.uniform(-1.0, 1.0));
+    c.m.push_back(1.0);
+  }
+  return c;
+}
+
+// A state read through SortedState without a sorted copy, and read and sorted
+// (sorted_bodies) in the sorted copy's order, bit for bit.
+void expect_read_without_a_copy(const Chain& c) {
+  const auto view = view_of(c);  // outlives the state, which reads it
+  const SortedState state(view, c.L, true);
+  EXPECT_FALSE(state.through_copy());
+  expect_bodies_equal(read_whole(state), ref_sorted(c, true));
+  expect_bodies_equal(sorted_bodies(view, c.L, true), ref_sorted(c, true));
+}
+
 // The bodies before the seam are held back while the rest is read when they are
 // few (up to 2^16), and read in a second pass when they are many: both in the
 // sorted copy's order, bit for bit, in order from the seam and misordered.
@@ -237,15 +262,7 @@ TEST(SortedState, ManyOrFewBodiesBeforeTheSeamReadAsTheSortedCopy) {
   for (const double start : {0.999, 0.6}) {  // about 200 and 80000 bodies before the seam
     for (const bool misordered : {false, true}) {
       SCOPED_TRACE("start " + std::to_string(start) + (misordered ? ", misordered" : ""));
-      Chain c;
-      const std::size_t n = 200000;
-      c.L = static_cast<double>(n), c.particles = n;
-      for (std::size_t b = 0; b < n; ++b) {
-        c.first.push_back(b);
-        c.x.push_back(start * c.L + static_cast<double>(b) + rng.uniform(0.0, 0.5));
-        c.v.push_back(rng.uniform(-1.0, 1.0));
-        c.m.push_back(1.0);
-      }
+      Chain c = ring_chain_from(rng, 200000, start);
       if (misordered) c.x[150000] = std::nextafter(c.x[149999], 0.0);  // a rounding-sized drop
       expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, true)), ref_sorted(c, true));
     }
@@ -263,21 +280,10 @@ TEST(SortedState, ARoundingDropBeforeTheSeamIsNotTheSeam) {
        std::vector<std::vector<std::size_t>>{{100}, {79999}, {100, 150000}, {150000}}) {
     SCOPED_TRACE("drops at " + std::to_string(drops.front()) +
                  (drops.size() > 1 ? " and after the seam" : ""));
-    Chain c;
-    c.L = static_cast<double>(n), c.particles = n;
-    for (std::size_t b = 0; b < n; ++b) {
-      c.first.push_back(b);
-      c.x.push_back(0.6 * c.L + static_cast<double>(b) + rng.uniform(0.0, 0.5));
-      c.v.push_back(rng.uniform(-1.0, 1.0));
-      c.m.push_back(1.0);
-    }
+    Chain c = ring_chain_from(rng, n, 0.6);
     for (std::size_t k : drops) c.x[k] = std::nextafter(c.x[k - 1], 0.0);
     ASSERT_LT(c.x[seam] - c.L, c.x[seam - 1]);  // wrapped, the positions drop at the seam
-    const auto view = view_of(c);               // outlives the state, which reads it
-    const SortedState state(view, c.L, true);
-    EXPECT_FALSE(state.through_copy());
-    expect_bodies_equal(read_whole(state), ref_sorted(c, true));
-    expect_bodies_equal(sorted_bodies(view_of(c), c.L, true), ref_sorted(c, true));
+    expect_read_without_a_copy(c);
   }
 }
 
@@ -285,21 +291,9 @@ TEST(SortedState, ARoundingDropBeforeTheSeamIsNotTheSeam) {
 // when rounding left a drop: read through the window, without a copy.
 TEST(SortedState, ARoundingDropWithoutACrossingKeepsTheStart) {
   Rng rng(31);
-  const std::size_t n = 20000;
-  Chain c;
-  c.L = static_cast<double>(n), c.particles = n;
-  for (std::size_t b = 0; b < n; ++b) {
-    c.first.push_back(b);
-    c.x.push_back(static_cast<double>(b) + rng.uniform(0.0, 0.5));
-    c.v.push_back(rng.uniform(-1.0, 1.0));
-    c.m.push_back(1.0);
-  }
+  Chain c = ring_chain_from(rng, 20000, 0.0);
   c.x[5000] = std::nextafter(c.x[4999], 0.0);
-  const auto view = view_of(c);  // outlives the state, which reads it
-  const SortedState state(view, c.L, true);
-  EXPECT_FALSE(state.through_copy());
-  expect_bodies_equal(read_whole(state), ref_sorted(c, true));
-  expect_bodies_equal(sorted_bodies(view_of(c), c.L, true), ref_sorted(c, true));
+  expect_read_without_a_copy(c);
 }
 
 // Merging gas (r = 0, delta = 0): every body is its own cluster.
