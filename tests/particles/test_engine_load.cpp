@@ -11,38 +11,25 @@
 #include <random>
 #include <vector>
 
-#include "event_engine.hpp"
+#include "engine_fixtures.hpp"
 
 namespace shockgas::particles::detail {
 namespace {
 
-struct Chain {
-  std::vector<double> x, v;
-};
-
 // n sorted positions in [0, n) and velocities in [-1, 1], with the cases the
 // branch-free loop must get right: equal neighbours' positions (a zero gap),
 // equal velocities (g = 0), and receding pairs.
-Chain chain(std::size_t n, std::uint64_t seed) {
+Bodies chain(std::size_t n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> pos(0.0, static_cast<double>(n)), vel(-1.0, 1.0);
-  Chain c{std::vector<double>(n), std::vector<double>(n)};
+  Bodies c;
+  c.x.resize(n), c.v.resize(n), c.m.assign(n, 1.0);
   for (double& x : c.x) x = pos(rng);
   std::sort(c.x.begin(), c.x.end());
   for (double& v : c.v) v = vel(rng);
   for (std::size_t i = 7; i + 1 < n; i += 97) c.x[i + 1] = c.x[i];
   for (std::size_t i = 11; i + 1 < n; i += 89) c.v[i + 1] = c.v[i];
   return c;
-}
-
-EventEngine<false> loaded(const Chain& c, bool ring) {
-  const std::size_t n = c.x.size();
-  return EventEngine<false>(n, static_cast<double>(n), ring, CollisionRule{0.9, 1e-2, false},
-                            [&](std::size_t first, std::size_t count, double* x, double* v, double* m) {
-                              std::copy_n(c.x.begin() + first, count, x);
-                              std::copy_n(c.v.begin() + first, count, v);
-                              std::fill_n(m, count, 1.0);
-                            });
 }
 
 double expected_time(double gap, double g) {
@@ -52,9 +39,9 @@ double expected_time(double gap, double g) {
 // Odd and even sizes, below, at and across the loader's chunks of 4096 bodies.
 TEST(EngineLoad, SlotTimesAreTheInitialContactTimes) {
   for (std::size_t n : {2, 3, 4095, 4096, 4097, 12290, 12291}) {
-    const Chain c = chain(n, 1000 + n);
+    const Bodies c = chain(n, 1000 + n);
     for (bool ring : {false, true}) {
-      const EventEngine<false> e = loaded(c, ring);
+      const EventEngine<false> e = engine_of<false>(c, ring, CollisionRule{0.9, 1e-2, false});
       for (std::size_t i = 0; i + 1 < n; ++i)
         ASSERT_EQ(e.slot_time(i), expected_time(c.x[i + 1] - c.x[i], c.v[i] - c.v[i + 1]))
             << "n = " << n << ", ring " << ring << ", slot " << i;
@@ -68,12 +55,14 @@ TEST(EngineLoad, SlotTimesAreTheInitialContactTimes) {
 
 // The fixtures reach every case the oracle separates.
 TEST(EngineLoad, TheChainHoldsZeroGapsEqualVelocitiesAndRecedingPairs) {
-  const Chain c = chain(4097, 1);
+  const Bodies c = chain(4097, 1);
   std::size_t zero_gap = 0, equal = 0, receding = 0, approaching = 0;
   for (std::size_t i = 0; i + 1 < c.x.size(); ++i) {
     zero_gap += c.x[i + 1] == c.x[i];
     const double g = c.v[i] - c.v[i + 1];
-    equal += g == 0, receding += g<0, approaching += g> 0;
+    equal += g == 0;
+    receding += g < 0;
+    approaching += g > 0;
   }
   EXPECT_GT(zero_gap, 10u);
   EXPECT_GT(equal, 10u);

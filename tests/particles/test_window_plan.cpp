@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine_fixtures.hpp"
 #include "run_watch.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "window_scheduler.hpp"
@@ -24,17 +25,6 @@ Bodies gas(std::size_t n) {
   ip.velocities = Velocities::uniform;
   ip.seed = 23;
   return make_initial_bodies(ip);
-}
-
-// Bodies b of unit mass on a ring or a line of length N.
-template <bool Linked>
-EventEngine<Linked> engine_of(const Bodies& b, bool ring, const CollisionRule& rule) {
-  return EventEngine<Linked>(b.size(), static_cast<double>(b.size()), ring, rule,
-                             [&](std::size_t first, std::size_t count, double* x, double* v, double* m) {
-                               std::copy_n(b.x.begin() + first, count, x);
-                               std::copy_n(b.v.begin() + first, count, v);
-                               std::fill_n(m, count, 1.0);
-                             });
 }
 
 struct Final {
