@@ -1,6 +1,7 @@
 #include "run_target.hpp"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -101,9 +102,21 @@ void check_target_path(const fs::path& target, const std::string& out) {
   if (status.type() == fs::file_type::not_found) return;
   if (status.type() != fs::file_type::directory) refuse(out, "a directory (this is not one)");
   struct stat here {}, above {};
-  if (::stat(target.c_str(), &here) == 0 && ::stat(target.parent_path().c_str(), &above) == 0 &&
-      here.st_dev != above.st_dev)
+  if (::stat(target.c_str(), &here) != 0 || ::stat(target.parent_path().c_str(), &above) != 0) return;
+  if (here.st_dev != above.st_dev)
     refuse(out, "a directory that is not a mount point (give a directory inside it)" + replaced);
+  // rename(2) in a directory with the sticky bit (/tmp, shared scratch space):
+  // only the owner of the entry or of the directory, or a process with
+  // CAP_FOWNER (taken here as root), may move the entry (EPERM). Refused now,
+  // not after the run has computed its results and cannot put them in place.
+  const uid_t me = ::geteuid();
+  if ((above.st_mode & S_ISVTX) != 0 && me != 0 && here.st_uid != me && above.st_uid != me) {
+    const std::string why = target.parent_path().string() +
+                            " has the sticky bit: only the owner of an entry may move it, and this directory "
+                            "belongs to user " +
+                            std::to_string(here.st_uid) + ", not to " + std::to_string(me);
+    refuse(out, "a directory this user may replace (" + why + ")");
+  }
 }
 
 std::optional<std::string> scene_of_results(const fs::path& dir) {

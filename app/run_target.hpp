@@ -15,7 +15,8 @@ namespace shockgas::app {
 std::filesystem::path resolve_target(const std::filesystem::path& out);
 
 // The refusals that need only the path (the root, protected directories, not a
-// directory, a mount point); out is the --out as given, for the message.
+// directory, a mount point, another user's directory in a sticky directory);
+// out is the --out as given, for the message.
 void check_target_path(const std::filesystem::path& target, const std::string& out);
 
 // The refusals that need the contents (foreign files, another scene's results

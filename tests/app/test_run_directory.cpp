@@ -3,12 +3,15 @@
 // stale plots kept; killed runs left files no run cleared): replaced as a
 // whole, refused when it holds what a run must not replace, locked, and cleared
 // of what killed runs left.
+#include <grp.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "child_run.hpp"
 #include "run_dir_checks.hpp"
 #include "run_directory.hpp"
 #include "shockgas/app/command.hpp"
@@ -106,6 +109,42 @@ TEST(RunDirectory, AFileIsNotAnOutputDirectory) {
   write_text(d.out, "a file\n");
   EXPECT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 2);
   EXPECT_EQ(read_text(d.out), "a file\n");
+}
+
+// Run as another user (nobody) in a world-writable directory with the sticky
+// bit, as /tmp or a shared scratch disk: a directory someone else owns there
+// cannot be moved aside (rename(2) fails with EPERM), so it is refused before
+// the run, not after it has computed everything; a directory of its own is
+// replaced. (Found: the run computed, then failed to exchange the directories.)
+TEST(RunDirectory, AnotherUsersDirectoryInAStickyDirectoryIsRefusedBeforeTheRun) {
+  if (::geteuid() != 0) GTEST_SKIP() << "runs the command as another user, which needs root";
+  constexpr uid_t nobody = 65534;
+  const Dirs d = setup("rundir-sticky");
+  fs::permissions(d.root, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                              fs::perms::others_read | fs::perms::others_exec);
+  const fs::path shared = d.root / "shared", theirs = shared / "theirs", own = shared / "own";
+  fs::create_directories(theirs);
+  fs::create_directories(own);
+  fs::permissions(shared, fs::perms::all | fs::perms::sticky_bit);
+  fs::permissions(theirs, fs::perms::all);  // writable by all, but root's
+  ASSERT_EQ(::chown(own.c_str(), nobody, nobody), 0);
+  testing::Options as_nobody;
+  as_nobody.in_child = [] {
+    if (::setgroups(0, nullptr) != 0 || ::setresgid(nobody, nobody, nobody) != 0 ||
+        ::setresuid(nobody, nobody, nobody) != 0)
+      _exit(125);
+  };
+  const auto [refused, why] =
+      testing::run_child({"run", d.a.string(), "--out", theirs.string(), "-q", "--no-plots"}, as_nobody);
+  EXPECT_EQ(refused, 2) << why;
+  EXPECT_NE(why.find("sticky bit"), std::string::npos) << why;
+  EXPECT_EQ(why.find("run failed"), std::string::npos) << why;
+  EXPECT_TRUE(fs::is_empty(theirs));
+  EXPECT_EQ(std::distance(fs::directory_iterator(shared), fs::directory_iterator()), 2);  // nothing left
+  const auto [replaced, said] =
+      testing::run_child({"run", d.a.string(), "--out", own.string(), "-q", "--no-plots"}, as_nobody);
+  EXPECT_EQ(replaced, 0) << said;
+  EXPECT_EQ(whole_run(own, "alpha"), "");
 }
 
 TEST(RunDirectory, ALockKeepsASecondRunOut) {
