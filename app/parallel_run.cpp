@@ -4,6 +4,7 @@
 #include "parallel_run.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 
 #include "checkpoint.hpp"
@@ -46,11 +47,17 @@ std::vector<double> wall_shares(const EnsemblePlan& plan, const std::vector<Real
 }
 
 // The records of a checkpoint being resumed, less those of a realization 0
-// whose state file is not whole (a run killed between the two): it runs again.
+// whose state file is not whole (a run killed between the two, or a damaged
+// file): it runs again, and the run says so.
 std::vector<RealizationRecord> resumable_records(const fs::path& dir) {
   std::vector<RealizationRecord> kept = read_checkpoint(dir).records;
   const auto lost = [&](const RealizationRecord& r) {
-    return r.states_apart && !StoredStates::complete(state_file_path(dir, r.ensemble));
+    if (!r.states_apart) return false;
+    const auto problem = StoredStates::problem(state_file_path(dir, r.ensemble));
+    if (problem)
+      std::fprintf(stderr, "shockgas: realization 0 of ensemble %llu runs again: %s\n",
+                   static_cast<unsigned long long>(r.ensemble), problem->c_str());
+    return problem.has_value();
   };
   kept.erase(std::remove_if(kept.begin(), kept.end(), lost), kept.end());
   return kept;

@@ -11,6 +11,7 @@
 
 #include "durable_file.hpp"
 #include "shockgas/core/error.hpp"
+#include "stream_hash.hpp"
 
 namespace shockgas::app {
 
@@ -19,9 +20,15 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kChunk = 4096;  // bodies per read: 96 KiB for the three columns
-constexpr std::size_t kEntryBytes = 4 * 8, kTrailerBytes = 3 * 8;
+constexpr std::size_t kEntryWords = 7, kEntryBytes = kEntryWords * 8, kTrailerBytes = 3 * 8;
 
 std::string reason() { return std::strerror(errno); }
+
+std::uint64_t sum_of(const double* d, std::size_t count) {
+  StreamHash h;
+  h.add(reinterpret_cast<const char*>(d), count * sizeof(double));
+  return h.value();
+}
 
 }  // namespace
 
@@ -61,14 +68,10 @@ StateFileWriter::StateFileWriter(fs::path path, const std::string& saved)
   };
   std::vector<std::uint64_t> words(saved.size() / 8);
   std::memcpy(words.data(), saved.data(), words.size() * 8);
-  if (words.size() < 2 || saved.size() % 8 != 0 || words.size() != 2 + words[1] * 4)
+  if (words.size() < 2 || saved.size() % 8 != 0 || words.size() != 2 + words[1] * kEntryWords)
     throw bad("a malformed save");
   end_ = words[0];
-  for (std::size_t e = 0; e < words[1]; ++e) {
-    Entry entry{words[2 + 4 * e], 0, words[4 + 4 * e], words[5 + 4 * e]};
-    std::memcpy(&entry.t, &words[3 + 4 * e], sizeof entry.t);
-    index_.push_back(entry);
-  }
+  for (std::size_t e = 0; e < words[1]; ++e) index_.push_back(entry_of(&words[2 + kEntryWords * e]));
   fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CLOEXEC);
   if (fd_ < 0) throw bad(reason());
   struct stat st {};
@@ -92,12 +95,20 @@ std::string StateFileWriter::saved() {
   if (::fsync(fd_) != 0) throw RunError(write_failure(temporary_, reason()));
   kept_ = true;
   std::vector<std::uint64_t> words{end_, index_.size()};
-  for (const Entry& e : index_) {
-    std::uint64_t t = 0;
-    std::memcpy(&t, &e.t, sizeof t);
-    words.insert(words.end(), {e.k, t, e.n, e.offset});
-  }
+  for (const Entry& e : index_) append_words(e, words);
   return std::string(reinterpret_cast<const char*>(words.data()), words.size() * 8);
+}
+
+void StateFileWriter::append_words(const Entry& e, std::vector<std::uint64_t>& words) {
+  std::uint64_t t = 0;
+  std::memcpy(&t, &e.t, sizeof t);
+  words.insert(words.end(), {e.k, t, e.n, e.offset, e.sums[0], e.sums[1], e.sums[2]});
+}
+
+StateFileWriter::Entry StateFileWriter::entry_of(const std::uint64_t* w) {
+  Entry e{w[0], 0, w[2], w[3], {w[4], w[5], w[6]}};
+  std::memcpy(&e.t, &w[1], sizeof e.t);
+  return e;
 }
 
 void StateFileWriter::write_at(std::uint64_t offset, const void* data, std::size_t bytes) {
@@ -114,26 +125,25 @@ void StateFileWriter::write_at(std::uint64_t offset, const void* data, std::size
 void StateFileWriter::append(std::uint64_t k, double t, const particles::StateReader& state) {
   const std::uint64_t n = state.size(), base = end_;
   std::uint64_t at = 0;
+  StreamHash sum[3];
   state.read([&](const double* x, const double* v, const double* m, std::size_t count) {
     if (at + count > n) throw RunError("state of " + std::to_string(n) + " bodies read with more");
     const std::size_t bytes = count * sizeof(double);
-    write_at(base + at * 8, x, bytes);
-    write_at(base + (n + at) * 8, v, bytes);
-    write_at(base + (2 * n + at) * 8, m, bytes);
+    int c = 0;
+    for (const double* column : {x, v, m}) {
+      write_at(base + (c * n + at) * 8, column, bytes);
+      sum[c++].add(reinterpret_cast<const char*>(column), bytes);
+    }
     at += count;
   });
   if (at != n) throw RunError("state of " + std::to_string(n) + " bodies read with " + std::to_string(at));
   end_ = base + 3 * n * 8;
-  index_.push_back({k, t, n, base});
+  index_.push_back({k, t, n, base, {sum[0].value(), sum[1].value(), sum[2].value()}});
 }
 
 void StateFileWriter::commit() {
   std::vector<std::uint64_t> tail;
-  for (const Entry& e : index_) {
-    std::uint64_t t = 0;
-    std::memcpy(&t, &e.t, sizeof t);
-    tail.insert(tail.end(), {e.k, t, e.n, e.offset});
-  }
+  for (const Entry& e : index_) append_words(e, tail);
   tail.insert(tail.end(), {index_.size(), end_, kStateFileMagic});
   write_at(end_, tail.data(), tail.size() * sizeof(std::uint64_t));
   if (::close(std::exchange(fd_, -1)) != 0) {
@@ -169,25 +179,41 @@ void StoredStates::read_at(std::uint64_t offset, void* data, std::size_t bytes) 
   }
 }
 
+void StoredStates::State::check(int c, std::uint64_t read) const {
+  static const char* const column[] = {"x", "v", "m"};
+  if (read != sums_[static_cast<std::size_t>(c)])
+    throw RunError("state file " + file_->path_.string() + " is damaged: " + column[c] + " of " + name_ +
+                   " does not match its checksum");
+}
+
+// The chunks reach the caller before the last is checked: a damaged file ends
+// the run with a RunError (its outputs are staged, and discarded).
 void StoredStates::State::read(const Chunk& chunk) const {
   std::vector<double> x(kChunk), v(kChunk), m(kChunk);
+  StreamHash sum[3];
   for (std::uint64_t at = 0; at < n_; at += kChunk) {
     const std::size_t count = static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, n_ - at));
-    file_->read_at(offset_ + at * 8, x.data(), count * 8);
-    file_->read_at(offset_ + (n_ + at) * 8, v.data(), count * 8);
-    file_->read_at(offset_ + (2 * n_ + at) * 8, m.data(), count * 8);
+    int c = 0;
+    for (double* column : {x.data(), v.data(), m.data()}) {
+      file_->read_at(offset_ + (c * n_ + at) * 8, column, count * 8);
+      sum[c++].add(reinterpret_cast<const char*>(column), count * 8);
+    }
     chunk(x.data(), v.data(), m.data(), count);
   }
+  for (int c = 0; c < 3; ++c) check(c, sum[c].value());
 }
 
 void StoredStates::State::read_column(int c,
                                       const std::function<void(const double*, std::size_t)>& piece) const {
   std::vector<double> buffer(3 * kChunk);
+  StreamHash sum;
   for (std::uint64_t at = 0; at < n_; at += buffer.size()) {
     const std::size_t count = static_cast<std::size_t>(std::min<std::uint64_t>(buffer.size(), n_ - at));
     file_->read_at(offset_ + (static_cast<std::uint64_t>(c) * n_ + at) * 8, buffer.data(), count * 8);
+    sum.add(reinterpret_cast<const char*>(buffer.data()), count * 8);
     piece(buffer.data(), count);
   }
+  check(c, sum.value());
 }
 
 std::shared_ptr<const StoredStates> StoredStates::open(const fs::path& path) {
@@ -208,17 +234,19 @@ std::shared_ptr<const StoredStates> StoredStates::open(const fs::path& path) {
   if (index > size || (size - kTrailerBytes - index) / kEntryBytes != count ||
       (size - kTrailerBytes - index) % kEntryBytes != 0)
     throw damaged("its index does not fit its size");
-  std::vector<std::uint64_t> entries(4 * count);
+  std::vector<std::uint64_t> entries(kEntryWords * count);
   if (count > 0) s->read_at(index, entries.data(), entries.size() * 8);
   for (std::uint64_t i = 0; i < count; ++i) {
-    const std::uint64_t k = entries[4 * i], n = entries[4 * i + 2], offset = entries[4 * i + 3];
+    const std::uint64_t* e = &entries[kEntryWords * i];
+    const std::uint64_t k = e[0], n = e[2], offset = e[3];
     double t = 0;
-    std::memcpy(&t, &entries[4 * i + 1], sizeof t);
+    std::memcpy(&t, &e[1], sizeof t);
     if (offset > index || n > (index - offset) / 24) throw damaged("a state beyond its data");
+    const std::array<std::uint64_t, 3> sums{e[4], e[5], e[6]};
     if (k == kFinalState)
-      s->final_.push_back(State(s.get(), t, n, offset));
+      s->final_.push_back(State(s.get(), "the final state", t, n, offset, sums));
     else if (k == s->snapshots_.size())
-      s->snapshots_.push_back(State(s.get(), t, n, offset));
+      s->snapshots_.push_back(State(s.get(), "snapshot " + std::to_string(k), t, n, offset, sums));
     else
       throw damaged("snapshot " + std::to_string(k) + " out of order");
   }
@@ -226,12 +254,19 @@ std::shared_ptr<const StoredStates> StoredStates::open(const fs::path& path) {
   return s;
 }
 
-bool StoredStates::complete(const fs::path& path) noexcept {
+std::optional<std::string> StoredStates::problem(const fs::path& path) noexcept {
   try {
-    open(path);
-    return true;
+    const auto file = open(path);
+    const auto read_all = [](const State& state) {
+      for (int c = 0; c < 3; ++c) state.read_column(c, [](const double*, std::size_t) {});
+    };
+    for (const State& state : file->snapshots_) read_all(state);
+    read_all(file->final_state());
+    return std::nullopt;
+  } catch (const std::exception& e) {
+    return std::string(e.what());
   } catch (...) {
-    return false;
+    return "unreadable";
   }
 }
 

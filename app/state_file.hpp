@@ -15,11 +15,17 @@
 // Its contents, numbers in the machine's byte order:
 //   per state, in the order reached: x[n], v[n], m[n] (float64),
 //   the index: per state its snapshot number (kFinalState for the final state),
-//   t (float64), n and the offset of its x (u64),
+//   t (float64), n and the offset of its x (u64), and a checksum of each of
+//   its three columns (StreamHash of their bytes, u64),
 //   the state count (u64), the offset of the index (u64), kStateFileMagic.
+// A read checks the columns it reads against their checksums (RunError naming
+// the file); a resumed run checks the whole file first and runs realization 0
+// again when it is damaged.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +33,7 @@
 
 namespace shockgas::app {
 
-inline constexpr std::uint64_t kStateFileMagic = 0x3173657461747367;  // "gstates1"
+inline constexpr std::uint64_t kStateFileMagic = 0x3273657461747367;  // "gstates2"
 inline constexpr std::uint64_t kFinalState = ~std::uint64_t{0};       // the index's k of the final state
 
 // DIR/states-<ensemble>.bin
@@ -70,8 +76,12 @@ class StateFileWriter {
     std::uint64_t k;  // snapshot number, or kFinalState
     double t;
     std::uint64_t n, offset;
+    std::array<std::uint64_t, 3> sums;  // of x, v and m
   };
   void append(std::uint64_t k, double t, const particles::StateReader& state);
+  // An entry as the words of the index (and of saved()), and back.
+  static void append_words(const Entry& e, std::vector<std::uint64_t>& words);
+  static Entry entry_of(const std::uint64_t* words);
   void write_at(std::uint64_t offset, const void* data, std::size_t bytes);
 
   std::filesystem::path path_, temporary_;
@@ -96,18 +106,24 @@ class StoredStates {
 
    private:
     friend class StoredStates;
-    State(const StoredStates* file, double t, std::uint64_t n, std::uint64_t offset)
-        : file_(file), t_(t), n_(n), offset_(offset) {}
+    State(const StoredStates* file, std::string name, double t, std::uint64_t n, std::uint64_t offset,
+          const std::array<std::uint64_t, 3>& sums)
+        : file_(file), name_(std::move(name)), t_(t), n_(n), offset_(offset), sums_(sums) {}
+    // RunError unless column c read as `read` matches its checksum.
+    void check(int c, std::uint64_t read) const;
     const StoredStates* file_;
+    std::string name_;  // "snapshot k" or "the final state", for messages
     double t_;
     std::uint64_t n_, offset_;
+    std::array<std::uint64_t, 3> sums_;
   };
 
   // Opens a committed file; RunError naming it when it is missing, shorter
   // than its index says or not a state file.
   static std::shared_ptr<const StoredStates> open(const std::filesystem::path& path);
-  // Whether path holds a committed state file (for a resumed run).
-  static bool complete(const std::filesystem::path& path) noexcept;
+  // What is wrong with the state file at path, every column read and checked;
+  // nullopt when it is whole (for a resumed run).
+  static std::optional<std::string> problem(const std::filesystem::path& path) noexcept;
   ~StoredStates();
   StoredStates(const StoredStates&) = delete;
   StoredStates& operator=(const StoredStates&) = delete;
