@@ -13,6 +13,8 @@
 //   (a count, then each), the resolved parameters, the realization and variant
 //   slices of a shard ("" for a whole run),
 //   the records (a count, then each as encode() bytes),
+//   the wall-clock seconds the run had spent computing when it saved, its
+//   earlier interrupted parts included (float64 bits as u64),
 //   a checksum (FNV-1a, 64 bits) of every byte before it.
 // Numbers and lengths are u64 in the machine's byte order: a checkpoint is
 // resumed by the same build on the same kind of machine.
@@ -26,7 +28,7 @@
 
 namespace shockgas::app {
 
-inline constexpr std::uint64_t kCheckpointFormat = 1;
+inline constexpr std::uint64_t kCheckpointFormat = 2;
 
 struct Checkpoint {
   std::string version, commit;  // of the build that wrote it
@@ -35,6 +37,13 @@ struct Checkpoint {
   std::string resolved;                // resolved_scene_text of the scene
   std::string realizations, variants;  // a shard's slices, as given; "" for a whole run
   std::vector<RealizationRecord> records;
+  double seconds = 0;  // wall-clock seconds spent computing up to the save [s]
+};
+
+// What a resumed run keeps of its checkpoint.
+struct KeptWork {
+  std::vector<RealizationRecord> records;
+  double seconds = 0;  // Checkpoint::seconds [s]
 };
 
 // DIR/checkpoint.bin

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <bit>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -41,6 +42,7 @@ std::string to_bytes(const Checkpoint& c) {
   for (const std::string* s : {&c.resolved, &c.realizations, &c.variants}) out.text(*s);
   out.u64(c.records.size());
   for (const auto& r : c.records) out.text(encode(r));
+  out.u64(std::bit_cast<std::uint64_t>(c.seconds));
   out.u64(fnv1a(out.bytes().data(), out.bytes().size()));
   return out.take();
 }
@@ -72,6 +74,7 @@ Checkpoint from_bytes(const std::string& bytes, const fs::path& file) {
   for (std::string* s : {&c.resolved, &c.realizations, &c.variants}) *s = in.text();
   c.records.resize(in.u64());
   for (auto& r : c.records) r = decode(in.text());
+  c.seconds = std::bit_cast<double>(in.u64());
   if (in.position() != body) throw damaged(file, "bytes after its records");
   return c;
 }

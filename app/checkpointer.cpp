@@ -28,10 +28,10 @@ bool signals_take_checkpoints() noexcept {
 }
 
 Checkpointer::Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
-                           const std::string& variants, std::vector<RealizationRecord> kept, bool resuming,
+                           const std::string& variants, KeptWork kept, bool resuming,
                            bool states, bool job_rank)
     : dir_(std::move(dir)),
-      checkpoint_(make_checkpoint(scene, realizations, variants, std::move(kept))),
+      checkpoint_(make_checkpoint(scene, realizations, variants, std::move(kept.records))),
       kept_(checkpoint_.records.size()),
       saved_(kept_),
       on_disk_(resuming || job_rank),
@@ -39,7 +39,9 @@ Checkpointer::Checkpointer(std::filesystem::path dir, const Scene& scene, const 
       resuming_(resuming),
       interval_(std::chrono::duration_cast<Clock::duration>(
           std::chrono::duration<double>(60.0 * scene.output.checkpoint_minutes))),
-      last_save_(Clock::now()) {
+      last_save_(Clock::now()),
+      started_(last_save_),
+      seconds_before_(kept.seconds) {
   identity_.version = checkpoint_.version;
   identity_.commit = checkpoint_.commit;
   identity_.resolved = checkpoint_.resolved;
@@ -221,6 +223,7 @@ void Checkpointer::save() {
 void Checkpointer::save_locked(bool fault) {
   for (const RealizationRecord& r : checkpoint_.records)  // on the disk before the record that needs them
     if (r.states_apart) sync_state_file(state_file_path(dir_, r.ensemble));
+  checkpoint_.seconds = seconds_before_ + std::chrono::duration<double>(Clock::now() - started_).count();
   write_checkpoint(dir_, checkpoint_);
   on_disk_ = true;
   const std::size_t before = std::min(saved_, checkpoint_.records.size());

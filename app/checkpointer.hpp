@@ -90,7 +90,8 @@ class Checkpointer {
   // a safe point and save (a scheduler's grace before SIGKILL is usually 30 s).
   static constexpr double kStateGraceSeconds = 20;
 
-  // kept: the records of a checkpoint being resumed (empty for a new run);
+  // kept: the records of a checkpoint being resumed and the seconds spent on
+  // them (empty for a new run);
   // realizations, variants: a shard's slices as given ("" for a whole run).
   // states: the realizations running in this process save their states;
   // then, resuming, the states in dir are continued (InputError "--resume" for
@@ -100,7 +101,7 @@ class Checkpointer {
   // them out): never writes checkpoint.bin nor removes a file, and continues a
   // realization from its state when the directory holds one.
   Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
-               const std::string& variants, std::vector<RealizationRecord> kept, bool resuming = false,
+               const std::string& variants, KeptWork kept, bool resuming = false,
                bool states = false, bool job_rank = false);
   ~Checkpointer();  // signals end the process again (partial_outputs.hpp)
   Checkpointer(const Checkpointer&) = delete;
@@ -111,6 +112,9 @@ class Checkpointer {
   std::vector<WorkItem> remaining(const EnsemblePlan& plan) const;
   // The records of the resumed checkpoint.
   std::size_t kept() const { return kept_; }
+  // Wall-clock seconds the run's interrupted parts spent computing up to the
+  // checkpoint resumed (0 for a new run) [s].
+  double seconds_before() const { return seconds_before_; }
   // Records just finished.
   void add(std::vector<RealizationRecord> finished);
   // Between polls of the computation: saves when the interval has passed and a
@@ -165,6 +169,8 @@ class Checkpointer {
   bool resuming_ = false;
   std::chrono::steady_clock::duration interval_;
   std::chrono::steady_clock::time_point last_save_;
+  std::chrono::steady_clock::time_point started_;  // when this process began computing
+  double seconds_before_;                          // spent by the run's earlier parts [s]
 
   mutable std::mutex mutex_;      // guards what follows and the records (the runs save from their threads)
   std::map<Key, double> states_;  // the realizations with a state on disk: its time

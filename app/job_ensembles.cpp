@@ -300,9 +300,11 @@ ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> pl
                                 ProgressBar& progress, Checkpointer* checkpoints,
                                 const std::filesystem::path& states_dir) {
   const Clock::time_point start = Clock::now();
+  // A resumed run counts the time its interrupted parts spent too.
+  const double before = checkpoints ? checkpoints->seconds_before() : 0.0;
   if (!job) {
     ComputedRecords out = compute_alone(std::move(plan), threads, progress, checkpoints, states_dir);
-    out.wall_seconds = seconds_since(start);
+    out.wall_seconds = before + seconds_since(start);
     return out;
   }
   ComputedRecords out;
@@ -314,7 +316,7 @@ ComputedRecords compute_records(Job* job, std::shared_ptr<const EnsemblePlan> pl
   }
   out.records = Gatherer(*job, std::move(plan), threads, progress, checkpoints, states_dir).gather();
   sort_in_plan_order(out.records);
-  out.wall_seconds = seconds_since(start);
+  out.wall_seconds = before + seconds_since(start);
   return out;
 }
 

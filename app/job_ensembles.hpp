@@ -53,7 +53,7 @@ struct ComputedRecords {
   std::vector<RealizationRecord> records;  // rank 0: every item of the plan, in plan order; else empty
   int ranks = 1;
   std::size_t threads = 1;  // threads of each process
-  double wall_seconds = 0;
+  double wall_seconds = 0;  // computing them; a resumed run's with its interrupted parts' [s]
 };
 
 // With job == nullptr: this process alone (a shard without MPI). `threads`: of

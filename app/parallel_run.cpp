@@ -49,8 +49,9 @@ std::vector<double> wall_shares(const EnsemblePlan& plan, const std::vector<Real
 // The records of a checkpoint being resumed, less those of a realization 0
 // whose state file is not whole (a run killed between the two, or a damaged
 // file): it runs again, and the run says so.
-std::vector<RealizationRecord> resumable_records(const fs::path& dir) {
-  std::vector<RealizationRecord> kept = read_checkpoint(dir).records;
+KeptWork resumable_work(const fs::path& dir) {
+  Checkpoint checkpoint = read_checkpoint(dir);
+  std::vector<RealizationRecord>& kept = checkpoint.records;
   const auto lost = [&](const RealizationRecord& r) {
     if (!r.states_apart) return false;
     const auto problem = StoredStates::problem(state_file_path(dir, r.ensemble));
@@ -60,7 +61,7 @@ std::vector<RealizationRecord> resumable_records(const fs::path& dir) {
     return problem.has_value();
   };
   kept.erase(std::remove_if(kept.begin(), kept.end(), lost), kept.end());
-  return kept;
+  return {std::move(kept), checkpoint.seconds};
 }
 
 // Realization 0's state files are kept after a failure only beside a
@@ -125,10 +126,10 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
     if (keeps_checkpoints(options) && speaks_for_job())
       checkpoints = std::make_unique<Checkpointer>(
           where, scene, options.realizations, options.variants,
-          options.resume ? resumable_records(where) : std::vector<RealizationRecord>{}, options.resume, true);
+          options.resume ? resumable_work(where) : KeptWork{}, options.resume, true);
     else if (keeps_checkpoints(options))
       checkpoints = std::make_unique<Checkpointer>(where, scene, options.realizations, options.variants,
-                                                   std::vector<RealizationRecord>{}, options.resume, true, true);
+                                                   KeptWork{}, options.resume, true, true);
     if (checkpoints && options.resume && speaks_for_job())
       std::cerr << "shockgas: resuming " << where.string() << ": " << checkpoints->kept() << " of "
                 << plan->items().size() << " realizations kept from the checkpoint"

@@ -93,7 +93,8 @@ std::vector<Declaration> particles() {
           particle([](const PR&, const Scene& s) { return s.particles.realizations; })),
       key(p, "particles.collisions", "1", "total collisions of all realizations", "",
           particle([](const PR& pr, const Scene&) { return pr.ensemble.total_collisions; })),
-      key(p, "particles.wall_seconds", "s", "wall-clock time of the ensemble", "",
+      key(p, "particles.wall_seconds", "s", "wall-clock time of the ensemble (a resumed run: with the time its interrupted parts spent up to "
+          "their last checkpoint)", "",
           particle([](const PR& pr, const Scene&) { return pr.ensemble.wall_seconds; })),
       key(p, "particles.collisions_per_second", "1/s", "collisions / wall_seconds", "",
           particle([](const PR& pr, const Scene&) {

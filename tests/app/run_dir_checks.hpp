@@ -66,6 +66,14 @@ inline void write_text(const fs::path& file, const std::string& text) {
   std::ofstream(file) << text;
 }
 
+// Eight bytes of file at offset overwritten with a number no run writes there.
+inline void overwrite_eight_bytes(const fs::path& file, std::uint64_t offset) {
+  std::fstream f(file, std::ios::binary | std::ios::in | std::ios::out);
+  f.seekp(static_cast<std::streamoff>(offset));
+  const double garbage = -3.25e106;
+  f.write(reinterpret_cast<const char*>(&garbage), sizeof garbage);
+}
+
 // A fresh directory for one test, of this process alone (test binaries of
 // other builds may run at the same time).
 inline fs::path fresh_dir(const std::string& name) {

@@ -178,7 +178,7 @@ class JobCheckpoints : public ::testing::Test {
   }
   std::unique_ptr<Checkpointer> checkpointer(std::size_t realizations,
                                              std::vector<RealizationRecord> kept = {}) {
-    return std::make_unique<Checkpointer>(dir_, scene_of(realizations), "", "", std::move(kept));
+    return std::make_unique<Checkpointer>(dir_, scene_of(realizations), "", "", KeptWork{std::move(kept)});
   }
   std::vector<std::uint64_t> saved_indices() const {
     std::vector<std::uint64_t> indices;
