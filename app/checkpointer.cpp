@@ -28,8 +28,8 @@ bool signals_take_checkpoints() noexcept {
 }
 
 Checkpointer::Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
-                           const std::string& variants, KeptWork kept, bool resuming,
-                           bool states, bool job_rank)
+                           const std::string& variants, KeptWork kept, bool resuming, bool states,
+                           bool job_rank)
     : dir_(std::move(dir)),
       checkpoint_(make_checkpoint(scene, realizations, variants, std::move(kept.records))),
       kept_(checkpoint_.records.size()),

@@ -101,8 +101,8 @@ class Checkpointer {
   // them out): never writes checkpoint.bin nor removes a file, and continues a
   // realization from its state when the directory holds one.
   Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
-               const std::string& variants, KeptWork kept, bool resuming = false,
-               bool states = false, bool job_rank = false);
+               const std::string& variants, KeptWork kept, bool resuming = false, bool states = false,
+               bool job_rank = false);
   ~Checkpointer();  // signals end the process again (partial_outputs.hpp)
   Checkpointer(const Checkpointer&) = delete;
   Checkpointer& operator=(const Checkpointer&) = delete;

@@ -124,9 +124,9 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
     // the states of the realizations it runs.
     std::unique_ptr<Checkpointer> checkpoints;
     if (keeps_checkpoints(options) && speaks_for_job())
-      checkpoints = std::make_unique<Checkpointer>(
-          where, scene, options.realizations, options.variants,
-          options.resume ? resumable_work(where) : KeptWork{}, options.resume, true);
+      checkpoints = std::make_unique<Checkpointer>(where, scene, options.realizations, options.variants,
+                                                   options.resume ? resumable_work(where) : KeptWork{},
+                                                   options.resume, true);
     else if (keeps_checkpoints(options))
       checkpoints = std::make_unique<Checkpointer>(where, scene, options.realizations, options.variants,
                                                    KeptWork{}, options.resume, true, true);

@@ -93,9 +93,10 @@ std::vector<Declaration> particles() {
           particle([](const PR&, const Scene& s) { return s.particles.realizations; })),
       key(p, "particles.collisions", "1", "total collisions of all realizations", "",
           particle([](const PR& pr, const Scene&) { return pr.ensemble.total_collisions; })),
-      key(p, "particles.wall_seconds", "s", "wall-clock time of the ensemble (a resumed run: with the time its interrupted parts spent up to "
-          "their last checkpoint)", "",
-          particle([](const PR& pr, const Scene&) { return pr.ensemble.wall_seconds; })),
+      key(p, "particles.wall_seconds", "s",
+          "wall-clock time of the ensemble (a resumed run: with the time its interrupted parts spent up to "
+          "their last checkpoint)",
+          "", particle([](const PR& pr, const Scene&) { return pr.ensemble.wall_seconds; })),
       key(p, "particles.collisions_per_second", "1/s", "collisions / wall_seconds", "",
           particle([](const PR& pr, const Scene&) {
             const auto& e = pr.ensemble;
@@ -131,12 +132,15 @@ std::vector<Declaration> particles() {
           "with the event solver", events([](const particles::RunSchedule& s) { return s.order; })),
       key(p, "particles.schedule_note", "",
           "why the events (also) ran on the global queue, and what time windows would need there",
-          "with the event solver, when not only windows",
-          events([](const particles::RunSchedule& s) { return s.why_global.empty() ? Json() : Json(s.why_global); })),
+          "with the event solver, when not only windows", events([](const particles::RunSchedule& s) {
+            return s.why_global.empty() ? Json() : Json(s.why_global);
+          })),
       key(p, "particles.window_threads", "1",
-          "threads that ran realization 0's time windows (particles.threads shared out among the realizations)",
-          "with the event solver, on windows",
-          events([](const particles::RunSchedule& s) { return s.order == "global" ? Json() : Json(s.threads); })),
+          "threads that ran realization 0's time windows (particles.threads shared out among the "
+          "realizations)",
+          "with the event solver, on windows", events([](const particles::RunSchedule& s) {
+            return s.order == "global" ? Json() : Json(s.threads);
+          })),
       key(p, "particles.T_final", "length^2/time^2", "T at the last sample (ensemble mean)", "",
           [](const RunResults& r, Emitter& out) {
             if (r.particles && !r.particles->ensemble.T.mean.empty())
