@@ -2,17 +2,22 @@
 #include "animate.hpp"
 
 #include <filesystem>
+#include <iostream>
 
 #include "hdf5_file.hpp"
 #include "manifest.hpp"
 #include "plots.hpp"
 #include "report_html.hpp"
+#include "result_check.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 
 bool has_frames(const std::string& result_path) {
-  for (const auto& d : Hdf5File::open(result_path).datasets())
+  const Hdf5File file = Hdf5File::open(result_path);
+  // As `shockgas info` says: a file without a manifest entry is read as it is.
+  if (!file.verified()) std::cerr << "shockgas: warning: " << unverified_warning(result_path) << "\n";
+  for (const auto& d : file.datasets())
     if (d.path == "/animation/t") return true;
   return false;
 }

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <vector>
 
+#include "durable_file.hpp"
 #include "hdf5_file.hpp"
 #include "html_page.hpp"
 #include "output_layout.hpp"
@@ -253,11 +254,7 @@ void write_report_html(const fs::path& dir) {
       figures_table(summary) + reference_table(scene, summary) + variants_section(dir, summary);
   body += plots + scene_section(p);
   const fs::path tmp = dir / "report.html.partial";
-  {
-    std::ofstream out(tmp);
-    out << html::page("shockgas: " + name, body);
-    if (!out) throw RunError("cannot write " + tmp.string());
-  }
+  write_file(tmp, html::page("shockgas: " + name, body));  // a failure names the file and the reason
   fs::rename(tmp, dir / "report.html");
 }
 

@@ -105,5 +105,20 @@ TEST(Frames, AnimateWithoutFramesExitsTwoNamingTheKey) {
   EXPECT_EQ(run({"animate", (scene.parent_path() / "no-such-run").string()}), 2);
 }
 
+// A result without its manifest entry is animated as it is, with the warning
+// `shockgas info` gives (found: animate said nothing of it).
+TEST(Frames, AnimateWarnsThatAResultWithoutAManifestCannotBeChecked) {
+  const fs::path scene = scene_file("unlisted", kGas);
+  const fs::path out = scene.parent_path() / "out";
+  ASSERT_EQ(run({"run", scene.string(), "--out", out.string(), "-q"}), 0);
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(run({"animate", out.string()}), 2);  // no frames: refused after the check
+  EXPECT_EQ(testing::internal::GetCapturedStderr().find("cannot be checked"), std::string::npos);
+  fs::remove(out / "manifest.json");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(run({"animate", out.string()}), 2);
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("its integrity cannot be checked"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace shockgas::app
