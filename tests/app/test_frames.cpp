@@ -117,7 +117,8 @@ TEST(Frames, AnimateWarnsThatAResultWithoutAManifestCannotBeChecked) {
   fs::remove(out / "manifest.json");
   testing::internal::CaptureStderr();
   EXPECT_EQ(run({"animate", out.string()}), 2);
-  EXPECT_NE(testing::internal::GetCapturedStderr().find("its integrity cannot be checked"), std::string::npos);
+  EXPECT_NE(testing::internal::GetCapturedStderr().find("its integrity cannot be checked"),
+            std::string::npos);
 }
 
 }  // namespace
