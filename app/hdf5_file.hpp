@@ -54,6 +54,7 @@ class Hdf5File {
   static Hdf5File open(const std::string& path, Verification checked);
   // Whether open() checked the file against its manifest.
   bool verified() const { return verification_ == Verification::manifest; }
+  const std::string& path() const { return path_; }
 
   // Datasets; intermediate groups are created as needed. unit and description
   // become string attributes of the dataset.

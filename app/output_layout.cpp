@@ -2,7 +2,9 @@
 #include "output_layout.hpp"
 
 #include <sstream>
+#include <string_view>
 
+#include "durable_file.hpp"
 #include "fault.hpp"
 #include "layout_declarations.hpp"
 #include "shockgas/core/error.hpp"
@@ -196,7 +198,12 @@ void write_part(Hdf5File& h5, const RunResults& r, Part part) {
       fault_point("write:result.h5");
       throw_if_aborted();
       FileEmitter out(h5, d.entry);
-      d.emit(r, out);
+      try {
+        d.emit(r, out);
+      } catch (const RunError& e) {  // the library names the dataset; the message names the file too
+        if (std::string_view(e.what()).starts_with("HDF5: ")) throw RunError(write_failure(h5.path(), e.what()));
+        throw;
+      }
     }
 }
 
