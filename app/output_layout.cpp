@@ -201,7 +201,8 @@ void write_part(Hdf5File& h5, const RunResults& r, Part part) {
       try {
         d.emit(r, out);
       } catch (const RunError& e) {  // the library names the dataset; the message names the file too
-        if (std::string_view(e.what()).starts_with("HDF5: ")) throw RunError(write_failure(h5.path(), e.what()));
+        if (std::string_view(e.what()).starts_with("HDF5: "))
+          throw RunError(write_failure(h5.path(), e.what()));
         throw;
       }
     }
