@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <cstring>
 #include <utility>
@@ -24,10 +25,13 @@ constexpr std::size_t kEntryWords = 7, kEntryBytes = kEntryWords * 8, kTrailerBy
 
 std::string reason() { return std::strerror(errno); }
 
-std::uint64_t sum_of(const double* d, std::size_t count) {
-  StreamHash h;
-  h.add(reinterpret_cast<const char*>(d), count * sizeof(double));
-  return h.value();
+// An index entry as its words (the file's index and saved()), and back.
+void append_words(const StateFileEntry& e, std::vector<std::uint64_t>& words) {
+  words.insert(words.end(),
+               {e.k, std::bit_cast<std::uint64_t>(e.t), e.n, e.offset, e.sums[0], e.sums[1], e.sums[2]});
+}
+StateFileEntry entry_of(const std::uint64_t* w) {
+  return {w[0], std::bit_cast<double>(w[1]), w[2], w[3], {w[4], w[5], w[6]}};
 }
 
 }  // namespace
@@ -95,20 +99,8 @@ std::string StateFileWriter::saved() {
   if (::fsync(fd_) != 0) throw RunError(write_failure(temporary_, reason()));
   kept_ = true;
   std::vector<std::uint64_t> words{end_, index_.size()};
-  for (const Entry& e : index_) append_words(e, words);
+  for (const StateFileEntry& e : index_) append_words(e, words);
   return std::string(reinterpret_cast<const char*>(words.data()), words.size() * 8);
-}
-
-void StateFileWriter::append_words(const Entry& e, std::vector<std::uint64_t>& words) {
-  std::uint64_t t = 0;
-  std::memcpy(&t, &e.t, sizeof t);
-  words.insert(words.end(), {e.k, t, e.n, e.offset, e.sums[0], e.sums[1], e.sums[2]});
-}
-
-StateFileWriter::Entry StateFileWriter::entry_of(const std::uint64_t* w) {
-  Entry e{w[0], 0, w[2], w[3], {w[4], w[5], w[6]}};
-  std::memcpy(&e.t, &w[1], sizeof e.t);
-  return e;
 }
 
 void StateFileWriter::write_at(std::uint64_t offset, const void* data, std::size_t bytes) {
@@ -143,7 +135,7 @@ void StateFileWriter::append(std::uint64_t k, double t, const particles::StateRe
 
 void StateFileWriter::commit() {
   std::vector<std::uint64_t> tail;
-  for (const Entry& e : index_) append_words(e, tail);
+  for (const StateFileEntry& e : index_) append_words(e, tail);
   tail.insert(tail.end(), {index_.size(), end_, kStateFileMagic});
   write_at(end_, tail.data(), tail.size() * sizeof(std::uint64_t));
   if (::close(std::exchange(fd_, -1)) != 0) {
@@ -237,18 +229,14 @@ std::shared_ptr<const StoredStates> StoredStates::open(const fs::path& path) {
   std::vector<std::uint64_t> entries(kEntryWords * count);
   if (count > 0) s->read_at(index, entries.data(), entries.size() * 8);
   for (std::uint64_t i = 0; i < count; ++i) {
-    const std::uint64_t* e = &entries[kEntryWords * i];
-    const std::uint64_t k = e[0], n = e[2], offset = e[3];
-    double t = 0;
-    std::memcpy(&t, &e[1], sizeof t);
-    if (offset > index || n > (index - offset) / 24) throw damaged("a state beyond its data");
-    const std::array<std::uint64_t, 3> sums{e[4], e[5], e[6]};
-    if (k == kFinalState)
-      s->final_.push_back(State(s.get(), "the final state", t, n, offset, sums));
-    else if (k == s->snapshots_.size())
-      s->snapshots_.push_back(State(s.get(), "snapshot " + std::to_string(k), t, n, offset, sums));
+    const StateFileEntry e = entry_of(&entries[kEntryWords * i]);
+    if (e.offset > index || e.n > (index - e.offset) / 24) throw damaged("a state beyond its data");
+    if (e.k == kFinalState)
+      s->final_.push_back(State(s.get(), "the final state", e));
+    else if (e.k == s->snapshots_.size())
+      s->snapshots_.push_back(State(s.get(), "snapshot " + std::to_string(e.k), e));
     else
-      throw damaged("snapshot " + std::to_string(k) + " out of order");
+      throw damaged("snapshot " + std::to_string(e.k) + " out of order");
   }
   if (s->final_.size() != 1) throw damaged("no final state");
   return s;

@@ -36,6 +36,14 @@ namespace shockgas::app {
 inline constexpr std::uint64_t kStateFileMagic = 0x3273657461747367;  // "gstates2"
 inline constexpr std::uint64_t kFinalState = ~std::uint64_t{0};       // the index's k of the final state
 
+// One state's entry in the index (7 words: k, t, n, offset, the three sums).
+struct StateFileEntry {
+  std::uint64_t k;  // snapshot number, or kFinalState
+  double t;
+  std::uint64_t n, offset;            // bodies, and the offset of its x
+  std::array<std::uint64_t, 3> sums;  // StreamHash of x, v and m
+};
+
 // DIR/states-<ensemble>.bin
 std::filesystem::path state_file_path(const std::filesystem::path& dir, std::uint64_t ensemble);
 // Whether a file name is a state file's, or what a killed run left of one
@@ -72,22 +80,13 @@ class StateFileWriter {
   std::string saved();
 
  private:
-  struct Entry {
-    std::uint64_t k;  // snapshot number, or kFinalState
-    double t;
-    std::uint64_t n, offset;
-    std::array<std::uint64_t, 3> sums;  // of x, v and m
-  };
   void append(std::uint64_t k, double t, const particles::StateReader& state);
-  // An entry as the words of the index (and of saved()), and back.
-  static void append_words(const Entry& e, std::vector<std::uint64_t>& words);
-  static Entry entry_of(const std::uint64_t* words);
   void write_at(std::uint64_t offset, const void* data, std::size_t bytes);
 
   std::filesystem::path path_, temporary_;
   int fd_ = -1;
   std::uint64_t end_ = 0;  // bytes written
-  std::vector<Entry> index_;
+  std::vector<StateFileEntry> index_;
   particles::StateSink sink_;
   bool kept_ = false;  // a save refers to the temporary file
 };
@@ -106,9 +105,8 @@ class StoredStates {
 
    private:
     friend class StoredStates;
-    State(const StoredStates* file, std::string name, double t, std::uint64_t n, std::uint64_t offset,
-          const std::array<std::uint64_t, 3>& sums)
-        : file_(file), name_(std::move(name)), t_(t), n_(n), offset_(offset), sums_(sums) {}
+    State(const StoredStates* file, std::string name, const StateFileEntry& e)
+        : file_(file), name_(std::move(name)), t_(e.t), n_(e.n), offset_(e.offset), sums_(e.sums) {}
     // RunError unless column c read as `read` matches its checksum.
     void check(int c, std::uint64_t read) const;
     const StoredStates* file_;
