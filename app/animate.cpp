@@ -28,7 +28,7 @@ void animate(const std::string& dir) {
           "a run's output directory, holding result.h5");
   require(has_frames(result), "output.animation", std::string("false"),
           "true: the run must record its frames (run the scene again with --set output.animation=true)");
-  make_animation(dir);
+  std::cerr << make_animation(dir);
   write_report_html(dir);
   // The new files and the new report.html join the run's manifest.
   if (const auto manifest = read_manifest(dir)) write_manifest(dir, manifest->scene);

@@ -5,6 +5,7 @@
 // (PR_SET_PDEATHSIG: no orphan even after a SIGKILL), and is stopped when an
 // interrupt is requested (core/interrupt.hpp): SIGTERM to its group, SIGKILL
 // after a grace time, then Interrupted is thrown.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,9 @@ namespace shockgas::app {
 // returns its exit status (128 + signal if a signal ended it; 127 if it could
 // not be started). Throws Interrupted once the child is gone if an interrupt was
 // requested meanwhile. Passes the fault point "plot" at each poll (fault.hpp).
-int run_child(const std::vector<std::string>& argv);
+// With `said`, the child's stderr goes there instead (its last kSaidBytes), for
+// the caller to tell the user what matters of it.
+inline constexpr std::size_t kSaidBytes = 64 * 1024;
+int run_child(const std::vector<std::string>& argv, std::string* said = nullptr);
 
 }  // namespace shockgas::app

@@ -161,7 +161,7 @@ int dispatch(const CLI::App& app, const Arguments& args) {
   }
   if (app.got_subcommand("bench")) {
     const std::string dir = studies::run_studies(args.bench);
-    make_bench_charts(dir);
+    std::cerr << make_bench_charts(dir);
     std::cout << "bench results in " << dir << "/\n";
     return kExitOk;
   }

@@ -5,20 +5,30 @@ namespace shockgas::app {
 
 // Runs scripts/<script> DIR with Debian's /usr/bin/python3 (matplotlib, h5py);
 // env_override names an environment variable that may give another script path.
-// A missing python, script or plotting library is a warning on stderr naming
-// `what`, never an error: the result files are complete without the pictures.
-void run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
-                     const std::string& what);
+// Returns what to tell the user on stderr, whole lines (empty: nothing):
+// - when the script ran to its end, what it said there (its own warnings);
+// - else one warning naming `what` and the reason: python, the script or a
+//   plotting library missing, or the script failed (the reason: the last line
+//   it said). The result files are complete without the pictures; a failed
+//   script's messages (a Python traceback) are kept in DIR/<log> instead, and the
+//   pictures it left half-written (DIR/*.partial) are removed.
+// Throws RunError when the pictures could not be written: the script's exit 4
+// (its last line "cannot write PATH: REASON"), or any failure that leaves no
+// room on DIR's file system. A directory that cannot take them cannot take the
+// run's other files either, and a run that fails says so once.
+std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
+                            const std::string& what, const std::string& log);
 
 // The PNG plots of a result directory (scripts/plot_result.py), read only from
-// its result files.
-void make_plots(const std::string& dir);
+// its result files; a failed script's messages in plots.log.
+std::string make_plots(const std::string& dir);
 
-// The animation of a result directory (scripts/animate.py), from its result.h5.
-void make_animation(const std::string& dir);
+// The animation of a result directory (scripts/animate.py), from its result.h5;
+// a failed script's messages in animation.log.
+std::string make_animation(const std::string& dir);
 
 // The charts of `shockgas bench` (scripts/plot_bench.py), read only from the CSV
-// files of the studies in dir.
-void make_bench_charts(const std::string& dir);
+// files of the studies in dir; a failed script's messages in charts.log.
+std::string make_bench_charts(const std::string& dir);
 
 }  // namespace shockgas::app

@@ -5,6 +5,7 @@
 #include "shockgas/app/run.hpp"
 
 #include <filesystem>
+#include <iostream>
 
 #include "durable_file.hpp"
 #include "manifest.hpp"
@@ -15,8 +16,8 @@
 #include "report_html.hpp"
 #include "resources.hpp"
 #include "run_directory.hpp"
-#include "run_target.hpp"
 #include "run_internal.hpp"
+#include "run_target.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
@@ -134,8 +135,9 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
   }
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   write_file(dir / "report.md", report_text(r));
-  if (options.plots && scene.output.plots) make_plots(dir.string());
-  if (options.plots && scene.output.plots && scene.output.animation) make_animation(dir.string());
+  if (options.plots && scene.output.plots) std::cerr << make_plots(dir.string());
+  if (options.plots && scene.output.plots && scene.output.animation)
+    std::cerr << make_animation(dir.string());
   write_report_html(dir);
   write_manifest(dir, scene.name);
   return reduce(r, std::move(summary));

@@ -3,6 +3,7 @@
 // literature's values (report.md), the T(t) curves and scaled velocity
 // distributions of every variant in one result file and in one plot. The
 // variants' results are collected in memory as they finish.
+#include <iostream>
 #include <optional>
 #include <sstream>
 
@@ -104,7 +105,7 @@ void run_sweep(const Scene& scene, SweepPlan& plan, const fs::path& dir, const R
   h5.close();
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   write_file(dir / "report.md", report(scene, r.variants));
-  if (options.plots && scene.output.plots) make_plots(dir.string());
+  if (options.plots && scene.output.plots) std::cerr << make_plots(dir.string());
   write_report_html(dir);
   write_manifest(dir, scene.name);
 }

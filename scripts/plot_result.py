@@ -2,8 +2,9 @@
 """Plots of a shockgas result directory, read only from its result files.
 
 Usage: /usr/bin/python3 scripts/plot_result.py DIR
-Writes DIR/*.png (scripts/shockplot/: one module per picture). Exit code 3
-when matplotlib or h5py is missing.
+Writes DIR/*.png (scripts/shockplot/: one module per picture), each whole or not
+at all. Exit code 3 when matplotlib or h5py is missing; 4, with one line "cannot
+write PATH: REASON" on stderr, when a picture cannot be written (a full disk).
 """
 import os
 import sys
@@ -14,13 +15,18 @@ try:
 
     matplotlib.use("Agg")
     from shockplot import draw_all
+    from shockplot.common import CannotWrite
 except ImportError as exc:  # the command turns this into a warning
     print(f"plot_result.py: {exc}", file=sys.stderr)
     sys.exit(3)
 
 
 def main():
-    draw_all(sys.argv[1])
+    try:
+        draw_all(sys.argv[1])
+    except CannotWrite as exc:  # the command ends the run with this line
+        print(f"plot_result.py: {exc}", file=sys.stderr)
+        sys.exit(4)
 
 
 if __name__ == "__main__":

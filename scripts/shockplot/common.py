@@ -130,10 +130,25 @@ def finish(fig, axes, columns=2, fontsize=8):
     return figure_legend(fig, axes, columns, fontsize)
 
 
+class CannotWrite(Exception):
+    """A picture that could not be written: "cannot write PATH: REASON"."""
+
+
 def save(fig, out_dir, name):
-    """Writes the figure as out_dir/name; the first title names the picture (PNG tEXt Title)."""
+    """Writes the figure as out_dir/name, whole or not at all (by way of name.partial);
+    the first title names the picture (PNG tEXt Title). CannotWrite when the system
+    refuses the file (a full disk)."""
     title = fig._suptitle.get_text() if fig._suptitle is not None else ""
     title = title or next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
-    fig.savefig(os.path.join(out_dir, name), dpi=110, bbox_inches="tight",
-                metadata={"Title": title} if title else None)
-    plt.close(fig)
+    path = os.path.join(out_dir, name)
+    partial = path + ".partial"
+    try:
+        fig.savefig(partial, format=os.path.splitext(name)[1][1:], dpi=110, bbox_inches="tight",
+                    metadata={"Title": title} if title else None)
+        os.replace(partial, path)
+    except OSError as exc:
+        if os.path.exists(partial):
+            os.remove(partial)
+        raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
+    finally:
+        plt.close(fig)

@@ -5,7 +5,11 @@
 #include <gtest/gtest.h>
 #include <sys/mount.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <map>
 #include <string>
 
 #include "child_run.hpp"
@@ -92,6 +96,56 @@ TEST(FullDisk, ADiskThatFillsDuringTheRunLeavesThePreviousResults) {
   EXPECT_NE(run.err().find("the results in the output directory are as they were"), std::string::npos) << run.err();
   EXPECT_EQ(whole_run(out, "alpha"), "");
   EXPECT_TRUE(leftovers(out).empty()) << leftovers(out).front();
+}
+
+// The disk fills while the plots are drawn (finding: a Python traceback, then
+// "warning: plots failed (exit 1); the results are complete", then "run failed:
+// cannot write report.html", the output directory as it was): the pictures
+// cannot be written, so neither can the rest of the run. The run fails once,
+// with exit 1 and one line naming the file that could not be written and the
+// room left; no traceback, no claim that the results are complete, and the
+// previous results stay. The run stops as its plotting script starts (fault
+// point "plot"), while the test fills the disk. With the real plotting script
+// (its exit 4: "cannot write PATH: REASON"), and with one that knows nothing
+// of it and fails on the full disk with a traceback.
+TEST(FullDisk, ADiskThatFillsWhileThePlotsAreDrawnFailsTheRunOnce) {
+  const bool real = std::system("/usr/bin/python3 -c 'import matplotlib, h5py' 2>/dev/null") == 0;
+  if (!real) std::cerr << "the real plotting script not tried: /usr/bin/python3 lacks matplotlib or h5py\n";
+  const fs::path elsewhere = fresh_dir("fulldisk-plots-go");
+  const fs::path go = elsewhere / "go";  // off the small disk: the generic script waits for it
+  const fs::path generic = elsewhere / "generic_plot.py";
+  const std::string wait_for_go = "while not os.path.exists('" + go.string() + "'):\n    time.sleep(0.01)\n";
+  write_text(generic, "import os, sys, time\n" + wait_for_go +
+                          "with open(os.path.join(sys.argv[1], 'picture.png'), 'w') as f:\n"
+                          "    f.write('x' * 100000)\n");
+  for (const bool with_real_script : {true, false}) {
+    if (with_real_script && !real) continue;
+    SCOPED_TRACE(with_real_script ? "scripts/plot_result.py" : "a script that fails with a traceback");
+    SmallDisk disk(with_real_script ? "fulldisk-plots-real" : "fulldisk-plots-generic", "2m");
+    REQUIRE_MOUNTED(disk);
+    const TwoRuns s = alpha_done(disk.dir());
+    fs::remove(go);
+    std::map<std::string, std::string> env{{"SHOCKGAS_FAULT", "plot:1:stop"}};
+    if (!with_real_script) env["SHOCKGAS_PLOT_SCRIPT"] = generic.string();
+    Child run({"run", s.b.string(), "--out", s.out.string(), "-q", "--force"}, with_env(env));
+    ASSERT_TRUE(run.wait_stopped()) << run.err();
+    disk.fill(0);
+    write_text(go, "");
+    kill(run.pid(), SIGCONT);
+    EXPECT_EQ(run.wait(), 1) << run.err();
+    const std::string err = run.err();
+    EXPECT_EQ(err.rfind("shockgas: run failed: cannot write ", 0), 0u) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;  // one line: the failure
+    EXPECT_NE(err.find(with_real_script ? ".png: No space left on device (the file system holding it has "
+                                        : "No space left on device (the file system holding it has "),
+              std::string::npos)
+        << err;
+    EXPECT_NE(err.find("(the results in the output directory are as they were)"), std::string::npos) << err;
+    EXPECT_EQ(err.find("Traceback"), std::string::npos) << err;
+    EXPECT_EQ(err.find("the results are complete"), std::string::npos) << err;
+    EXPECT_EQ(whole_run(s.out, "alpha"), "");
+    EXPECT_TRUE(leftovers(s.out).empty()) << leftovers(s.out).front();
+  }
 }
 
 // Too little room before the run: refused by the preflight (exit 2), naming
