@@ -5,19 +5,33 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 
 #include "fault.hpp"
 
 namespace shockgas::app {
+
+namespace {
+
+// Nothing is printed before the process has run this long (a bar: before its
+// stage has): a run of the command that ends sooner prints nothing.
+constexpr std::chrono::seconds kSilent{1};
+const std::chrono::steady_clock::time_point process_start = std::chrono::steady_clock::now();
+
+}  // namespace
 
 ProgressBar::ProgressBar(bool enabled, Listener listener)
     : enabled_(enabled),
       tty_(isatty(STDERR_FILENO) != 0),
       listener_(std::move(listener)),
       start_(Clock::now()),
-      last_draw_(start_) {}
+      last_draw_(start_),
+      unwinding_(std::uncaught_exceptions()) {}
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+  end_phase(std::uncaught_exceptions() > unwinding_ ? "stopped" : nullptr);
+  finish();
+}
 
 void ProgressBar::stage(const std::string& name) {
   finish();
@@ -66,14 +80,76 @@ void ProgressBar::draw(double fraction, double sim_time) {
     std::snprintf(line, sizeof line, "%s: %3.0f%%  t = %.4g  %.3g time units/s  elapsed %.1f s\n", stage_.c_str(),
                   100 * fraction, sim_time, rate, elapsed);
   }
+  if (line_open_) std::fputs("\n", stderr);  // the phase's time follows on a line of its own
+  line_open_ = false;
   std::fputs(line, stderr);
   std::fflush(stderr);
   drawn_ = tty_;
 }
 
 void ProgressBar::finish() {
+  std::lock_guard<std::mutex> lock(mutex_);
   if (drawn_) std::fputs("\n", stderr);
   drawn_ = false;
+}
+
+void ProgressBar::end_line() {
+  if (drawn_ || line_open_) std::fputs("\n", stderr);
+  drawn_ = line_open_ = false;
+}
+
+void ProgressBar::phase(const std::string& name) {
+  end_phase(nullptr);
+  if (!enabled_) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  phase_ = name + about_;
+  phase_start_ = Clock::now();
+  in_phase_ = true;
+  if (phase_start_ - process_start >= kSilent) {
+    announce();
+    return;
+  }
+  announcer_ = std::thread([this] {
+    std::unique_lock<std::mutex> held(mutex_);
+    if (!phase_ended_.wait_until(held, process_start + kSilent, [this] { return !in_phase_; })) announce();
+  });
+}
+
+void ProgressBar::announce() {
+  end_line();
+  std::fprintf(stderr, "%s ... ", phase_.c_str());
+  std::fflush(stderr);
+  announced_ = line_open_ = true;
+}
+
+void ProgressBar::end_phase() { end_phase(nullptr); }
+
+void ProgressBar::end_phase(const char* outcome) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (in_phase_ && announced_) {
+      char done[32];
+      std::snprintf(done, sizeof done, "%.1f s",
+                    std::chrono::duration<double>(Clock::now() - phase_start_).count());
+      if (!line_open_) {
+        end_line();
+        std::fprintf(stderr, "%s: ", phase_.c_str());
+      }
+      std::fprintf(stderr, "%s\n", outcome ? outcome : done);
+      std::fflush(stderr);
+    }
+    in_phase_ = announced_ = line_open_ = false;
+  }
+  phase_ended_.notify_all();
+  if (announcer_.joinable()) announcer_.join();
+}
+
+void ProgressBar::say(const std::string& line) {
+  if (line.empty()) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  end_line();
+  std::fputs(line.c_str(), stderr);
+  std::fflush(stderr);
 }
 
 ProgressCallback ProgressBar::callback() {

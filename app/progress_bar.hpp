@@ -1,11 +1,15 @@
 #pragma once
 // Progress of a run on stderr: a redrawn bar when stderr is a terminal, one
 // line per 10 % otherwise; silent during the first second, so that short runs
-// print nothing.
+// print nothing. Between the measured stages, the phases of a run whose
+// progress is not measured (the comparison, the result files, the plots) each
+// say what the run is doing, on one line completed with their wall time.
 #include <chrono>
+#include <condition_variable>
 #include <functional>
 #include <mutex>
 #include <string>
+#include <thread>
 
 #include "shockgas/core/progress.hpp"
 
@@ -19,7 +23,10 @@ class ProgressBar {
   // enabled = false prints nothing (tests, --quiet); listener, if any, hears
   // every update whether or not anything is printed.
   explicit ProgressBar(bool enabled = true, Listener listener = {});
+  // Ends the current phase: its time, or "stopped" when an exception unwinds.
   ~ProgressBar();
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
 
   // Starts a stage ("particles", "continuum/godunov"); resets the fraction.
   void stage(const std::string& name);
@@ -29,12 +36,31 @@ class ProgressBar {
   // Finishes the current line, if a bar was drawn.
   void finish();
 
+  // Starts a phase (ending the one before): "NAME ... " on a line of its own,
+  // completed when the phase ends (end_phase(), the next phase, the bar's end)
+  // with its wall time, "NAME ... 3.9 s", or "stopped" when an exception ends it.
+  // Within the first second of the process nothing is printed; a phase still
+  // running at its end is announced then. A stage started within a phase (a
+  // solver's bar) has its own lines, and the phase's time then follows as
+  // "NAME: 3.9 s". The listener does not hear of phases.
+  void phase(const std::string& name);
+  void end_phase();
+  // Names every phase after this one as about `what` ("plots (r=0.5)"): a
+  // sweep's variant.
+  void name_phases(const std::string& what) { about_ = " (" + what + ")"; }
+  // Message lines (each with its newline; none: nothing) on stderr, after the
+  // line of a phase or a bar is ended, so that they never land in the middle of one.
+  void say(const std::string& line);
+
   // A callback for the engines that forwards to update().
   ProgressCallback callback();
 
  private:
   using Clock = std::chrono::steady_clock;
   void draw(double fraction, double sim_time);
+  void end_line();                      // under mutex_
+  void end_phase(const char* outcome);  // outcome: nullptr for the wall time
+  void announce();                      // under mutex_
   bool enabled_, tty_;
   Listener listener_;
   std::string stage_;
@@ -42,6 +68,14 @@ class ProgressBar {
   int last_decile_ = -1;
   double last_time_ = 0;
   bool drawn_ = false;
+  // The current phase: its name and start, whether its line was printed and
+  // is still open; a thread announces it at the end of the process's first second.
+  std::string phase_, about_;
+  Clock::time_point phase_start_;
+  bool in_phase_ = false, announced_ = false, line_open_ = false;
+  std::thread announcer_;
+  std::condition_variable phase_ended_;
+  int unwinding_ = 0;  // std::uncaught_exceptions() when constructed
   std::mutex mutex_;  // engines may report from worker threads
 };
 

@@ -5,7 +5,6 @@
 #include "shockgas/app/run.hpp"
 
 #include <filesystem>
-#include <iostream>
 
 #include "durable_file.hpp"
 #include "manifest.hpp"
@@ -58,7 +57,24 @@ VariantResult reduce(const RunResults& r, nlohmann::ordered_json summary) {
   return v;
 }
 
+std::string listed(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text;
+}
+
 }  // namespace
+
+void draw_plots(const fs::path& dir, bool animation, ProgressBar& progress) {
+  const auto draw = [&](const char* what, std::string (*script)(const std::string&)) {
+    progress.phase(what);
+    const std::string said = script(dir.string());
+    progress.end_phase();
+    progress.say(said);
+  };
+  draw("plots", make_plots);
+  if (animation) draw("animation", make_animation);
+}
 
 // Only the continuum needs realization 0's bodies whole (its deposit); the
 // particles and the writers draw them in chunks.
@@ -102,14 +118,17 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
     release_records(*r.particles);
   }
   if (scene.has_continuum) {
+    progress.phase("continuum: solving " + listed(scene.continuum.solvers));
     r.continuum = run_continuum(scene, initial, progress);
     sink(r, Part::continuum);
   }
   if (scene.has_compare && scene.has_continuum) {
+    progress.phase("comparison: clusters against the shocks of " + scene.compare.solver);
     r.comparison = run_comparison(scene, initial, *r.particles, r.continuum);
     sink(r, Part::compare);
   }
   if (scene.output.animation) {
+    progress.phase("frames: " + std::to_string(scene.output.animation_frames) + " for the animation");
     r.frames = run_frames(scene, initial, r.particles ? r.particles->frames : std::vector<particles::Snapshot>{},
                           progress);
     sink(r, Part::animation);
@@ -122,6 +141,8 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
                          const RunOptions& options, const PartSink& also, const EnsembleSource& source) {
   nlohmann::ordered_json summary;
   ProgressBar progress(options.progress, options.on_progress);
+  const auto variant = scene.name.find('/');  // a sweep's variant: "<scene>/<label>"
+  if (variant != std::string::npos) progress.name_phases(scene.name.substr(variant + 1));
   RunResults r;
   {
     Hdf5File h5 = Hdf5File::create((dir / "result.h5").string());
@@ -131,13 +152,13 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
       if (also) also(partial, part);
       throw_if_aborted();
     }, source);
+    progress.phase("writing result.h5, summary.json, report.md");
     h5.close();
   }
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   write_file(dir / "report.md", report_text(r));
-  if (options.plots && scene.output.plots) std::cerr << make_plots(dir.string());
-  if (options.plots && scene.output.plots && scene.output.animation)
-    std::cerr << make_animation(dir.string());
+  if (options.plots && scene.output.plots) draw_plots(dir, scene.output.animation, progress);
+  progress.phase("writing report.html, manifest.json");
   write_report_html(dir);
   write_manifest(dir, scene.name);
   return reduce(r, std::move(summary));
@@ -151,6 +172,8 @@ std::string into_run_directory(const fs::path& out, const Scene& scene, const Ru
   } catch (const InputError& e) {  // a rule checked where the work starts (the engine's own)
     throw located(e, scene);
   }
+  ProgressBar progress(options.progress);
+  progress.phase("syncing, moving into " + out.string());
   dir.commit();
   return out.string();
 }

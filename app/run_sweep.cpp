@@ -3,7 +3,6 @@
 // literature's values (report.md), the T(t) curves and scaled velocity
 // distributions of every variant in one result file and in one plot. The
 // variants' results are collected in memory as they finish.
-#include <iostream>
 #include <optional>
 #include <sstream>
 
@@ -97,6 +96,9 @@ void run_sweep(const Scene& scene, SweepPlan& plan, const fs::path& dir, const R
     r.variants.push_back(std::move(v));
   }
   ordered_json summary;
+  ProgressBar progress(options.progress);
+  progress.name_phases("sweep");
+  progress.phase("writing result.h5, summary.json, report.md");
   Hdf5File h5 = Hdf5File::create((dir / "result.h5").string());
   for (Part part : {Part::provenance, Part::sweep}) {
     write_part(h5, r, part);
@@ -105,7 +107,8 @@ void run_sweep(const Scene& scene, SweepPlan& plan, const fs::path& dir, const R
   h5.close();
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   write_file(dir / "report.md", report(scene, r.variants));
-  if (options.plots && scene.output.plots) std::cerr << make_plots(dir.string());
+  if (options.plots && scene.output.plots) draw_plots(dir, false, progress);
+  progress.phase("writing report.html, manifest.json");
   write_report_html(dir);
   write_manifest(dir, scene.name);
 }

@@ -53,7 +53,10 @@ std::optional<particles::Cluster> heaviest_cluster(const ParticleResults& r, con
 ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
                               const EnsembleSource& source) {
   ParticleResults r;
+  // A phase of progress, until compute_parts starts the next one.
+  const char* analysis = "particles: analysis, writing result.h5";
   if (source) {
+    progress.phase(analysis);
     ComputedEnsemble computed = source(scene);
     r.ensemble = std::move(computed.ensemble);
     r.parallel = computed.parallel;
@@ -62,6 +65,7 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
     progress.stage("particles");
     r.ensemble = particles::run_ensemble(initial, particle_params(scene), progress.callback());
     progress.finish();
+    progress.phase(analysis);
     r.parallel.threads = resolved_threads(scene.particles.threads);
   }
   // Stopped at a safe point on a checkpoint request: nothing is written (no

@@ -1,0 +1,103 @@
+// Progress on stderr after the particles (finding: the default scene said
+// nothing for 5 s after its particles while the continuum was solved, the
+// results written and the plots drawn): each phase of a run longer than a
+// second has one line, "NAME ... 1.2 s", in the order the run goes through
+// them; --quiet prints none.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "child_run.hpp"
+#include "run_dir_checks.hpp"
+
+namespace shockgas::app {
+namespace {
+
+using namespace testing;
+using namespace std::chrono_literals;
+
+// The names of the finished phases said, in order: "NAME ... 1.2 s", or
+// "NAME: 1.2 s" after a solver's bar of its own (on a slow host) broke its line.
+std::vector<std::string> phases_said(const std::string& err) {
+  static const std::regex finished(R"(^(.*?)(?: \.\.\. |: )[0-9]+\.[0-9] s$)");
+  std::vector<std::string> names;
+  std::istringstream in(err);
+  std::smatch m;
+  for (std::string line; std::getline(in, line);)
+    if (std::regex_match(line, m, finished)) names.push_back(m[1].str());
+  return names;
+}
+
+struct ProgressRun {
+  fs::path root, scene, out, script;
+};
+
+// alpha (particles, two solvers, a comparison) and a plotting script that
+// draws one picture and says nothing.
+ProgressRun setup(const std::string& name, double plot_seconds) {
+  ProgressRun s;
+  s.root = fresh_dir(name);
+  s.scene = s.root / "alpha.toml";
+  s.out = s.root / "D";
+  write_text(s.scene, kSceneA);
+  s.script = fake_plot_script(s.root, plot_seconds);
+  return s;
+}
+
+// The run is held at its first write of result.h5, before the particles, until
+// it has run for more than a second: from then on every phase is said as it
+// starts, in order, and completed with its time.
+TEST(Progress, EachPhaseAfterTheParticlesHasOneLineWithItsTimeInOrder) {
+  const ProgressRun s = setup("progress-order", 0);
+  Child run(
+      {"run", s.scene.string(), "--out", s.out.string()},
+      with_env({{"SHOCKGAS_FAULT", "write:result.h5:1:stop"}, {"SHOCKGAS_PLOT_SCRIPT", s.script.string()}}));
+  ASSERT_TRUE(run.wait_stopped()) << run.err();
+  std::this_thread::sleep_for(1200ms);  // past the silent first second of the process
+  kill(run.pid(), SIGCONT);
+  ASSERT_EQ(run.wait(), 0) << run.err();
+  const std::vector<std::string> expected{"particles: analysis, writing result.h5",
+                                          "continuum: solving hopf_lax, godunov",
+                                          "comparison: clusters against the shocks of hopf_lax",
+                                          "writing result.h5, summary.json, report.md",
+                                          "plots",
+                                          "writing report.html, manifest.json",
+                                          "syncing, moving into " + s.out.string()};
+  EXPECT_EQ(phases_said(run.err()), expected) << run.err();
+  EXPECT_EQ(whole_run(s.out, "alpha"), "");
+}
+
+// A phase that starts within the first second and lasts beyond it is said
+// when the second is over (the plotting script sleeps 1.5 s).
+TEST(Progress, APhaseThatOutlastsTheFirstSecondIsSaid) {
+  const ProgressRun s = setup("progress-first-second", 1.5);
+  const auto [code, err] = run_child({"run", s.scene.string(), "--out", s.out.string()},
+                                     with_env({{"SHOCKGAS_PLOT_SCRIPT", s.script.string()}}));
+  ASSERT_EQ(code, 0) << err;
+  const std::vector<std::string> said = phases_said(err);
+  const std::vector<std::string> from_plots{"plots", "writing report.html, manifest.json",
+                                            "syncing, moving into " + s.out.string()};
+  ASSERT_GE(said.size(), from_plots.size()) << err;
+  EXPECT_EQ(std::vector<std::string>(said.end() - 3, said.end()), from_plots) << err;
+}
+
+// --quiet: nothing on stderr, the same run held as long.
+TEST(Progress, QuietSaysNothing) {
+  const ProgressRun s = setup("progress-quiet", 1.5);
+  Child run(
+      {"run", s.scene.string(), "--out", s.out.string(), "-q"},
+      with_env({{"SHOCKGAS_FAULT", "write:result.h5:1:stop"}, {"SHOCKGAS_PLOT_SCRIPT", s.script.string()}}));
+  ASSERT_TRUE(run.wait_stopped()) << run.err();
+  std::this_thread::sleep_for(1200ms);
+  kill(run.pid(), SIGCONT);
+  ASSERT_EQ(run.wait(), 0) << run.err();
+  EXPECT_EQ(run.err(), "");
+  EXPECT_EQ(whole_run(s.out, "alpha"), "");
+}
+
+}  // namespace
+}  // namespace shockgas::app
