@@ -53,6 +53,7 @@ ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::siz
   }
   keep_finished();
   if (auto failure = pool.failure()) std::rethrow_exception(failure->error);
+  progress.update(pool.fraction(), pool.sim_time());  // the end: 100 %, which the last poll may have missed
   out.records = checkpoints ? checkpoints->take_records() : pool.take_finished();
   sort_in_plan_order(out.records);
   return out;

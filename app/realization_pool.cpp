@@ -69,6 +69,7 @@ struct RealizationPool::State {
     if (states) states->commit();  // on the disk before its record is kept
     std::lock_guard lock(mutex);
     fraction[i] = 1;
+    sim_time = std::max(sim_time, r.run.stop.time);
     active[i] = false;
     ++ended;
     finished.push_back(std::move(r));

@@ -85,6 +85,24 @@ TEST(Progress, APhaseThatOutlastsTheFirstSecondIsSaid) {
   EXPECT_EQ(std::vector<std::string>(said.end() - 3, said.end()), from_plots) << err;
 }
 
+// The particles' last line says 100 % at the end time (finding: the default
+// scene's ended at "93%  t = 1e+04": the realizations were polled only while
+// some still ran). Held at the first report, past the silent first second.
+TEST(Progress, TheParticlesEndAtOneHundredPercent) {
+  const ProgressRun s = setup("progress-particles-end", 0);
+  Child run({"run", s.scene.string(), "--out", s.out.string(), "--no-plots"},
+            with_env({{"SHOCKGAS_FAULT", "compute:1:stop"}}));
+  ASSERT_TRUE(run.wait_stopped()) << run.err();
+  std::this_thread::sleep_for(1200ms);
+  kill(run.pid(), SIGCONT);
+  ASSERT_EQ(run.wait(), 0) << run.err();
+  std::string last;  // the particles' last line
+  std::istringstream in(run.err());
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("particles: ", 0) == 0 && line.find('%') != std::string::npos) last = line;
+  EXPECT_EQ(last.rfind("particles: 100%  t = 50 ", 0), 0u) << run.err();
+}
+
 // --quiet: nothing on stderr, the same run held as long.
 TEST(Progress, QuietSaysNothing) {
   const ProgressRun s = setup("progress-quiet", 1.5);
