@@ -43,14 +43,14 @@ shockgas_mpi_test(interrupted_job sh ${mpi_dir}/signalled_ranks.sh $<TARGET_FILE
                   "^shockgas: .*interrupted by signal 15")
 
 # Checkpoints of a job (stopped_job_resumed.sh): a 2-rank job stopped by SIGTERM
-# to mpirun (rank 0 writes a checkpoint) or by SIGKILL of mpirun after the first
-# periodic checkpoint, then resumed with 2 and 3 ranks and as one process; and a
-# one-process checkpoint resumed by a job of 2 ranks. Each equals the one-process
-# run bit for bit.
+# to rank 0 (rank 0 writes a checkpoint) or by SIGKILL of mpirun and the ranks
+# after the first periodic checkpoint, then resumed with 2 and 3 ranks and as
+# one process; and a one-process checkpoint resumed by a job of 2 ranks. Each
+# equals the one-process run bit for bit.
 foreach(signal TERM KILL)
   set(scene ${mpi_dir}/checkpoint.toml)
   if(signal STREQUAL TERM)
-    set(scene ${mpi_dir}/checkpoint-long.toml)  # mpirun forwards SIGTERM a second late: see the file
+    set(scene ${mpi_dir}/checkpoint-long.toml)  # a realization outlasts a checkpoint interval: see the file
   endif()
   shockgas_mpi_test(checkpoint_resumed_after_${signal} sh ${mpi_dir}/stopped_job_resumed.sh $<TARGET_FILE:shockgas>
                     $<TARGET_FILE:compare_runs> ${SHOCKGAS_MPIRUN} ${scene}

@@ -6,8 +6,9 @@
 # states, and ends with the result of one uninterrupted process, bit for bit
 # (compare_runs). Then, with realization 1's state damaged, a resumed job of 2
 # ranks exits 2 and writes nothing.
-#   SIGNAL: KILL to the launcher and every rank (a lost node), or TERM to them
-#     (a scheduler's pre-emption: every rank saves again and rank 0 says so).
+#   SIGNAL: KILL to the launcher and every rank (a lost node), or TERM to every
+#     rank (a scheduler's pre-emption, as srun signals every task: every rank
+#     saves again and rank 0 says so).
 # usage: running_states_resumed.sh SHOCKGAS COMPARE_RUNS MPIRUN SCENE OUT SIGNAL
 set -eu
 shockgas=$1 compare=$2 mpirun=$3 scene=$4 out=$5 signal=$6
@@ -24,10 +25,7 @@ every="output.checkpoint_minutes=0.001"
 # is written (fault point "checkpoint" on rank 0, "state" on rank 1), so the
 # signal comes after both ranks saved and before the end.
 args="run $scene --out $out/stopped --quiet --no-plots --set $every"
-# The launcher waits 30 s, not its default 1 s, before it kills the ranks it
-# forwarded the signal to, as docs/cluster.md advises: a rank of a loaded
-# machine may need more than a second to save.
-"$mpirun" --allow-run-as-root --oversubscribe --mca odls_base_sigkill_timeout 30 -np 1 env SHOCKGAS_FAULT=checkpoint:stop "$shockgas" $args : \
+"$mpirun" --allow-run-as-root --oversubscribe -np 1 env SHOCKGAS_FAULT=checkpoint:stop "$shockgas" $args : \
   -np 1 env SHOCKGAS_FAULT=state:stop "$shockgas" $args 2> "$out/stopped.stderr" &
 launcher=$!
 ranks_stopped() {  # both ranks, the launcher's children, stopped
@@ -46,10 +44,9 @@ ranks=$(pgrep -P $launcher)
 if [ "$signal" = KILL ]; then
   kill -s KILL $launcher $ranks
 else
-  # The launcher and every rank, as a scheduler signals every task: the signal
-  # is pending while a rank is stopped and acts as it continues (mpirun alone
-  # forwards it a second late).
-  kill -s "$signal" $launcher $ranks
+  # Every rank, not the launcher (stopped_job.sh): the signal is pending while
+  # a rank is stopped and acts as it continues.
+  kill -s "$signal" $ranks
   kill -s CONT $ranks
 fi
 await_stopped_job $launcher "$out" "$signal"

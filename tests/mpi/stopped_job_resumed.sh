@@ -3,10 +3,10 @@
 # numbers of ranks, ends with the result of one uninterrupted process, bit for
 # bit (compare_runs):
 #   STOP_RANKS: the ranks of the stopped job (1: one process, without mpirun);
-#   SIGNAL: TERM to the launcher (mpirun forwards it to the ranks; rank 0 writes
-#     one more checkpoint and says so in one message, and the job fails) or
-#     KILL to the launcher and every rank (a lost node: the job ends without a
-#     word; the periodic checkpoint is what is left);
+#   SIGNAL: TERM to rank 0 (it tells the other ranks to save, writes one more
+#     checkpoint and says so in one message, and the job fails) or KILL to the
+#     launcher and every rank (a lost node: the job ends without a word; the
+#     periodic checkpoint is what is left);
 #   RESUME_RANKS: the resumed jobs, each from a copy of the stopped directory
 #     (1: `shockgas run --resume` without mpirun).
 # Every resumed job says how many realizations it kept and removes the
@@ -28,10 +28,7 @@ launch() {  # RANKS ARGS...: shockgas as one process or as a job of RANKS ranks 
   if [ "$ranks" = 1 ]; then
     exec "$shockgas" "$@"
   else
-    # 30 s before the launcher kills the ranks it forwarded a signal to (its
-    # default is 1 s; docs/cluster.md): a rank of a loaded machine may need more.
-    exec "$mpirun" --allow-run-as-root --oversubscribe --mca odls_base_sigkill_timeout 30 -np "$ranks" \
-      "$shockgas" "$@"
+    exec "$mpirun" --allow-run-as-root --oversubscribe -np "$ranks" "$shockgas" "$@"
   fi
 }
 "$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every
@@ -56,12 +53,10 @@ done
 if [ "$signal" = KILL ]; then
   kill -s KILL $launcher $(pgrep -P $launcher)  # the whole job at once, as a lost node or `scancel -s KILL`
 else
-  # The launcher and rank 0 itself, as a scheduler signals every task: the
-  # signal is pending while rank 0 is stopped and acts as it continues.
-  # (mpirun alone would continue the ranks at once and forward the signal only
-  # a second later, by when a loaded machine may have let the job finish.)
-  kill -s "$signal" $launcher
-  [ "$root" = "$launcher" ] || kill -s "$signal" $root
+  # Rank 0 alone, not the launcher (stopped_job.sh): the signal is pending
+  # while rank 0 is stopped and acts as it continues; the other ranks hear of
+  # it from rank 0.
+  kill -s "$signal" $root
   kill -s CONT $root
 fi
 await_stopped_job $launcher "$out" "$signal"
