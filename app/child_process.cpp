@@ -27,9 +27,14 @@ int status_code(int status) {
 }
 
 // In the child, between fork and exec: async-signal-safe calls only.
-// err: the write end of the pipe that takes its stderr, or -1.
+// err: the write end of the pipe that takes its stdout and stderr, or -1.
+// Its stdin is /dev/null: in a group of its own it is in the background of a
+// terminal, where a read (ffmpeg's, of keys) would stop it with SIGTTIN.
 [[noreturn]] void exec_child(char* const* argv, pid_t parent, int err) {
-  if (err >= 0 && dup2(err, STDERR_FILENO) < 0) _exit(127);
+  const int nothing = open("/dev/null", O_RDONLY);
+  if (nothing < 0 || dup2(nothing, STDIN_FILENO) < 0) _exit(127);
+  if (nothing != STDIN_FILENO) close(nothing);
+  if (err >= 0 && (dup2(err, STDOUT_FILENO) < 0 || dup2(err, STDERR_FILENO) < 0)) _exit(127);
   setpgid(0, 0);
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(127);  // the parent died before prctl
@@ -97,6 +102,9 @@ bool wait_polling(pid_t child, int& status, Said& said) {
   }
 }
 
+// SIGTERM to the child's group, SIGKILL after kGrace; then SIGKILL to what is
+// left of the group (a process it started, such as an encoder still flushing
+// its file), so that nothing writes after the command has stopped.
 void stop(pid_t child, int& status) {
   kill(-child, SIGTERM);
   const auto deadline = std::chrono::steady_clock::now() + kGrace;
@@ -108,6 +116,7 @@ void stop(pid_t child, int& status) {
     }
     std::this_thread::sleep_for(kPoll);
   }
+  kill(-child, SIGKILL);
 }
 
 }  // namespace

@@ -62,7 +62,13 @@ std::string run_plot_script(const std::string& script, const char* env_override,
     return "shockgas: warning: no " + what + " (" + (fs::exists(python) ? path : python) +
            " not found; run scripts/setup)\n";
   std::string said;
-  const int code = run_child({python, path, dir}, &said);  // Interrupted on SIGINT, SIGTERM
+  int code = 0;
+  try {
+    code = run_child({python, path, dir}, &said);  // Interrupted on SIGINT, SIGTERM
+  } catch (...) {  // stopped: a finished directory (animate) keeps no half-written picture
+    remove_partial_pictures(dir);
+    throw;
+  }
   if (code == 0) return said;
   const std::string name = fs::path(path).filename().string();
   const std::string reason = code > 128 ? ended_by_signal(code - 128) : reason_of(said, name);

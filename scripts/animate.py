@@ -3,12 +3,14 @@
 
 Usage: /usr/bin/python3 scripts/animate.py DIR
 Writes DIR/animation.mp4 (ffmpeg, H.264), DIR/animation.gif and DIR/animation.png
-(the last frame). Left: the particles as dots (clusters, coloured by mass) over
+(the last frame), each whole or not at all (by way of NAME.partial). Left: the particles as dots (clusters, coloured by mass) over
 every solver's velocity and density at the same time; right: space-time, the
 exact (else the first) solver's density with the paths of the heaviest
 clusters. Exit code 3 when matplotlib, h5py or numpy is missing; without ffmpeg
-only the GIF (by Pillow) and the PNG are written, with a warning.
+only the GIF (by Pillow) and the PNG are written, with a warning. Exit code 4, with
+the line "cannot write PATH: REASON", when the system refuses a file (a full disk).
 """
+import errno
 import os
 import shutil
 import subprocess
@@ -26,6 +28,7 @@ try:
 
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     from animation_data import Record, with_unit
+    from shockplot.common import CannotWrite
 except ImportError as exc:  # the command turns this into a warning
     print(f"animate.py: {exc}", file=sys.stderr)
     sys.exit(3)
@@ -268,7 +271,7 @@ class Movie:
     def save_still(self, path):
         for a in self._dynamic():
             a.set_animated(False)
-        self.fig.savefig(path, dpi=DPI)
+        self.fig.savefig(path, dpi=DPI, format="png")
 
 
 def time_text(t):
@@ -279,25 +282,75 @@ def frames_per_second(n):
     return int(np.clip(round(n / SECONDS), 4, 24))
 
 
-def encode_mp4(movie, n, fps, path):
-    cmd = ["ffmpeg", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{WIDTH}x{HEIGHT}",
-           "-framerate", str(fps), "-i", "-", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "23",
-           "-movflags", "+faststart", path]
-    proc = subprocess.Popen(cmd, stdin=subprocess.PIPE)
+def written(path, write):
+    """Calls write(partial) for path's NAME.partial, then renames it to path: a file
+    whole or not at all. CannotWrite when the system refused it (an OSError with a
+    reason, or an encoder that failed on a disk with no room left)."""
+    partial = path + ".partial"
     try:
-        for k in range(n):
-            movie.update(k)
-            proc.stdin.write(movie.rgba().tobytes())
-    finally:
-        proc.stdin.close()
+        write(partial)
+        os.replace(partial, path)
+    except (OSError, EncoderFailed) as exc:
+        if os.path.exists(partial):
+            os.remove(partial)
+        said = getattr(exc, "said", "") or ""
+        if isinstance(exc, OSError) and exc.errno not in (errno.EPIPE, None):
+            raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
+        no_space = os.strerror(errno.ENOSPC)
+        if no_space in said or os.statvfs(os.path.dirname(os.path.abspath(path))).f_bavail == 0:
+            raise CannotWrite(f"cannot write {path}: {no_space}") from exc
+        raise
+
+
+class EncoderFailed(Exception):
+    """ffmpeg ended with an error: `said` is what it wrote on stderr."""
+
+    def __init__(self, message, said):
+        super().__init__(message + (": " + said.strip().splitlines()[-1] if said.strip() else ""))
+        self.said = said
+
+
+def ffmpeg(args, partial, fmt, stdin=None):
+    """ffmpeg ARGS -f FMT PARTIAL, its stderr kept for the reason of a failure."""
+    cmd = ["ffmpeg", "-loglevel", "error", "-y"] + args + ["-f", fmt, partial]
+    return subprocess.Popen(cmd, stdin=stdin if stdin is not None else subprocess.DEVNULL,
+                            stderr=subprocess.PIPE)
+
+
+def finished(proc):
+    said = proc.stderr.read().decode(errors="replace")
     if proc.wait() != 0:
-        raise RuntimeError(f"ffmpeg failed (exit {proc.returncode}) on {path}")
+        raise EncoderFailed(f"ffmpeg failed (exit {proc.returncode})", said)
+    if said:
+        sys.stderr.write(said)
+
+
+def encode_mp4(movie, n, fps, path):
+    def write(partial):
+        proc = ffmpeg(["-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{WIDTH}x{HEIGHT}", "-framerate", str(fps),
+                       "-i", "-", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "23",
+                       "-movflags", "+faststart"], partial, "mp4", stdin=subprocess.PIPE)
+        try:
+            for k in range(n):
+                movie.update(k)
+                proc.stdin.write(movie.rgba().tobytes())
+        except BrokenPipeError:
+            pass  # ffmpeg stopped: its status and message say why
+        finally:
+            try:
+                proc.stdin.close()
+            except BrokenPipeError:
+                pass
+        finished(proc)
+
+    written(path, write)
 
 
 def gif_from_mp4(mp4, gif, fps):
     palette = "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer:bayer_scale=4"
-    subprocess.run(["ffmpeg", "-loglevel", "error", "-y", "-i", mp4, "-vf",
-                    f"fps={fps},scale={GIF_WIDTH}:-1:flags=lanczos,{palette}", "-loop", "0", gif], check=True)
+    written(gif, lambda partial: finished(ffmpeg(
+        ["-i", mp4, "-vf", f"fps={fps},scale={GIF_WIDTH}:-1:flags=lanczos,{palette}", "-loop", "0"],
+        partial, "gif")))
 
 
 def gif_with_pillow(movie, n, fps, gif):
@@ -308,7 +361,8 @@ def gif_with_pillow(movie, n, fps, gif):
         movie.update(k)
         img = Image.fromarray(movie.rgba()[:, :, :3])
         images.append(img.resize((GIF_WIDTH, GIF_WIDTH * HEIGHT // WIDTH)).convert("P", palette=Image.ADAPTIVE))
-    images[0].save(gif, save_all=True, append_images=images[1:], duration=int(1000 / fps), loop=0)
+    written(gif, lambda partial: images[0].save(partial, format="GIF", save_all=True, append_images=images[1:],
+                                                duration=int(1000 / fps), loop=0))
 
 
 def main():
@@ -332,8 +386,12 @@ def main():
             os.remove(paths["mp4"])  # an older run's movie must not stand beside this one's frames
         gif_with_pillow(movie, n, fps, paths["gif"])
     movie.update(n - 1)
-    movie.save_still(paths["png"])
+    written(paths["png"], movie.save_still)
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except CannotWrite as exc:  # the command ends the run with this line
+        print(f"animate.py: {exc}", file=sys.stderr)
+        sys.exit(4)

@@ -3,11 +3,16 @@
 // pictures. The run ends with exit 0 and says why in one line; what the script
 // said is kept in plots.log beside the results, in their manifest; a picture
 // it left half-written (*.partial) is not kept.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <string>
+#include <thread>
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
@@ -51,6 +56,57 @@ TEST(PlotFailures, WhatASucceedingScriptSaysIsPassedOn) {
   EXPECT_EQ(err, "talking_plot.py: warning: ffmpeg not found\n");
   EXPECT_EQ(whole_run(s.out, "beta"), "");
   EXPECT_FALSE(fs::exists(s.out / "plots.log"));
+}
+
+// The script reads nothing (finding: ffmpeg, started by the animation script
+// in a background process group of the terminal, read it and was stopped by
+// SIGTTIN: the run never ended), and what it prints on stdout comes after the
+// phase's line with what it says on stderr, not in the middle of that line.
+// The command's stdin here is a file, which the script must not see.
+TEST(PlotFailures, TheScriptReadsNothingAndItsStdoutIsPassedOn) {
+  const TwoRuns s = alpha_done(fresh_dir("plot-stdin"));
+  const fs::path script = s.root / "reading_plot.py";
+  write_text(script, "import os\nprint('stdin of the script: ' + os.readlink('/proc/self/fd/0'))\n");
+  Options o = with_env({{"SHOCKGAS_PLOT_SCRIPT", script.string()}});
+  const std::string stdin_file = script.string();
+  o.in_child = [&stdin_file] {
+    const int fd = ::open(stdin_file.c_str(), O_RDONLY);
+    if (fd >= 0) ::dup2(fd, 0);
+  };
+  const auto [code, err] = run_child({"run", s.b.string(), "--out", s.out.string(), "-q", "--force"}, o);
+  EXPECT_EQ(code, 0) << err;
+  EXPECT_EQ(err, "stdin of the script: /dev/null\n");
+  EXPECT_EQ(whole_run(s.out, "beta"), "");
+}
+
+// `shockgas animate` stopped by SIGTERM leaves the finished directory as it was
+// (finding: ffmpeg, which the animation script had started, went on writing
+// animation.mp4 after the command had exited, and the movie no longer matched
+// the manifest): what the script started is stopped with it, and its
+// half-written file is removed. The stand-in script starts a writer that
+// ignores SIGTERM, as an encoder flushing its file would outlast it.
+TEST(PlotFailures, AnInterruptedAnimationLeavesNothingWriting) {
+  const TwoRuns s = alpha_done(fresh_dir("animate-stopped"));
+  const fs::path scene = s.root / "frames.toml";
+  write_text(scene,
+             std::string(kSceneA) + "[output]\nplots = false\nanimation = true\nanimation_frames = 4\n");
+  ASSERT_EQ(run_child({"run", scene.string(), "--out", s.out.string(), "-q", "--force"}).first, 0);
+  const fs::path script = s.root / "writing_animation.py", partial = s.out / "animation.mp4.partial";
+  write_text(
+      script,
+      "import subprocess, sys, time\n"
+      "subprocess.Popen(['sh', '-c', 'trap \"\" TERM; while :; do echo x >> \"$0\"; sleep 0.02; done', "
+      "sys.argv[1] + '/animation.mp4.partial'])\n"
+      "time.sleep(60)\n");
+  Child animate({"animate", s.out.string()}, with_env({{"SHOCKGAS_ANIMATE_SCRIPT", script.string()}}));
+  for (int k = 0; k < 500 && !fs::exists(partial); ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(partial)) << animate.err();
+  kill(animate.pid(), SIGTERM);
+  EXPECT_EQ(animate.wait(), 128 + SIGTERM) << animate.err();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // 15 turns of the writer's loop
+  EXPECT_FALSE(fs::exists(partial)) << animate.err();
+  EXPECT_EQ(whole_run(s.out, "alpha"), "");
 }
 
 }  // namespace
