@@ -143,8 +143,19 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
     write_shard(where, scene, *plan, std::move(computed));
   } else {
     const ParallelRun parallel{computed.ranks, computed.threads, 0};
-    write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
-                       options, scene.has_sweep ? nullptr : &plan->initial(0), states_dir);
+    const std::size_t finished = computed.records.size();
+    try {
+      write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
+                         options, scene.has_sweep ? nullptr : &plan->initial(0), states_dir);
+    } catch (const Interrupted& e) {  // after the particles: their checkpoint holds every realization
+      if (dynamic_cast<const CheckpointTaken*>(&e) || !keeps_checkpoints(options) ||
+          !fs::exists(checkpoint_path(where)))
+        throw;
+      throw CheckpointTaken(e.signal_number(),
+                            "all " + std::to_string(finished) + " realizations are kept in " +
+                                checkpoint_path(where).string() + "; continue with: shockgas run --resume " +
+                                where.string());
+    }
   }
   if (keeps_checkpoints(options)) remove_checkpoint(where);  // the result holds it all now
   if (made) made->keep();
