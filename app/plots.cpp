@@ -69,7 +69,11 @@ std::string run_plot_script(const std::string& script, const char* env_override,
     remove_partial_pictures(dir);
     throw;
   }
-  if (code == 0) return said;
+  if (code == 0) {
+    std::error_code ec;
+    fs::remove(fs::path(dir) / log, ec);  // an earlier failure's log (animate DIR again) no longer holds
+    return said;
+  }
   const std::string name = fs::path(path).filename().string();
   const std::string reason = code > 128 ? ended_by_signal(code - 128) : reason_of(said, name);
   if (code == kMissingLibrary)
@@ -86,7 +90,11 @@ std::string run_plot_script(const std::string& script, const char* env_override,
                              (reason.empty() ? "" : ": " + reason) + " (" + name + ", exit " +
                              std::to_string(code);
   if (said.empty()) return failed + ")\n";
-  write_file(fs::path(dir) / log, said);
+  const bool cut = said.size() >= kSaidBytes;  // run_child keeps the last kSaidBytes
+  write_file(fs::path(dir) / log, (cut ? "[" + name + " said more: only its last " +
+                                             std::to_string(kSaidBytes / 1024) + " kB are kept here]\n"
+                                       : std::string()) +
+                                      said);
   return failed + "; its messages are kept in " + log + ")\n";
 }
 

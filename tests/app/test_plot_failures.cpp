@@ -109,5 +109,47 @@ TEST(PlotFailures, AnInterruptedAnimationLeavesNothingWriting) {
   EXPECT_EQ(whole_run(s.out, "alpha"), "");
 }
 
+// A script that says more than is kept: plots.log says that its start is cut
+// (found: 64 kB kept without a word of the 285 kB said).
+TEST(PlotFailures, ALogThatIsCutSaysSo) {
+  const TwoRuns s = alpha_done(fresh_dir("plot-noisy"));
+  const fs::path script = s.root / "noisy_plot.py";
+  write_text(script,
+             "import sys\nfor k in range(5000): print('noisy line %05d' % k + 'x' * 40, file=sys.stderr)\n"
+             "raise ValueError('late')\n");
+  const auto [code, err] = run_child({"run", s.b.string(), "--out", s.out.string(), "-q", "--force"},
+                                     with_env({{"SHOCKGAS_PLOT_SCRIPT", script.string()}}));
+  EXPECT_EQ(code, 0) << err;
+  const std::string log = read_text(s.out / "plots.log");
+  EXPECT_EQ(log.rfind("[noisy_plot.py said more: only its last 64 kB are kept here]\n", 0), 0u)
+      << log.substr(0, 200);
+  EXPECT_NE(log.find("ValueError: late"), std::string::npos);
+  EXPECT_EQ(whole_run(s.out, "beta"), "");
+}
+
+// `shockgas animate` that succeeds after one that failed leaves no
+// animation.log of the failure (found: kept, and listed in the manifest).
+TEST(PlotFailures, ASucceedingAnimationRemovesTheLogOfAFailedOne) {
+  const TwoRuns s = alpha_done(fresh_dir("animate-again"));
+  const fs::path scene = s.root / "frames.toml";
+  write_text(scene,
+             std::string(kSceneA) + "[output]\nplots = false\nanimation = true\nanimation_frames = 4\n");
+  ASSERT_EQ(run_child({"run", scene.string(), "--out", s.out.string(), "-q", "--force"}).first, 0);
+  const fs::path failing = s.root / "failing.py", working = s.root / "working.py";
+  write_text(failing, "raise ValueError('no movie')\n");
+  write_text(working,
+             "import os, sys\nopen(os.path.join(sys.argv[1], 'animation.png'), 'w').write('frame')\n");
+  EXPECT_EQ(
+      run_child({"animate", s.out.string()}, with_env({{"SHOCKGAS_ANIMATE_SCRIPT", failing.string()}})).first,
+      0);
+  ASSERT_TRUE(fs::exists(s.out / "animation.log"));
+  EXPECT_EQ(
+      run_child({"animate", s.out.string()}, with_env({{"SHOCKGAS_ANIMATE_SCRIPT", working.string()}})).first,
+      0);
+  EXPECT_FALSE(fs::exists(s.out / "animation.log"));
+  EXPECT_EQ(read_text(s.out / "manifest.json").find("animation.log"), std::string::npos);
+  EXPECT_EQ(whole_run(s.out, "alpha"), "");
+}
+
 }  // namespace
 }  // namespace shockgas::app
