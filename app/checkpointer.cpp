@@ -92,6 +92,11 @@ void Checkpointer::save_gathered() {
   if (checkpoint_.records.size() > saved_) save_locked(false);
 }
 
+void Checkpointer::save_at_end() {
+  std::lock_guard lock(mutex_);
+  if (on_disk_ && checkpoint_.records.size() > saved_) save_locked(false);
+}
+
 void Checkpointer::finished(std::uint64_t ensemble, std::uint64_t index) {
   std::lock_guard lock(mutex_);
   states_.erase({ensemble, index});

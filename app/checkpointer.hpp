@@ -138,6 +138,11 @@ class Checkpointer {
   // Saves the records gathered now, if any is not on disk yet (rank 0 of a
   // job on a checkpoint request, before it waits for the ranks' states).
   void save_gathered();
+  // The particles are done: a checkpoint on disk (the run was long enough to
+  // save one, or resumed one; a job's, always) is brought up to every record,
+  // so that an interruption while the results are written keeps them all. A
+  // short run, which never saved, does not pay for the write.
+  void save_at_end();
   // A realization finished (its record sent to rank 0, which removes its state).
   void finished(std::uint64_t ensemble, std::uint64_t index);
   // What the states of this process hold after a checkpoint request, as in

@@ -54,7 +54,7 @@ ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::siz
   keep_finished();
   if (auto failure = pool.failure()) std::rethrow_exception(failure->error);
   progress.update(pool.fraction(), pool.sim_time());  // the end: 100 %, which the last poll may have missed
-  if (checkpoints) checkpoints->save_gathered();  // an interrupt while the results are written keeps them all
+  if (checkpoints) checkpoints->save_at_end();  // an interrupt while the results are written keeps them all
   out.records = checkpoints ? checkpoints->take_records() : pool.take_finished();
   sort_in_plan_order(out.records);
   return out;
@@ -109,7 +109,7 @@ class Gatherer {
       std::this_thread::sleep_for(kPoll);
     }
     for (int j = 1; j < job_.size(); ++j) job_.send(j, kDone, {});
-    if (checkpoints_) checkpoints_->save_gathered();  // as compute_alone
+    if (checkpoints_) checkpoints_->save_at_end();  // as compute_alone
     return checkpoints_ ? checkpoints_->take_records() : std::move(records_);
   }
 

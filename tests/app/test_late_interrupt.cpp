@@ -1,8 +1,8 @@
 // An interruption after the particles (finding: SIGTERM while the results were
 // written or the plots drawn threw the whole ensemble away, the checkpoint on
-// disk holding only what its last periodic save had, or nothing): a run that
-// keeps checkpoints saves every realization when the particles end, so that a
-// resumed run goes straight to the writing and equals the uninterrupted one.
+// disk holding only what its last periodic save had): a run that has saved a
+// checkpoint saves every realization when the particles end, so that a resumed
+// run goes straight to the writing and equals the uninterrupted one.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -24,10 +24,14 @@ using namespace testing;
 TEST(LateInterrupt, SigtermWhileThePlotsAreDrawnKeepsEveryRealization) {
   const fs::path root = fresh_dir("late-interrupt");
   const fs::path scene = root / "alpha.toml", whole = root / "whole", out = root / "D";
-  write_text(scene, kSceneA);
-  // Checkpoints every 10 minutes: none is due during the run.
+  // Realizations of tens of ms at least, each saving its state every 6 ms of
+  // its run: a checkpoint is on disk before the particles end.
+  write_text(
+      scene,
+      "[scene]\nname = \"alpha\"\n[initial]\nN = 20000\n[particles]\nr = 0.5\nt_end = 100\nsamples = 8\n"
+      "[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 500\n[compare]\n");
   const std::vector<std::string> sets{"--set", "particles.realizations=3", "--set",
-                                      "output.checkpoint_minutes=10"};
+                                      "output.checkpoint_minutes=1e-4"};
   std::vector<std::string> args{"run", scene.string(), "--out", whole.string(), "-q", "--no-plots"};
   args.insert(args.end(), sets.begin(), sets.end());
   ASSERT_EQ(run_child(args).first, 0);
