@@ -79,6 +79,14 @@ TEST(PlotFailures, TheScriptReadsNothingAndItsStdoutIsPassedOn) {
   EXPECT_EQ(whole_run(s.out, "beta"), "");
 }
 
+// Alpha with the frames of an animation (and no pictures) into s.out: its exit code.
+int run_with_frames(const TwoRuns& s) {
+  const fs::path scene = s.root / "frames.toml";
+  write_text(scene,
+             std::string(kSceneA) + "[output]\nplots = false\nanimation = true\nanimation_frames = 4\n");
+  return run_child({"run", scene.string(), "--out", s.out.string(), "-q", "--force"}).first;
+}
+
 // `shockgas animate` stopped by SIGTERM leaves the finished directory as it was
 // (finding: ffmpeg, which the animation script had started, went on writing
 // animation.mp4 after the command had exited, and the movie no longer matched
@@ -87,10 +95,7 @@ TEST(PlotFailures, TheScriptReadsNothingAndItsStdoutIsPassedOn) {
 // ignores SIGTERM, as an encoder flushing its file would outlast it.
 TEST(PlotFailures, AnInterruptedAnimationLeavesNothingWriting) {
   const TwoRuns s = alpha_done(fresh_dir("animate-stopped"));
-  const fs::path scene = s.root / "frames.toml";
-  write_text(scene,
-             std::string(kSceneA) + "[output]\nplots = false\nanimation = true\nanimation_frames = 4\n");
-  ASSERT_EQ(run_child({"run", scene.string(), "--out", s.out.string(), "-q", "--force"}).first, 0);
+  ASSERT_EQ(run_with_frames(s), 0);
   const fs::path script = s.root / "writing_animation.py", partial = s.out / "animation.mp4.partial";
   write_text(
       script,
@@ -131,10 +136,7 @@ TEST(PlotFailures, ALogThatIsCutSaysSo) {
 // animation.log of the failure (found: kept, and listed in the manifest).
 TEST(PlotFailures, ASucceedingAnimationRemovesTheLogOfAFailedOne) {
   const TwoRuns s = alpha_done(fresh_dir("animate-again"));
-  const fs::path scene = s.root / "frames.toml";
-  write_text(scene,
-             std::string(kSceneA) + "[output]\nplots = false\nanimation = true\nanimation_frames = 4\n");
-  ASSERT_EQ(run_child({"run", scene.string(), "--out", s.out.string(), "-q", "--force"}).first, 0);
+  ASSERT_EQ(run_with_frames(s), 0);
   const fs::path failing = s.root / "failing.py", working = s.root / "working.py";
   write_text(failing, "raise ValueError('no movie')\n");
   write_text(working,
