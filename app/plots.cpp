@@ -54,7 +54,7 @@ std::string room_left(const fs::path& dir) {
 }  // namespace
 
 std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
-                            const std::string& what, const std::string& log) {
+                            const std::string& what, const std::string& log, const std::string& within) {
   const char* env = env_override ? std::getenv(env_override) : nullptr;
   const std::string python = "/usr/bin/python3",
                     path = env ? env : std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/" + script;
@@ -95,15 +95,15 @@ std::string run_plot_script(const std::string& script, const char* env_override,
                                              std::to_string(kSaidBytes / 1024) + " kB are kept here]\n"
                                        : std::string()) +
                                       said);
-  return failed + "; its messages are kept in " + log + ")\n";
+  return failed + "; its messages are kept in " + (within.empty() ? log : within + "/" + log) + ")\n";
 }
 
-std::string make_plots(const std::string& dir) {
-  return run_plot_script("plot_result.py", "SHOCKGAS_PLOT_SCRIPT", dir, "plots", "plots.log");
+std::string make_plots(const std::string& dir, const std::string& within) {
+  return run_plot_script("plot_result.py", "SHOCKGAS_PLOT_SCRIPT", dir, "plots", "plots.log", within);
 }
 
-std::string make_animation(const std::string& dir) {
-  return run_plot_script("animate.py", "SHOCKGAS_ANIMATE_SCRIPT", dir, "animation", "animation.log");
+std::string make_animation(const std::string& dir, const std::string& within) {
+  return run_plot_script("animate.py", "SHOCKGAS_ANIMATE_SCRIPT", dir, "animation", "animation.log", within);
 }
 
 std::string make_bench_charts(const std::string& dir) {

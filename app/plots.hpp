@@ -12,20 +12,22 @@ namespace shockgas::app {
 //   it said). The result files are complete without the pictures; a failed
 //   script's messages (a Python traceback) are kept in DIR/<log> instead, and the
 //   pictures it left half-written (DIR/*.partial) are removed.
+// within: DIR as the user finds it in the output directory, for the message
+// ("": the output directory itself; a sweep's variant: its subdirectory).
 // Throws RunError when the pictures could not be written: the script's exit 4
 // (its last line "cannot write PATH: REASON"), or any failure that leaves no
 // room on DIR's file system. A directory that cannot take them cannot take the
 // run's other files either, and a run that fails says so once.
 std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
-                            const std::string& what, const std::string& log);
+                            const std::string& what, const std::string& log, const std::string& within = "");
 
 // The PNG plots of a result directory (scripts/plot_result.py), read only from
 // its result files; a failed script's messages in plots.log.
-std::string make_plots(const std::string& dir);
+std::string make_plots(const std::string& dir, const std::string& within = "");
 
 // The animation of a result directory (scripts/animate.py), from its result.h5;
 // a failed script's messages in animation.log.
-std::string make_animation(const std::string& dir);
+std::string make_animation(const std::string& dir, const std::string& within = "");
 
 // The charts of `shockgas bench` (scripts/plot_bench.py), read only from the CSV
 // files of the studies in dir; a failed script's messages in charts.log.

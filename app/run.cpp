@@ -65,10 +65,10 @@ std::string listed(const std::vector<std::string>& names) {
 
 }  // namespace
 
-void draw_plots(const fs::path& dir, bool animation, ProgressBar& progress) {
-  const auto draw = [&](const char* what, std::string (*script)(const std::string&)) {
+void draw_plots(const fs::path& dir, bool animation, ProgressBar& progress, const std::string& within) {
+  const auto draw = [&](const char* what, std::string (*script)(const std::string&, const std::string&)) {
     progress.phase(what);
-    const std::string said = script(dir.string());
+    const std::string said = script(dir.string(), within);
     progress.end_phase();
     progress.say(said);
   };
@@ -157,7 +157,9 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
   }
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   write_file(dir / "report.md", report_text(r));
-  if (options.plots && scene.output.plots) draw_plots(dir, scene.output.animation, progress);
+  if (options.plots && scene.output.plots)
+    draw_plots(dir, scene.output.animation, progress,
+               variant != std::string::npos ? dir.filename().string() : "");
   progress.phase("writing report.html, manifest.json");
   write_report_html(dir);
   write_manifest(dir, scene.name);

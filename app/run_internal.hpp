@@ -49,8 +49,9 @@ struct SweepPlan {
 SweepPlan plan_sweep(const Scene& scene);
 
 // The plots of a result directory, and its animation: each a phase of progress,
-// what their scripts say told after it (plots.hpp).
-void draw_plots(const std::filesystem::path& dir, bool animation, ProgressBar& progress);
+// what their scripts say told after it (plots.hpp); within as there.
+void draw_plots(const std::filesystem::path& dir, bool animation, ProgressBar& progress,
+                const std::string& within = "");
 
 // A [sweep] scene into dir (existing and empty): each variant into
 // dir/<k>-<label>/, then the side-by-side table, plots and manifest into dir.

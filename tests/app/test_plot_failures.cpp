@@ -132,6 +132,23 @@ TEST(PlotFailures, ALogThatIsCutSaysSo) {
   EXPECT_EQ(whole_run(s.out, "beta"), "");
 }
 
+// In a sweep each variant's warning names its own log (found: three identical
+// lines, "its messages are kept in plots.log", for three different logs).
+TEST(PlotFailures, ASweepsWarningsNameTheVariantsLog) {
+  const fs::path root = fresh_dir("plot-sweep"), scene = root / "sweep.toml", out = root / "S";
+  write_text(scene,
+             "[scene]\nname = \"sw\"\n[initial]\nN = 200\n[particles]\nt_end = 5\n"
+             "[sweep]\nvariants = [\"particles.r=0.1\", \"particles.r=0.2\"]\nlabels = [\"a\", \"b\"]\n");
+  const fs::path script = root / "failing_plot.py";
+  write_text(script, "raise ValueError('no picture')\n");
+  const auto [code, err] = run_child({"run", scene.string(), "--out", out.string(), "-q"},
+                                     with_env({{"SHOCKGAS_PLOT_SCRIPT", script.string()}}));
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_NE(err.find("its messages are kept in 0-a/plots.log)"), std::string::npos) << err;
+  EXPECT_NE(err.find("its messages are kept in 1-b/plots.log)"), std::string::npos) << err;
+  EXPECT_TRUE(fs::exists(out / "0-a" / "plots.log")) << err;
+}
+
 // `shockgas animate` that succeeds after one that failed leaves no
 // animation.log of the failure (found: kept, and listed in the manifest).
 TEST(PlotFailures, ASucceedingAnimationRemovesTheLogOfAFailedOne) {
