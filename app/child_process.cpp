@@ -44,7 +44,7 @@ int status_code(int status) {
   _exit(127);
 }
 
-// The read end of the pipe that takes the child's stderr: read as it comes,
+// The read end of the pipe that takes the child's stdout and stderr: read as it comes,
 // so that the child never blocks on a full pipe; the last kSaidBytes kept.
 class Said {
  public:

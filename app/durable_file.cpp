@@ -74,9 +74,12 @@ std::uint64_t free_bytes(const fs::path& path) {
   return static_cast<std::uint64_t>(s.f_bavail) * s.f_frsize;
 }
 
+std::string room_note(const fs::path& path) {
+  return " (the file system holding it has " + size_text(static_cast<double>(free_bytes(path))) + " free)";
+}
+
 std::string write_failure(const fs::path& path, const std::string& reason) {
-  return "cannot write " + path.string() + ": " + reason + " (the file system holding it has " +
-         size_text(static_cast<double>(free_bytes(path.parent_path()))) + " free)";
+  return "cannot write " + path.string() + ": " + reason + room_note(path.parent_path());
 }
 
 void write_file(const fs::path& path, const std::string& text) {

@@ -28,6 +28,10 @@ std::uint64_t free_bytes(const std::filesystem::path& path);
 // "1.4 MB", "830 kB", "12 GB": a size for messages (decimal units).
 std::string size_text(double bytes);
 
+// " (the file system holding it has N free)": the free space of path's file
+// system, for a message about a write there.
+std::string room_note(const std::filesystem::path& path);
+
 // "cannot write PATH: REASON (the file system holding it has N free)".
 std::string write_failure(const std::filesystem::path& path, const std::string& reason);
 

@@ -47,10 +47,6 @@ void remove_partial_pictures(const fs::path& dir) {
     if (entry.path().extension() == ".partial" && entry.is_regular_file(ec)) fs::remove(entry.path(), ec);
 }
 
-std::string room_left(const fs::path& dir) {
-  return " (the file system holding it has " + size_text(static_cast<double>(free_bytes(dir))) + " free)";
-}
-
 }  // namespace
 
 std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
@@ -81,11 +77,11 @@ std::string run_plot_script(const std::string& script, const char* env_override,
            (reason.empty() ? "" : ": " + reason) + "; run scripts/setup)\n";
   const bool no_room = free_bytes(dir) == 0;  // before the half-written pictures go
   remove_partial_pictures(dir);
-  if (code == kCannotWrite && reason.rfind("cannot write ", 0) == 0) throw RunError(reason + room_left(dir));
+  if (code == kCannotWrite && reason.rfind("cannot write ", 0) == 0) throw RunError(reason + room_note(dir));
   if (code == kCannotWrite || no_room)
     throw RunError("cannot write the " + what + " into " + dir + ": " +
                    (reason.empty() ? name + " ended with exit " + std::to_string(code) : reason) +
-                   room_left(dir));
+                   room_note(dir));
   const std::string failed = "shockgas: warning: " + what + " failed" +
                              (reason.empty() ? "" : ": " + reason) + " (" + name + ", exit " +
                              std::to_string(code);
