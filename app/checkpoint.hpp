@@ -48,6 +48,9 @@ struct KeptWork {
 
 // DIR/checkpoint.bin
 std::filesystem::path checkpoint_path(const std::filesystem::path& dir);
+// "; continue with: shockgas run --resume DIR": how a message about the
+// checkpoint kept in dir ends.
+std::string resume_hint(const std::filesystem::path& dir);
 
 // Whether a name in a run directory is a checkpoint's: checkpoint.bin, a
 // running realization's state (run_state_file.hpp), or a temporary file of a

@@ -101,6 +101,10 @@ bool write_fully(int fd, const std::string& bytes) {
 
 fs::path checkpoint_path(const fs::path& dir) { return dir / "checkpoint.bin"; }
 
+std::string resume_hint(const fs::path& dir) {
+  return "; continue with: shockgas run --resume " + dir.string();
+}
+
 bool is_checkpoint_file(const fs::path& name) {
   const std::string text = name.string();
   return text == "checkpoint.bin" || text.rfind("checkpoint.bin.partial-", 0) == 0 ||

@@ -174,7 +174,7 @@ void Checkpointer::poll() {
   throw CheckpointTaken(signal, "checkpoint written: " + std::to_string(n) +
                                     (n == 1 ? " realization finished is" : " realizations finished are") +
                                     " kept in " + checkpoint_path(dir_).string() + states_note() +
-                                    "; continue with: shockgas run --resume " + dir_.string());
+                                    resume_hint(dir_));
 }
 
 // On a checkpoint request: whether the running realizations are still to

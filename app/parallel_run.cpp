@@ -147,14 +147,13 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
     try {
       write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
                          options, scene.has_sweep ? nullptr : &plan->initial(0), states_dir);
+    } catch (const CheckpointTaken&) {
+      throw;
     } catch (const Interrupted& e) {  // after the particles: their checkpoint holds every realization
-      if (dynamic_cast<const CheckpointTaken*>(&e) || !keeps_checkpoints(options) ||
-          !fs::exists(checkpoint_path(where)))
-        throw;
-      throw CheckpointTaken(e.signal_number(),
-                            "all " + std::to_string(finished) + " realizations are kept in " +
-                                checkpoint_path(where).string() + "; continue with: shockgas run --resume " +
-                                where.string());
+      if (!keeps_checkpoints(options) || !fs::exists(checkpoint_path(where))) throw;
+      throw CheckpointTaken(e.signal_number(), "all " + std::to_string(finished) +
+                                                   " realizations are kept in " +
+                                                   checkpoint_path(where).string() + resume_hint(where));
     }
   }
   if (keeps_checkpoints(options)) remove_checkpoint(where);  // the result holds it all now
