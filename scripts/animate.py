@@ -28,7 +28,7 @@ try:
 
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     from animation_data import Record, with_unit
-    from shockplot.common import CannotWrite
+    from shockplot.common import CannotWrite, write_whole
 except ImportError as exc:  # the command turns this into a warning
     print(f"animate.py: {exc}", file=sys.stderr)
     sys.exit(3)
@@ -283,16 +283,12 @@ def frames_per_second(n):
 
 
 def written(path, write):
-    """Calls write(partial) for path's NAME.partial, then renames it to path: a file
-    whole or not at all. CannotWrite when the system refused it (an OSError with a
-    reason, or an encoder that failed on a disk with no room left)."""
-    partial = path + ".partial"
+    """write_whole(path, write): a file whole or not at all. CannotWrite when the
+    system refused it (an OSError with a reason, or an encoder that failed on a
+    disk with no room left)."""
     try:
-        write(partial)
-        os.replace(partial, path)
+        write_whole(path, write)
     except (OSError, EncoderFailed) as exc:
-        if os.path.exists(partial):
-            os.remove(partial)
         said = getattr(exc, "said", "") or ""
         if isinstance(exc, OSError) and exc.errno not in (errno.EPIPE, None):
             raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc

@@ -134,21 +134,32 @@ class CannotWrite(Exception):
     """A picture that could not be written: "cannot write PATH: REASON"."""
 
 
+def write_whole(path, write):
+    """Calls write(partial) for path's NAME.partial, then renames it to path: a file
+    whole or not at all. On a failure the partial file is removed and the error
+    goes on."""
+    partial = path + ".partial"
+    try:
+        write(partial)
+        os.replace(partial, path)
+    except BaseException:
+        if os.path.exists(partial):
+            os.remove(partial)
+        raise
+
+
 def save(fig, out_dir, name):
-    """Writes the figure as out_dir/name, whole or not at all (by way of name.partial);
-    the first title names the picture (PNG tEXt Title). CannotWrite when the system
-    refuses the file (a full disk)."""
+    """Writes the figure as out_dir/name, whole or not at all (write_whole); the first
+    title names the picture (PNG tEXt Title). CannotWrite when the system refuses
+    the file (a full disk)."""
     title = fig._suptitle.get_text() if fig._suptitle is not None else ""
     title = title or next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
     path = os.path.join(out_dir, name)
-    partial = path + ".partial"
     try:
-        fig.savefig(partial, format=os.path.splitext(name)[1][1:], dpi=110, bbox_inches="tight",
-                    metadata={"Title": title} if title else None)
-        os.replace(partial, path)
+        write_whole(path, lambda partial: fig.savefig(partial, format=os.path.splitext(name)[1][1:], dpi=110,
+                                                      bbox_inches="tight",
+                                                      metadata={"Title": title} if title else None))
     except OSError as exc:
-        if os.path.exists(partial):
-            os.remove(partial)
         raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
     finally:
         plt.close(fig)
