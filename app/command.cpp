@@ -1,7 +1,6 @@
 #include "shockgas/app/command.hpp"
 
 #include <CLI/CLI.hpp>
-
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -13,18 +12,19 @@
 #include "animate.hpp"
 #include "checkpoint.hpp"
 #include "checkpointer.hpp"
-#include "shockgas/app/info.hpp"
-#include "shockgas/app/run.hpp"
-#include "shockgas/app/scene.hpp"
 #include "job.hpp"
 #include "merge.hpp"
 #include "plots.hpp"
+#include "result_check.hpp"
+#include "shockgas/app/info.hpp"
+#include "shockgas/app/run.hpp"
+#include "shockgas/app/scene.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
-#include "signals.hpp"
 #include "shockgas/studies/studies.hpp"
 #include "shockgas/studies/tail_study.hpp"
 #include "shockgas/version.hpp"
+#include "signals.hpp"
 
 namespace shockgas::app {
 
@@ -151,7 +151,12 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     return kExitOk;
   }
   if (app.got_subcommand("info")) {
-    std::cout << (args.layout ? describe_layout() : describe_result(args.result_path));
+    if (args.layout) return std::cout << describe_layout(), kExitOk;
+    std::cout << describe_result(args.result_path);
+    const RunFilesCheck files = check_run_files(args.result_path);
+    std::cout << files.listing << std::flush;
+    if (!files.differences.empty())
+      throw result_problem(args.result_path, "changed since the run wrote it", files.differences);
     return kExitOk;
   }
   if (app.got_subcommand("animate")) {
@@ -184,7 +189,9 @@ int run_command(int argc, char** argv) {
   add_run(app, args);
   add_merge(app, args);
   auto* info = app.add_subcommand("info", "What a result file holds, its scene and its provenance");
-  info->add_option("RESULT", args.result_path, "result file, e.g. out/default/result.h5");
+  info->add_option(
+      "RESULT", args.result_path,
+      "result file or run directory, e.g. out/default (every file its manifest.json lists is checked)");
   info->add_flag("--layout", args.layout, "print every dataset and summary key a run may write (docs/output.md)");
   info->require_option(1);
   auto* scene = app.add_subcommand("scene", "Print the complete commented scene with every key and its default");

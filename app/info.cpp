@@ -48,7 +48,8 @@ std::string describe(const Hdf5File& file, const std::string& path) {
     out << "\n";
   }
   out << "\nscene (as given):\n" << scene_text << "\n";
-  if (!resolved.empty()) out << "resolved parameters:\n" << resolved;
+  while (!resolved.empty() && resolved.back() == '\n') resolved.pop_back();
+  if (!resolved.empty()) out << "resolved parameters:\n" << resolved << "\n";
   return out.str();
 }
 
@@ -122,6 +123,32 @@ std::string describe_result(const std::string& path) {
     return describe(Hdf5File::open(file.string(), Verification::manifest), file.string());
   std::cerr << "shockgas: warning: " << unverified_warning(file) << "\n";
   return describe_isolated(file);
+}
+
+RunFilesCheck check_run_files(const std::string& path) {
+  const fs::path file = result_file_of(path), dir = file.parent_path().empty() ? "." : file.parent_path();
+  const auto manifest = read_manifest(dir);
+  if (!manifest || !manifest->find(file.filename().string())) return {};
+  const std::vector<FileState> states = check_listed_files(dir, *manifest, file.filename());
+  std::size_t intact = 0, wrong = 0;
+  std::ostringstream listing, differences;
+  for (const FileState& f : states) {
+    intact += f.intact();
+    if (f.intact()) continue;
+    listing << "  " << f.path << ": " << f.problem << (f.detail.empty() ? "" : " (" + f.detail + ")") << "\n";
+    if (f.problem == "not listed") continue;
+    differences << (wrong++ ? ", " : "") << f.path << " " << f.problem;
+  }
+  const std::size_t listed = manifest->files.size();
+  std::ostringstream head;
+  head << "\nfiles of " << dir.string() << " (as " << kManifestFile << " lists them, scene \""
+       << manifest->scene << "\"): ";
+  if (wrong == 0)
+    head << "all " << listed << " intact (size and SHA-256 as recorded)\n";
+  else
+    head << intact << " of " << listed << " intact\n";
+  if (wrong) differences << " (" << wrong << " of the " << listed << " files " << kManifestFile << " lists)";
+  return {head.str() + listing.str(), differences.str()};
 }
 
 std::string describe_layout() { return output_layout_markdown(); }

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -35,16 +36,40 @@ bool has_hdf5_signature(const fs::path& file, std::uint64_t size) {
   return found;
 }
 
-void check_against(const ManifestEntry& e, const fs::path& file, std::uint64_t size) {
+// What differs between a file of `size` bytes and its manifest entry: nothing
+// ({}), "truncated" or "damaged", with the detail.
+FileState difference(const ManifestEntry& e, const fs::path& file, std::uint64_t size) {
   const std::string manifest = (file.parent_path() / kManifestFile).string();
   if (size < e.bytes)
-    throw result_problem(file.string(), "truncated",
-                          std::to_string(size) + " of the " + std::to_string(e.bytes) + " bytes " + manifest +
-                              " recorded when the run wrote it");
+    return {e.path, "truncated",
+            std::to_string(size) + " of the " + std::to_string(e.bytes) + " bytes " + manifest +
+                " recorded when the run wrote it"};
   if (size != e.bytes || sha256_of_file(file) != e.sha256)
-    throw result_problem(file.string(), "damaged",
-                          "its SHA-256 differs from the one " + manifest +
-                              " recorded when the run wrote it; run the scene again");
+    return {e.path, "damaged",
+            "its SHA-256 differs from the one " + manifest +
+                " recorded when the run wrote it; run the scene again"};
+  return {e.path, "", ""};
+}
+
+void check_against(const ManifestEntry& e, const fs::path& file, std::uint64_t size) {
+  const FileState state = difference(e, file, size);
+  if (!state.intact()) throw result_problem(file.string(), state.problem, state.detail);
+}
+
+// A listed path that names a file inside the directory: relative, no "..".
+bool inside(const fs::path& relative) {
+  if (relative.empty() || relative.is_absolute() || relative.has_root_name()) return false;
+  return std::none_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; });
+}
+
+FileState listed_file_state(const fs::path& dir, const ManifestEntry& e) {
+  if (!inside(e.path)) return {e.path, "not a file of the directory", "an absolute path or one through .."};
+  const fs::path file = dir / e.path;
+  struct stat st {};
+  if (::lstat(file.c_str(), &st) != 0)
+    return {e.path, errno == ENOENT ? "missing" : "unreadable", errno == ENOENT ? "" : std::strerror(errno)};
+  if (!S_ISREG(st.st_mode)) return {e.path, "not a regular file", ""};
+  return difference(e, file, static_cast<std::uint64_t>(st.st_size));
 }
 
 }  // namespace
@@ -77,6 +102,21 @@ Verification check_result_file(const fs::path& file) {
   if (!has_hdf5_signature(file, size))
     throw result_problem(file.string(), "not an HDF5 file", "it does not start with the HDF5 signature");
   return Verification::no_manifest;
+}
+
+std::vector<FileState> check_listed_files(const fs::path& dir, const Manifest& manifest,
+                                          const fs::path& skip) {
+  std::vector<FileState> states;
+  for (const ManifestEntry& e : manifest.files)
+    states.push_back(e.path == skip.generic_string() ? FileState{e.path, "", ""} : listed_file_state(dir, e));
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    if (!it->is_regular_file(ec) || it->path() == dir / kManifestFile) continue;
+    const std::string relative = fs::relative(it->path(), dir).generic_string();
+    if (!manifest.find(relative)) states.push_back({relative, "not listed", "not written by the run"});
+  }
+  return states;
 }
 
 std::string unverified_warning(const fs::path& file) {

@@ -5,8 +5,10 @@
 // run directory's manifest.json recorded when it was written (manifest.hpp).
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "file_problem.hpp"
+#include "manifest.hpp"
 
 namespace shockgas::app {
 
@@ -30,6 +32,22 @@ std::filesystem::path result_file_of(const std::filesystem::path& path);
 // not a regular file, empty, shorter or other than its manifest's record, or
 // without the HDF5 signature.
 Verification check_result_file(const std::filesystem::path& file);
+
+// One file of a run directory checked against its manifest.json.
+struct FileState {
+  std::string path;  // relative to the directory, as listed
+  std::string
+      problem;  // empty: intact; else "missing", "truncated", "damaged", "not a regular file",
+                // "unreadable", "not a file of the directory", or "not listed" (a file the run did not write)
+  std::string detail;
+  bool intact() const { return problem.empty(); }
+};
+
+// Every file the manifest of dir lists, in its order, by size and SHA-256 (the
+// listed path `skip`, already checked, is taken as intact), then every regular
+// file under dir that it does not list.
+std::vector<FileState> check_listed_files(const std::filesystem::path& dir, const Manifest& manifest,
+                                          const std::filesystem::path& skip);
 
 // The warning a reader gives for Verification::no_manifest.
 std::string unverified_warning(const std::filesystem::path& file);

@@ -12,6 +12,7 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
+#include "shockgas/app/info.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -134,6 +135,61 @@ TEST(Integrity, ADamagedFileWithoutAManifestNeverCrashesInfo) {
     const auto [code, err] = run_child({"info", (run / "result.h5").string()});
     EXPECT_TRUE(code == 0 || code == 2) << "seed " << seed << ": status " << code << "\n" << err;
   }
+}
+
+// `info DIR` checks every file the manifest lists, not only result.h5 (finding:
+// an edited summary.json or a deleted picture went unnoticed), and names the
+// files the run did not write without failing on them.
+TEST(Integrity, InfoChecksEveryFileTheManifestLists) {
+  const fs::path run = copy_of_run("all-files");
+  const std::size_t listed = read_manifest(run)->files.size();
+  const RunFilesCheck before = check_run_files(run.string());
+  EXPECT_EQ(before.differences, "");
+  EXPECT_NE(before.listing.find("all " + std::to_string(listed) + " intact"), std::string::npos)
+      << before.listing;
+
+  { std::ofstream(run / "summary.json", std::ios::app) << " "; }  // one byte more
+  fs::remove(run / "report.md");
+  write_text(run / "notes.txt", "mine\n");
+  const RunFilesCheck after =
+      check_run_files((run / "result.h5").string());  // the file stands for its directory
+  EXPECT_NE(after.differences.find("summary.json damaged"), std::string::npos) << after.differences;
+  EXPECT_NE(after.differences.find("report.md missing"), std::string::npos) << after.differences;
+  EXPECT_EQ(after.differences.find("notes.txt"), std::string::npos) << after.differences;
+  EXPECT_NE(after.listing.find("notes.txt: not listed"), std::string::npos) << after.listing;
+  EXPECT_NE(after.listing.find(std::to_string(listed - 2) + " of " + std::to_string(listed) + " intact"),
+            std::string::npos)
+      << after.listing;
+
+  const auto [code, err] = run_child({"info", run.string()});
+  EXPECT_EQ(code, 2) << err;
+  EXPECT_NE(err.find("changed since the run wrote it: "), std::string::npos) << err;
+  EXPECT_NE(err.find("(2 of the " + std::to_string(listed) + " files manifest.json lists)"),
+            std::string::npos)
+      << err;
+}
+
+// A file of the same size with other bytes is found by its SHA-256, and a
+// manifest entry that points outside the directory is refused, not read.
+TEST(Integrity, InfoFindsASwappedByteAndRefusesAPathOutsideTheDirectory) {
+  const fs::path run = copy_of_run("swapped");
+  {
+    std::fstream f(run / "report.md", std::ios::in | std::ios::out | std::ios::binary);
+    char c = 0;
+    f.seekg(10), f.get(c), f.seekp(10), f.put(static_cast<char>(c ^ 1));
+  }
+  EXPECT_EQ(check_run_files(run.string()).differences.find("report.md damaged"), 0u);
+
+  const fs::path other = copy_of_run("outside");
+  std::ifstream in(other / kManifestFile);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find("\"report.md\"");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 11, "\"../run/report.md\"");
+  write_text(other / kManifestFile, text);
+  const RunFilesCheck check = check_run_files(other.string());
+  EXPECT_NE(check.differences.find("../run/report.md not a file of the directory"), std::string::npos)
+      << check.differences;
 }
 
 }  // namespace

@@ -8,6 +8,17 @@ namespace shockgas::app {
 // Throws InputError if the file is not a readable HDF5 file.
 std::string describe_result(const std::string& path);
 
+// The files of the run directory that holds a result file (the path itself, or
+// the directory of the file), each checked against the directory's
+// manifest.json: a listing for stdout, and what differs in one line (empty when
+// every listed file has its recorded size and SHA-256; files the manifest does
+// not list are named in the listing only). Both empty without a manifest.
+struct RunFilesCheck {
+  std::string listing;
+  std::string differences;
+};
+RunFilesCheck check_run_files(const std::string& path);
+
 // Every dataset, attribute and summary key a run may write, with unit and
 // meaning, as markdown (the generated sections of docs/output.md).
 std::string describe_layout();
