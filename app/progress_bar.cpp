@@ -39,6 +39,7 @@ void ProgressBar::stage(const std::string& name) {
   start_ = last_draw_ = Clock::now();
   last_decile_ = -1;
   last_time_ = 0;
+  base_ = std::nullopt;
   if (listener_) listener_(stage_, 0.0, 0.0);
 }
 
@@ -49,6 +50,7 @@ void ProgressBar::update(double fraction, double sim_time) {
   if (listener_) listener_(stage_, fraction, sim_time);
   if (!enabled_) return;
   const auto now = Clock::now();
+  if (!base_) base_ = Base{now, std::clamp(fraction, 0.0, 1.0), sim_time};
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   if (elapsed < 1.0) return;  // short runs print nothing
   fraction = std::clamp(fraction, 0.0, 1.0);
@@ -65,9 +67,14 @@ void ProgressBar::update(double fraction, double sim_time) {
 }
 
 void ProgressBar::draw(double fraction, double sim_time) {
-  const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
-  const double rate = elapsed > 0 ? sim_time / elapsed : 0;
-  const double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
+  const auto now = Clock::now();
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  // Rate and remaining time from the work done since the first update: a
+  // resumed run starts where its checkpoint was, not at 0.
+  const double since = std::chrono::duration<double>(now - base_->clock).count();
+  const double rate = since > 0 ? (sim_time - base_->time) / since : 0;
+  const double done = fraction - base_->fraction;
+  const double eta = done > 0 ? since * (1 - fraction) / done : 0;
   char line[200];
   if (tty_) {
     constexpr int width = 30;

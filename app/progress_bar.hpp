@@ -8,6 +8,7 @@
 #include <condition_variable>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -67,6 +68,13 @@ class ProgressBar {
   Clock::time_point start_, last_draw_;
   int last_decile_ = -1;
   double last_time_ = 0;
+  // The stage's first update: where this process took it up (0, or a resumed
+  // run's checkpoint), from which the rate and the remaining time are measured.
+  struct Base {
+    Clock::time_point clock;
+    double fraction, time;
+  };
+  std::optional<Base> base_;
   bool drawn_ = false;
   // The current phase: its name and start, whether its line was printed and
   // is still open; a thread announces it at the end of the process's first second.

@@ -4,7 +4,10 @@
 // second has one line, "NAME ... 1.2 s", in the order the run goes through
 // them; --quiet prints none.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cstdio>
+#include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "child_run.hpp"
+#include "progress_bar.hpp"
 #include "run_dir_checks.hpp"
 
 namespace shockgas::app {
@@ -115,6 +119,37 @@ TEST(Progress, QuietSaysNothing) {
   ASSERT_EQ(run.wait(), 0) << run.err();
   EXPECT_EQ(run.err(), "");
   EXPECT_EQ(whole_run(s.out, "alpha"), "");
+}
+
+// The rate is that of this process's work (finding: a run resumed at t = 9950
+// said "9.95e+03 time units/s", the restored time over this process's
+// seconds). The first update stands for the checkpoint the run took up; 10
+// time units follow in at least 1.1 s, so at most 10 / 1.1 = 9.1 units/s.
+TEST(Progress, ARunTakenUpAtACheckpointCountsItsRateFromThere) {
+  const fs::path log = fresh_dir("progress-rate") / "stderr";
+  std::fflush(stderr);
+  const int saved = dup(STDERR_FILENO);
+  std::FILE* file = std::fopen(log.c_str(), "w");
+  ASSERT_NE(file, nullptr);
+  dup2(fileno(file), STDERR_FILENO);
+  {
+    ProgressBar bar(true);
+    bar.stage("particles");
+    bar.update(0.995, 9950);  // where the checkpoint was
+    std::this_thread::sleep_for(1100ms);
+    bar.update(0.996, 9960);  // not a terminal: one line per 10 %, the first one now
+  }
+  std::fflush(stderr);
+  dup2(saved, STDERR_FILENO);
+  close(saved);
+  std::fclose(file);
+  std::ifstream in(log);
+  const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(err, m, std::regex(R"(t = 9960  ([0-9.e+-]+) time units/s)"))) << err;
+  const double rate = std::stod(m[1].str());
+  EXPECT_GT(rate, 0.0) << err;
+  EXPECT_LE(rate, 10 / 1.1) << err;
 }
 
 }  // namespace
