@@ -56,12 +56,15 @@ void sync_path(const fs::path& path, bool directory) {
 
 }  // namespace
 
-std::string size_text(double bytes) {
+std::string size_text(double bytes, int digits) {
   const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB"};
   int u = 0;
   while (bytes >= 1000 && u < 5) bytes /= 1000, ++u;
   char buf[48];
-  std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.3g %s", bytes, units[u]);
+  if (u == 0)
+    std::snprintf(buf, sizeof buf, "%.0f %s", bytes, units[u]);
+  else
+    std::snprintf(buf, sizeof buf, "%.*g %s", digits, bytes, units[u]);
   return buf;
 }
 

@@ -25,8 +25,9 @@ void try_sync_directory(const std::filesystem::path& dir) noexcept;
 // nearest existing ancestor); the largest value if unknown.
 std::uint64_t free_bytes(const std::filesystem::path& path);
 
-// "1.4 MB", "830 kB", "12 GB": a size for messages (decimal units).
-std::string size_text(double bytes);
+// "1.4 MB", "830 kB", "12 GB": a size for messages (decimal units), to
+// `digits` significant digits.
+std::string size_text(double bytes, int digits = 3);
 
 // " (the file system holding it has N free)": the free space of path's file
 // system, for a message about a write there.

@@ -36,8 +36,15 @@ constexpr double kBodyBytes = 24;      // x, v, m of one body
 constexpr double kHistogramCopies = 3, kSpacetimeCopies = 1;
 constexpr double kCellResultBytes = 24;   // x, v, rho kept per cell and solver
 constexpr double kSeriesColumns = 10;     // the time series of a run (run_result.hpp)
-constexpr double kFileOverhead = 64e3;    // HDF5 metadata, attributes, summary.json, report.md
-constexpr double kPlotsBytes = 1.5e6;     // the PNG plots of a run
+// On disk (tests/app/test_resources.cpp holds the total against the bytes real
+// runs wrote): result.h5's metadata and attributes (230 kB at the default
+// scene), summary.json, report.md and report.html without pictures; the cells
+// of the initial condition (x, v, rho) and of the comparison (x, v, rho,
+// occupied); the PNG plots (0.72 MB at the default scene), which report.html
+// embeds again in base64 (4/3 of their bytes).
+constexpr double kFileOverhead = 0.3e6;
+constexpr double kInitialCellBytes = 24, kCompareCellBytes = 32;
+constexpr double kPlotsBytes = 0.9e6 * (1 + 4.0 / 3);
 
 double d(std::size_t n) { return static_cast<double>(n); }
 
@@ -122,13 +129,17 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
                        (1 + d(p.snapshots.size())) * N * kBodyBytes});
   }
   const double cells = d(s.continuum.cells);
+  if (s.has_continuum)
+    items.push_back(
+        {"continuum.cells", "the initial condition on the continuum's grid", cells * kInitialCellBytes});
   if (s.has_continuum && s.output.fields)
     items.push_back({"continuum.cells", "the continuum fields", cells * d(s.continuum.solvers.size()) * kCellResultBytes});
   if (s.has_continuum && s.has_compare)
-    items.push_back({"continuum.cells", "the particles on the continuum's grid", cells * kCellResultBytes});
+    items.push_back({"continuum.cells", "the particles on the continuum's grid", cells * kCompareCellBytes});
   if (s.output.animation) items.push_back({"output.animation_frames", "the frames of the animation", frame_bytes(s)});
-  items.push_back({"", "metadata, summary.json, report.md", kFileOverhead});
-  if (plots && s.output.plots) items.push_back({"output.plots", "the plots", kPlotsBytes});
+  items.push_back({"", "metadata, summary.json, report.md, report.html", kFileOverhead});
+  if (plots && s.output.plots)
+    items.push_back({"output.plots", "the plots, and again in report.html", kPlotsBytes});
   return items;
 }
 
@@ -210,11 +221,16 @@ std::string blamed_key(const Scene& scene, const ResourceItem& item) {
   return !overridden(item.key) && overridden(item.factor) ? item.factor : item.key;
 }
 
-std::string estimate_text(const ResourceEstimate& e) {
+// "about NEED (KEY: what, BYTES), ROOM WHERE": the estimate against the room,
+// with as many digits as it takes for the two to read differently (a refusal
+// that said "2.28 MB ..., 2.28 MB free" named no difference).
+std::string estimate_text(const ResourceEstimate& e, double room, const std::string& where) {
+  int digits = 3;
+  while (digits < 12 && size_text(e.total(), digits) == size_text(room, digits)) ++digits;
   const ResourceItem& big = e.largest();
   const std::string keys = big.key + (big.factor.empty() ? "" : " x " + big.factor);
-  return "about " + size_text(e.total()) + " (" + (big.key.empty() ? "" : keys + ": ") + big.what + ", " +
-         size_text(big.bytes) + ")";
+  return "about " + size_text(e.total(), digits) + " (" + (big.key.empty() ? "" : keys + ": ") + big.what +
+         ", " + size_text(big.bytes) + "), " + size_text(room, digits) + " " + where;
 }
 
 }  // namespace
@@ -280,16 +296,16 @@ void check_resources(const Scene& scene, const fs::path& out, bool plots) {
     const std::string key = blamed_key(scene, memory.largest());
     const auto origin = scene.key_origin.find(key);
     throw InputError(key.empty() ? "scene" : key, value_of(scene, key),
-                     "a scene that fits in the memory available: it needs " + estimate_text(memory) + ", " +
-                         size_text(limit.bytes) + " available (" + limit.source + ")",
+                     "a scene that fits in the memory available: it needs " +
+                         estimate_text(memory, limit.bytes, "available (" + limit.source + ")"),
                      origin != scene.key_origin.end() ? origin->second : scene.path);
   }
   const ResourceEstimate disk = estimate_disk(scene, plots);
   const double free = static_cast<double>(free_bytes(resolve_target(out)));
   if (disk.total() > free)
-    throw InputError("--out", to_text(out.string()),
-                     "a file system with room for the results: they need " + estimate_text(disk) + ", " +
-                         size_text(free) + " free");
+    throw InputError(
+        "--out", to_text(out.string()),
+        "a file system with room for the results: they need " + estimate_text(disk, free, "free"));
 }
 
 }  // namespace shockgas::app

@@ -121,7 +121,7 @@ TEST(FullDisk, ADiskThatFillsWhileThePlotsAreDrawnFailsTheRunOnce) {
   for (const bool with_real_script : {true, false}) {
     if (with_real_script && !real) continue;
     SCOPED_TRACE(with_real_script ? "scripts/plot_result.py" : "a script that fails with a traceback");
-    SmallDisk disk(with_real_script ? "fulldisk-plots-real" : "fulldisk-plots-generic", "2m");
+    SmallDisk disk(with_real_script ? "fulldisk-plots-real" : "fulldisk-plots-generic", "4m");
     REQUIRE_MOUNTED(disk);
     const TwoRuns s = alpha_done(disk.dir());
     fs::remove(go);
