@@ -1,20 +1,25 @@
 #!/usr/bin/env python3
 """Charts of `shockgas bench` (docs/performance.md), drawn from the CSV files only.
 
-Usage: plot_bench.py DIR   -- writes DIR/<name>.png next to each DIR/<name>.csv.
-Exit code 3 if matplotlib is missing (the command turns that into a warning).
+Usage: plot_bench.py DIR   -- writes DIR/<name>.png next to each DIR/<name>.csv,
+each whole or not at all. Exit code 3 if matplotlib is missing (the command turns
+that into a warning); 4, with one line "cannot write PATH: REASON" on stderr, when
+a chart cannot be written (a full disk).
 """
 import csv
 import math
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 try:
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-except ImportError:
+    from shockplot.common import CannotWrite, write_whole
+except ImportError as exc:
+    print(f"plot_bench.py: {exc}", file=sys.stderr)
     sys.exit(3)
 
 
@@ -39,9 +44,16 @@ def positive(xs, ys, keep_order=False):
 
 
 def save(fig, directory, name):
+    """DIR/name.png, whole or not at all (write_whole); CannotWrite when the system
+    refuses it."""
     fig.tight_layout()
-    fig.savefig(os.path.join(directory, name + ".png"), dpi=90)
-    plt.close(fig)
+    path = os.path.join(directory, name + ".png")
+    try:
+        write_whole(path, lambda partial: fig.savefig(partial, format="png", dpi=90))
+    except OSError as exc:
+        raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
+    finally:
+        plt.close(fig)
 
 
 def grouped(rows, key):
@@ -253,4 +265,8 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except CannotWrite as exc:  # the command ends with this line
+        print(f"plot_bench.py: {exc}", file=sys.stderr)
+        sys.exit(4)

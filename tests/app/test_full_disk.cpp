@@ -4,10 +4,12 @@
 // mounts a small tmpfs (skipped with a message where it cannot).
 #include <gtest/gtest.h>
 #include <sys/mount.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <string>
@@ -185,6 +187,38 @@ TEST(FullDisk, AMountPointIsNotReplaced) {
   const auto [code, err] = run_child({"run", scene.string(), "--out", disk.dir().string(), "-q", "--no-plots"});
   EXPECT_EQ(code, 2) << err;
   EXPECT_NE(err.find("not a mount point"), std::string::npos) << err;
+}
+
+// The bench's charts on a full disk (finding: plot_bench.py wrote its PNGs in
+// place, so a full disk left a truncated chart beside the CSVs): the chart is
+// written whole or not at all, and the script ends with one line and exit 4.
+TEST(FullDisk, ABenchChartThatCannotBeWrittenLeavesNoPartOfIt) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0)
+    GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib";
+  SmallDisk disk("fulldisk-bench-charts", "1m");
+  REQUIRE_MOUNTED(disk);
+  write_text(disk.dir() / "stability_cfl.csv",
+             "problem,method,cfl,failed,max_tv_rise,rising_steps,tv_ratio,max_ratio,min_rho,l1,what\n"
+             "sine,godunov,0.5,no,0,0,0.7,0.8,0.2,0.004,TVD\n"
+             "sine,godunov,0.9,no,1e-12,3,0.7,0.8,0.2,0.003,TVD\n"
+             "sine,godunov,1.1,yes,0.5,40,2.0,3.0,0.1,0.5,blew up\n");
+  disk.fill(8192);  // room for the chart's first bytes only
+  const fs::path err = fresh_dir("fulldisk-bench-charts-err") / "stderr";
+  const std::string script = std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/plot_bench.py";
+  const int status = std::system(
+      ("/usr/bin/python3 '" + script + "' '" + disk.dir().string() + "' 2>'" + err.string() + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 4);
+  std::ifstream in(err);
+  const std::string said((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(said.rfind("plot_bench.py: cannot write " + (disk.dir() / "stability_cfl.png").string() +
+                           ": No space left on device",
+                       0),
+            0u)
+      << said;
+  EXPECT_EQ(std::count(said.begin(), said.end(), '\n'), 1) << said;
+  for (const auto& e : fs::directory_iterator(disk.dir()))
+    EXPECT_EQ(e.path().extension() == ".png" || e.path().extension() == ".partial", false) << e.path();
 }
 
 }  // namespace
