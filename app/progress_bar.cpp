@@ -50,7 +50,9 @@ void ProgressBar::update(double fraction, double sim_time) {
   if (listener_) listener_(stage_, fraction, sim_time);
   if (!enabled_) return;
   const auto now = Clock::now();
-  if (!base_) base_ = Base{now, std::clamp(fraction, 0.0, 1.0), sim_time};
+  // The base is the first update that reports any progress: a resumed run's
+  // workers report where they took up only after the first poll, which says 0.
+  if (!base_ && (fraction > 0 || sim_time > 0)) base_ = Base{now, std::clamp(fraction, 0.0, 1.0), sim_time};
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   if (elapsed < 1.0) return;  // short runs print nothing
   fraction = std::clamp(fraction, 0.0, 1.0);
@@ -71,9 +73,10 @@ void ProgressBar::draw(double fraction, double sim_time) {
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   // Rate and remaining time from the work done since the first update: a
   // resumed run starts where its checkpoint was, not at 0.
-  const double since = std::chrono::duration<double>(now - base_->clock).count();
-  const double rate = since > 0 ? (sim_time - base_->time) / since : 0;
-  const double done = fraction - base_->fraction;
+  const Base base = base_.value_or(Base{now, fraction, sim_time});
+  const double since = std::chrono::duration<double>(now - base.clock).count();
+  const double rate = since > 0 ? (sim_time - base.time) / since : 0;
+  const double done = fraction - base.fraction;
   const double eta = done > 0 ? since * (1 - fraction) / done : 0;
   char line[200];
   if (tty_) {

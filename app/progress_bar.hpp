@@ -68,8 +68,9 @@ class ProgressBar {
   Clock::time_point start_, last_draw_;
   int last_decile_ = -1;
   double last_time_ = 0;
-  // The stage's first update: where this process took it up (0, or a resumed
-  // run's checkpoint), from which the rate and the remaining time are measured.
+  // The stage's first update with any progress: where this process took it up
+  // (its first steps, or a resumed run's checkpoint), from which the rate and
+  // the remaining time are measured.
   struct Base {
     Clock::time_point clock;
     double fraction, time;

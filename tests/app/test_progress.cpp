@@ -121,10 +121,11 @@ TEST(Progress, QuietSaysNothing) {
   EXPECT_EQ(whole_run(s.out, "alpha"), "");
 }
 
-// The rate is that of this process's work (finding: a run resumed at t = 9950
-// said "9.95e+03 time units/s", the restored time over this process's
-// seconds). The first update stands for the checkpoint the run took up; 10
-// time units follow in at least 1.1 s, so at most 10 / 1.1 = 9.1 units/s.
+// The rate is that of this process's work (finding: a run resumed at t = 1323
+// said "1.54e+03 time units/s" after 1 s, the restored time over this process's
+// seconds). As in a resumed run, the first poll says 0 (the workers have not
+// yet taken up their checkpoints) and the next one the checkpoint's t = 9950;
+// 10 time units follow in at least 1.1 s, so at most 10 / 1.1 = 9.1 units/s.
 TEST(Progress, ARunTakenUpAtACheckpointCountsItsRateFromThere) {
   const fs::path log = fresh_dir("progress-rate") / "stderr";
   std::fflush(stderr);
@@ -135,6 +136,7 @@ TEST(Progress, ARunTakenUpAtACheckpointCountsItsRateFromThere) {
   {
     ProgressBar bar(true);
     bar.stage("particles");
+    bar.update(0, 0);         // the first poll, before the workers took up their checkpoints
     bar.update(0.995, 9950);  // where the checkpoint was
     std::this_thread::sleep_for(1100ms);
     bar.update(0.996, 9960);  // not a terminal: one line per 10 %, the first one now
