@@ -128,8 +128,10 @@ std::string describe_result(const std::string& path) {
 RunFilesCheck check_run_files(const std::string& path) {
   const fs::path file = result_file_of(path), dir = file.parent_path().empty() ? "." : file.parent_path();
   const auto manifest = read_manifest(dir);
-  if (!manifest || !manifest->find(file.filename().string())) return {};
-  const std::vector<FileState> states = check_listed_files(dir, *manifest, file.filename());
+  if (!manifest) return {};
+  // The result file itself was checked before it was described, if listed.
+  const fs::path checked = manifest->find(file.filename().string()) ? file.filename() : fs::path();
+  const std::vector<FileState> states = check_listed_files(dir, *manifest, checked);
   std::size_t intact = 0, wrong = 0;
   std::ostringstream listing, differences;
   for (const FileState& f : states) {
@@ -148,7 +150,7 @@ RunFilesCheck check_run_files(const std::string& path) {
   else
     head << intact << " of " << listed << " intact\n";
   if (wrong) differences << " (" << wrong << " of the " << listed << " files " << kManifestFile << " lists)";
-  return {head.str() + listing.str(), differences.str()};
+  return {head.str() + listing.str(), differences.str(), dir.string()};
 }
 
 std::string describe_layout() { return output_layout_markdown(); }

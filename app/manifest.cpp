@@ -4,8 +4,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <unordered_set>
 
 #include "durable_file.hpp"
+#include "file_problem.hpp"
 #include "sha256.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/version.hpp"
@@ -21,14 +23,38 @@ constexpr const char* kFormat = "shockgas run directory 1";
 constexpr std::uintmax_t kMaxManifestBytes = 64u << 20;  // far above any run's list of files
 
 [[noreturn]] void refuse(const fs::path& file, const std::string& why) {
-  throw InputError("manifest", to_text(file.string()), "a manifest.json written by shockgas (" + why + ")");
+  throw FileProblem("manifest", file.string(), "not a manifest.json written by shockgas", why);
+}
+
+// A path as write_manifest writes it: relative, '/'-separated, no empty, "." or
+// ".." part (nothing outside the directory, one spelling per file).
+bool normal_relative(const std::string& path) {
+  if (path.empty() || path.front() == '/') return false;
+  for (std::size_t from = 0; from <= path.size();) {
+    const std::size_t to = std::min(path.find('/', from), path.size());
+    const std::string part = path.substr(from, to - from);
+    if (part.empty() || part == "." || part == "..") return false;
+    from = to + 1;
+  }
+  return true;
+}
+
+bool hex_digest(const std::string& s) {
+  return s.size() == 64 && std::all_of(s.begin(), s.end(), [](char c) {
+           return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+         });
 }
 
 ManifestEntry entry_of(const ordered_json& j, const fs::path& file) {
   if (!j.is_object() || !j.contains("path") || !j["path"].is_string() || !j.contains("bytes") ||
       !j["bytes"].is_number_unsigned() || !j.contains("sha256") || !j["sha256"].is_string())
     refuse(file, "each file with path, bytes and sha256");
-  return {j["path"].get<std::string>(), j["bytes"].get<std::uint64_t>(), j["sha256"].get<std::string>()};
+  ManifestEntry e{j["path"].get<std::string>(), j["bytes"].get<std::uint64_t>(),
+                  j["sha256"].get<std::string>()};
+  if (!normal_relative(e.path))
+    refuse(file, "a path outside its directory or not in normal form: \"" + e.path + "\"");
+  if (!hex_digest(e.sha256)) refuse(file, "a SHA-256 that is not 64 lowercase hex digits, for " + e.path);
+  return e;
 }
 
 }  // namespace
@@ -77,7 +103,11 @@ std::optional<Manifest> read_manifest(const fs::path& dir) {
     refuse(file, "scene and files");
   Manifest m;
   m.scene = j["scene"].get<std::string>();
-  for (const auto& f : j["files"]) m.files.push_back(entry_of(f, file));
+  std::unordered_set<std::string> seen;
+  for (const auto& f : j["files"]) {
+    m.files.push_back(entry_of(f, file));
+    if (!seen.insert(m.files.back().path).second) refuse(file, "a file listed twice: " + m.files.back().path);
+  }
   return m;
 }
 

@@ -34,8 +34,9 @@ struct Manifest {
 Manifest write_manifest(const std::filesystem::path& dir, const std::string& scene);
 
 // The manifest of dir, or nullopt where dir has none. A manifest.json that is
-// not one shockgas wrote (unreadable, not JSON, wrong fields) is an InputError
-// naming it.
+// not one shockgas wrote (unreadable, not JSON, wrong fields, a path that is
+// not a file of dir in the form written, a malformed digest, a file listed
+// twice) is a FileProblem (InputError) naming it.
 std::optional<Manifest> read_manifest(const std::filesystem::path& dir);
 
 }  // namespace shockgas::app

@@ -4,7 +4,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -36,40 +35,53 @@ bool has_hdf5_signature(const fs::path& file, std::uint64_t size) {
   return found;
 }
 
-// What differs between a file of `size` bytes and its manifest entry: nothing
-// ({}), "truncated" or "damaged", with the detail.
-FileState difference(const ManifestEntry& e, const fs::path& file, std::uint64_t size) {
-  const std::string manifest = (file.parent_path() / kManifestFile).string();
+// What differs between a file of `size` bytes and its entry in `manifest`:
+// nothing, "truncated", "damaged" or "unreadable", with the detail.
+FileState difference(const ManifestEntry& e, const fs::path& file, std::uint64_t size,
+                     const fs::path& manifest) {
   if (size < e.bytes)
     return {e.path, "truncated",
-            std::to_string(size) + " of the " + std::to_string(e.bytes) + " bytes " + manifest +
+            std::to_string(size) + " of the " + std::to_string(e.bytes) + " bytes " + manifest.string() +
                 " recorded when the run wrote it"};
-  if (size != e.bytes || sha256_of_file(file) != e.sha256)
+  std::string digest;
+  try {
+    digest = size == e.bytes ? sha256_of_file(file) : "";
+  } catch (const std::exception& error) {
+    return {e.path, "unreadable", error.what()};
+  }
+  if (digest != e.sha256)
     return {e.path, "damaged",
-            "its SHA-256 differs from the one " + manifest +
+            "its SHA-256 differs from the one " + manifest.string() +
                 " recorded when the run wrote it; run the scene again"};
   return {e.path, "", ""};
 }
 
 void check_against(const ManifestEntry& e, const fs::path& file, std::uint64_t size) {
-  const FileState state = difference(e, file, size);
+  const FileState state = difference(e, file, size, file.parent_path() / kManifestFile);
   if (!state.intact()) throw result_problem(file.string(), state.problem, state.detail);
 }
 
-// A listed path that names a file inside the directory: relative, no "..".
-bool inside(const fs::path& relative) {
-  if (relative.empty() || relative.is_absolute() || relative.has_root_name()) return false;
-  return std::none_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; });
-}
-
 FileState listed_file_state(const fs::path& dir, const ManifestEntry& e) {
-  if (!inside(e.path)) return {e.path, "not a file of the directory", "an absolute path or one through .."};
   const fs::path file = dir / e.path;
   struct stat st {};
   if (::lstat(file.c_str(), &st) != 0)
     return {e.path, errno == ENOENT ? "missing" : "unreadable", errno == ENOENT ? "" : std::strerror(errno)};
   if (!S_ISREG(st.st_mode)) return {e.path, "not a regular file", ""};
-  return difference(e, file, static_cast<std::uint64_t>(st.st_size));
+  return difference(e, file, static_cast<std::uint64_t>(st.st_size), dir / kManifestFile);
+}
+
+// For a missing file: that the manifest beside it lists it, if it does.
+std::string listed_note(const fs::path& file) {
+  std::optional<Manifest> manifest;
+  try {
+    manifest = read_manifest(file.parent_path());
+  } catch (const std::exception&) {
+    return "";
+  }
+  return manifest && manifest->find(file.filename().string())
+             ? "the run wrote it, as " + (file.parent_path() / kManifestFile).string() +
+                   " records; it was removed since"
+             : "";
 }
 
 }  // namespace
@@ -77,7 +89,7 @@ FileState listed_file_state(const fs::path& dir, const ManifestEntry& e) {
 fs::path result_file_of(const fs::path& path) {
   std::error_code ec;
   if (!fs::is_directory(path, ec)) return path;
-  if (fs::exists(path / "result.h5", ec)) return path / "result.h5";
+  if (fs::exists(path / "result.h5", ec) || fs::exists(path / kManifestFile, ec)) return path / "result.h5";
   throw result_problem(path.string(), "a directory",
                         "give a result file, or a run directory that holds result.h5 (this one does not)");
 }
@@ -85,7 +97,7 @@ fs::path result_file_of(const fs::path& path) {
 Verification check_result_file(const fs::path& file) {
   struct stat st {};
   if (::stat(file.c_str(), &st) != 0) {
-    if (errno == ENOENT) throw result_problem(file.string(), "no such file", "");
+    if (errno == ENOENT) throw result_problem(file.string(), "no such file", listed_note(file));
     throw result_problem(file.string(), "unreadable", std::strerror(errno));
   }
   if (S_ISDIR(st.st_mode)) return check_result_file(result_file_of(file));
@@ -110,11 +122,14 @@ std::vector<FileState> check_listed_files(const fs::path& dir, const Manifest& m
   for (const ManifestEntry& e : manifest.files)
     states.push_back(e.path == skip.generic_string() ? FileState{e.path, "", ""} : listed_file_state(dir, e));
   std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
-       it.increment(ec)) {
-    if (!it->is_regular_file(ec) || it->path() == dir / kManifestFile) continue;
-    const std::string relative = fs::relative(it->path(), dir).generic_string();
-    if (!manifest.find(relative)) states.push_back({relative, "not listed", "not written by the run"});
+  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    const std::string relative = it->path().lexically_relative(dir).generic_string();
+    if (relative == kManifestFile || manifest.find(relative)) continue;
+    if (it->is_symlink(ec))
+      states.push_back({relative, "not listed", "a symbolic link, which no run writes"});
+    else if (it->is_regular_file(ec))
+      states.push_back({relative, "not listed", "not written by the run"});
   }
   return states;
 }

@@ -169,27 +169,90 @@ TEST(Integrity, InfoChecksEveryFileTheManifestLists) {
       << err;
 }
 
-// A file of the same size with other bytes is found by its SHA-256, and a
-// manifest entry that points outside the directory is refused, not read.
-TEST(Integrity, InfoFindsASwappedByteAndRefusesAPathOutsideTheDirectory) {
+// A file of the same size with other bytes is found by its SHA-256; a link
+// the run did not write is named as one, under its own name.
+TEST(Integrity, InfoFindsASwappedByteAndNamesALinkAsItself) {
   const fs::path run = copy_of_run("swapped");
   {
     std::fstream f(run / "report.md", std::ios::in | std::ios::out | std::ios::binary);
     char c = 0;
     f.seekg(10), f.get(c), f.seekp(10), f.put(static_cast<char>(c ^ 1));
   }
-  EXPECT_EQ(check_run_files(run.string()).differences.find("report.md damaged"), 0u);
+  fs::create_symlink("/etc/hostname", run / "link");
+  const RunFilesCheck check = check_run_files(run.string());
+  EXPECT_EQ(check.differences.find("report.md damaged"), 0u) << check.differences;
+  EXPECT_NE(check.listing.find("\n  link: not listed (a symbolic link"), std::string::npos) << check.listing;
+  EXPECT_EQ(check.directory, run.string());
+}
 
-  const fs::path other = copy_of_run("outside");
-  std::ifstream in(other / kManifestFile);
+// A manifest that shockgas cannot have written is refused as a whole, before
+// any file it names is read: a path out of the directory, one not in the form
+// written, a malformed digest, a file listed twice.
+TEST(Integrity, AManifestShockgasCannotHaveWrittenIsRefused) {
+  const std::vector<std::pair<std::string, std::string>> edits = {
+      {"\"report.md\"", "\"../run/report.md\""},
+      {"\"report.md\"", "\"./report.md\""},
+      {"\"report.md\"", "\"\""},
+      {"\"report.md\"", "\"result.h5\""},
+  };
+  for (std::size_t k = 0; k < edits.size(); ++k) {
+    const fs::path run = copy_of_run("manifest-edit-" + std::to_string(k));
+    std::ifstream in(run / kManifestFile);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find(edits[k].first);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, edits[k].first.size(), edits[k].second);
+    write_text(run / kManifestFile, text);
+    const auto [code, err] = run_child({"info", run.string()});
+    EXPECT_EQ(code, 2) << edits[k].second << "\n" << err;
+    EXPECT_NE(err.find("manifest.json: not a manifest.json written by shockgas: "), std::string::npos) << err;
+  }
+  const fs::path run = copy_of_run("manifest-digest");
+  std::ifstream in(run / kManifestFile);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto at = text.find("\"report.md\"");
+  const auto at = text.find("\"sha256\": \"");
   ASSERT_NE(at, std::string::npos);
-  text.replace(at, 11, "\"../run/report.md\"");
-  write_text(other / kManifestFile, text);
-  const RunFilesCheck check = check_run_files(other.string());
-  EXPECT_NE(check.differences.find("../run/report.md not a file of the directory"), std::string::npos)
-      << check.differences;
+  text.replace(at + 11, 3, "XYZ");
+  write_text(run / kManifestFile, text);
+  const auto [code, err] = run_child({"info", run.string()});
+  EXPECT_EQ(code, 2) << err;
+  EXPECT_NE(err.find("a SHA-256 that is not 64 lowercase hex digits"), std::string::npos) << err;
+}
+
+// A run directory whose result.h5 was removed: named as missing, with where
+// that is known from, not as "a directory" without one.
+TEST(Integrity, ARemovedResultIsNamedAsRemoved) {
+  const fs::path run = copy_of_run("no-result");
+  fs::remove(run / "result.h5");
+  const auto [code, err] = run_child({"info", run.string()});
+  EXPECT_EQ(code, 2) << err;
+  EXPECT_NE(err.find("result.h5: no such file: the run wrote it, as " + (run / kManifestFile).string() +
+                     " records; it was removed since"),
+            std::string::npos)
+      << err;
+}
+
+// In a sweep the variants' files are checked against the sweep's manifest, and
+// the detail names that manifest, not the variant's own.
+TEST(Integrity, ASweepsFilesAreCheckedAgainstTheManifestThatListsThem) {
+  const fs::path root = fresh_dir("integrity-sweep");
+  write_text(root / "sweep.toml", std::string(kSceneA) +
+                                      "[sweep]\nvariants = [\"particles.r=0.5\", \"particles.r=0.9\"]\n"
+                                      "[output]\nplots = false\n");
+  const fs::path run = root / "run";
+  const auto [made, why] = run_child({"run", (root / "sweep.toml").string(), "--out", run.string(), "-q"});
+  ASSERT_EQ(made, 0) << why;
+  fs::path variant;
+  for (const auto& e : fs::directory_iterator(run))
+    if (e.is_directory()) variant = e.path();
+  ASSERT_FALSE(variant.empty());
+  { std::ofstream(variant / "summary.json", std::ios::app) << " "; }
+  const RunFilesCheck check = check_run_files(run.string());
+  const std::string name = variant.filename().string() + "/summary.json";
+  EXPECT_EQ(check.differences.find(name + " damaged"), 0u) << check.differences;
+  EXPECT_NE(check.listing.find("the one " + (run / kManifestFile).string() + " recorded"), std::string::npos)
+      << check.listing;
+  EXPECT_EQ(check_run_files(variant.string()).differences.find("summary.json damaged"), 0u);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ std::string describe_result(const std::string& path);
 struct RunFilesCheck {
   std::string listing;
   std::string differences;
+  std::string directory;  // the run directory checked
 };
 RunFilesCheck check_run_files(const std::string& path);
 
