@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <utility>
@@ -61,10 +62,14 @@ std::string size_text(double bytes, int digits) {
   int u = 0;
   while (bytes >= 1000 && u < 5) bytes /= 1000, ++u;
   char buf[48];
-  if (u == 0)
+  if (u == 0) {
     std::snprintf(buf, sizeof buf, "%.0f %s", bytes, units[u]);
-  else
-    std::snprintf(buf, sizeof buf, "%.*g %s", digits, bytes, units[u]);
+    return buf;
+  }
+  std::snprintf(buf, sizeof buf, "%.*g", digits, bytes);
+  if (std::strtod(buf, nullptr) >= 1000 && u < 5)
+    bytes /= 1000, ++u;  // 999.7 kB to 3 digits: 1 MB, not 1e+03 kB
+  std::snprintf(buf, sizeof buf, "%.*g %s", digits, bytes, units[u]);
   return buf;
 }
 
