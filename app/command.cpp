@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "animate.hpp"
+#include "bench_run.hpp"
 #include "checkpoint.hpp"
 #include "checkpointer.hpp"
 #include "job.hpp"
@@ -165,9 +166,9 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     return kExitOk;
   }
   if (app.got_subcommand("bench")) {
-    const std::string dir = studies::run_studies(args.bench);
-    std::cerr << make_bench_charts(dir);
-    std::cout << "bench results in " << dir << "/\n";
+    const BenchOutcome bench = run_bench(args.bench);
+    std::cerr << bench.warnings;
+    std::cout << "bench results in " << bench.dir << "/\n";
     return kExitOk;
   }
   if (app.got_subcommand("scene")) {
@@ -215,7 +216,9 @@ int run_command(int argc, char** argv) {
   // A run that stops early, for whatever reason, leaves its output directory
   // as it was (run_directory.hpp).
   const std::string unchanged =
-      app.got_subcommand("run") || app.got_subcommand("merge") ? " (the results in the output directory are as they were)" : "";
+      app.got_subcommand("run") || app.got_subcommand("merge") || app.got_subcommand("bench")
+          ? " (the results in the output directory are as they were)"
+          : "";
   try {
     // SIGINT, SIGTERM -> request_interrupt, restored on return; in an MPI job
     // its session owns them (app/mpi/mpi_job.cpp) and does the same.

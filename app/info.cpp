@@ -117,6 +117,12 @@ std::string describe_isolated(const fs::path& file) {
 }  // namespace
 
 std::string describe_result(const std::string& path) {
+  // An output directory without a result file by its own manifest (`shockgas
+  // bench`): nothing to describe but its files.
+  std::error_code ec;
+  if (fs::is_directory(path, ec) && !fs::exists(fs::path(path) / "result.h5", ec))
+    if (const auto manifest = read_manifest(path); manifest && !manifest->find("result.h5"))
+      return path + ": the output of \"" + manifest->scene + "\", which has no result file\n";
   const fs::path file = result_file_of(path);
   const Verification checked = check_result_file(file);
   if (checked == Verification::manifest)
@@ -126,7 +132,9 @@ std::string describe_result(const std::string& path) {
 }
 
 RunFilesCheck check_run_files(const std::string& path) {
-  const fs::path file = result_file_of(path), dir = file.parent_path().empty() ? "." : file.parent_path();
+  std::error_code ec;
+  const fs::path file = fs::is_directory(path, ec) ? fs::path(path) / "result.h5" : fs::path(path);
+  const fs::path dir = file.parent_path().empty() ? "." : file.parent_path();
   const auto manifest = read_manifest(dir);
   if (!manifest) return {};
   // The result file itself was checked before it was described, if listed.

@@ -2,8 +2,10 @@
 #include "common.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "shockgas/continuum/godunov.hpp"
@@ -24,7 +26,7 @@ std::string Context::path(const std::string& file) const { return out_dir + "/" 
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& columns)
     : out_(path), path_(path), columns_(columns.size()) {
-  if (!out_) throw RunError("bench: cannot write " + path);
+  if (!out_) throw RunError("bench: cannot write " + path + ": " + std::strerror(errno));
   for (const auto& c : columns) *this << c;
   end_row();
 }
@@ -55,9 +57,13 @@ void CsvWriter::end_row() {
   if (cells_ != columns_)
     throw RunError("bench: " + path_ + ": row of " + std::to_string(cells_) + " cells, header has " +
                    std::to_string(columns_));
-  out_ << '\n';
+  // Each row reaches the file before the next is made (a table is small): a
+  // full disk is then met here, in this table's row, with the system's reason.
+  errno = 0;
+  out_ << '\n' << std::flush;
   cells_ = 0;
-  if (!out_) throw RunError("bench: write failed: " + path_);
+  if (!out_)
+    throw RunError("bench: cannot write " + path_ + ": " + (errno ? std::strerror(errno) : "write failed"));
 }
 
 void FailureLog::write(const Context& ctx) const {
@@ -69,7 +75,11 @@ void FailureLog::write(const Context& ctx) const {
     csv.end_row();
     md << "| " << f.section << " | " << f.method << " | " << f.parameter << " | " << f.what << " |\n";
   }
-  if (!md) throw RunError("bench: cannot write " + ctx.path("failures.md"));
+  errno = 0;
+  md.flush();
+  if (!md)
+    throw RunError("bench: cannot write " + ctx.path("failures.md") + ": " +
+                   (errno ? std::strerror(errno) : "write failed"));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

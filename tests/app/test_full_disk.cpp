@@ -221,5 +221,35 @@ TEST(FullDisk, ABenchChartThatCannotBeWrittenLeavesNoPartOfIt) {
     EXPECT_EQ(e.path().extension() == ".png" || e.path().extension() == ".partial", false) << e.path();
 }
 
+// `shockgas bench` is staged as a run is (finding: on a full disk it left new
+// tables, a truncated one among them, beside the charts of the bench before,
+// and named a later file with no reason): the disk fills at the second bench,
+// which fails with one line, and the first bench's directory is as it was.
+TEST(FullDisk, ABenchThatFillsTheDiskLeavesTheEarlierBenchAsItWas) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0)
+    GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib";
+  SmallDisk disk("fulldisk-bench", "4m");
+  REQUIRE_MOUNTED(disk);
+  const fs::path out = disk.dir() / "bench";
+  const Options one_section = with_env({{"SHOCKGAS_BENCH_SECTIONS", "continuum_stability"}});
+  const auto [made, why] = run_child({"bench", "-q", "--out", out.string()}, one_section);
+  ASSERT_EQ(made, 0) << why;
+  std::ifstream in(out / kManifestFile);
+  const std::string before((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(before.find("\"stability_cfl.png\""), std::string::npos) << before;
+  disk.fill(0);
+  const auto [code, err] = run_child({"bench", "-q", "--out", out.string()}, one_section);
+  EXPECT_EQ(code, 1) << err;
+  EXPECT_EQ(err.rfind("shockgas: run failed: ", 0), 0u) << err;
+  EXPECT_NE(err.find("No space left on device"), std::string::npos) << err;
+  EXPECT_NE(err.find("(the results in the output directory are as they were)"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  std::ifstream again(out / kManifestFile);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>()), before);
+  const auto [checked, said] = run_child({"info", out.string()});
+  EXPECT_EQ(checked, 0) << said;
+  EXPECT_TRUE(leftovers(out).empty()) << leftovers(out).front();
+}
+
 }  // namespace
 }  // namespace shockgas::app
