@@ -30,8 +30,16 @@ void animate(const std::string& dir) {
           "true: the run must record its frames (run the scene again with --set output.animation=true)");
   std::cerr << make_animation(dir);
   write_report_html(dir);
-  // The new files and the new report.html join the run's manifest.
+  // The new files and the new report.html join the run's manifest, and a
+  // sweep variant's files (its manifest among them) the sweep's.
   if (const auto manifest = read_manifest(dir)) write_manifest(dir, manifest->scene);
+  const std::filesystem::path variant = std::filesystem::absolute(dir).lexically_normal();
+  const std::filesystem::path name =
+      variant.has_filename() ? variant.filename() : variant.parent_path().filename();
+  const std::filesystem::path sweep =
+      variant.has_filename() ? variant.parent_path() : variant.parent_path().parent_path();
+  if (const auto outer = read_manifest(sweep); outer && outer->find(name.string() + "/" + kManifestFile))
+    update_manifest(sweep, name.string());
 }
 
 }  // namespace shockgas::app

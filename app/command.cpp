@@ -157,7 +157,7 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     const RunFilesCheck files = check_run_files(args.result_path);
     std::cout << files.listing << std::flush;
     if (!files.differences.empty())
-      throw result_problem(files.directory, "changed since the run wrote it", files.differences);
+      throw result_problem(files.directory, "not as its manifest.json records", files.differences);
     return kExitOk;
   }
   if (app.got_subcommand("animate")) {

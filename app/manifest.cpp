@@ -65,24 +65,47 @@ const ManifestEntry* Manifest::find(const std::string& relative_path) const {
   return nullptr;
 }
 
-Manifest write_manifest(const fs::path& dir, const std::string& scene) {
-  Manifest m;
-  m.scene = scene;
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    if (!entry.is_regular_file() || entry.path() == dir / kManifestFile) continue;
-    m.files.push_back({fs::relative(entry.path(), dir).generic_string(), entry.file_size(),
-                       sha256_of_file(entry.path())});
+namespace {
+
+// Every regular file under dir / sub (links not followed, none listed), with
+// its path relative to dir, the manifest of dir itself excepted.
+void add_files(const fs::path& dir, const fs::path& sub, std::vector<ManifestEntry>& files) {
+  for (const auto& entry : fs::recursive_directory_iterator(dir / sub)) {
+    if (entry.is_symlink() || !entry.is_regular_file() || entry.path() == dir / kManifestFile) continue;
+    files.push_back({entry.path().lexically_relative(dir).generic_string(), entry.file_size(),
+                     sha256_of_file(entry.path())});
   }
+}
+
+void write_manifest_file(const fs::path& dir, Manifest& m) {
   std::sort(m.files.begin(), m.files.end(), [](const auto& a, const auto& b) { return a.path < b.path; });
   ordered_json j;
   j["format"] = kFormat;
-  j["scene"] = scene;
+  j["scene"] = m.scene;
   j["shockgas_version"] = kVersion;
   j["git_commit"] = kGitCommit;
   j["files"] = ordered_json::array();
   for (const auto& f : m.files) j["files"].push_back({{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
   write_file(dir / kManifestFile, j.dump(2) + "\n");
+}
+
+}  // namespace
+
+Manifest write_manifest(const fs::path& dir, const std::string& scene) {
+  Manifest m;
+  m.scene = scene;
+  add_files(dir, "", m.files);
+  write_manifest_file(dir, m);
   return m;
+}
+
+void update_manifest(const fs::path& dir, const std::string& sub) {
+  std::optional<Manifest> m = read_manifest(dir);
+  if (!m) return;
+  const std::string prefix = sub + "/";
+  std::erase_if(m->files, [&](const ManifestEntry& e) { return e.path.rfind(prefix, 0) == 0; });
+  add_files(dir, sub, m->files);
+  write_manifest_file(dir, *m);
 }
 
 std::optional<Manifest> read_manifest(const fs::path& dir) {

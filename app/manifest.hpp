@@ -29,9 +29,14 @@ struct Manifest {
   const ManifestEntry* find(const std::string& relative_path) const;
 };
 
-// Hashes every regular file under dir (recursively, the manifest itself
-// excepted) and writes dir/manifest.json; returns what it wrote.
+// Hashes every regular file under dir (recursively, links not followed, the
+// manifest itself excepted) and writes dir/manifest.json; returns what it wrote.
 Manifest write_manifest(const std::filesystem::path& dir, const std::string& scene);
+
+// The entries of dir's manifest for the files under dir/sub (a sweep's
+// variant) hashed again, the others as they were: after a command changed the
+// files of a variant (`shockgas animate`). Nothing where dir has no manifest.
+void update_manifest(const std::filesystem::path& dir, const std::string& sub);
 
 // The manifest of dir, or nullopt where dir has none. A manifest.json that is
 // not one shockgas wrote (unreadable, not JSON, wrong fields, a path that is

@@ -77,14 +77,15 @@ void ProgressBar::draw(double fraction, double sim_time) {
   const double since = std::chrono::duration<double>(now - base.clock).count();
   const double rate = since > 0 ? (sim_time - base.time) / since : 0;
   const double done = fraction - base.fraction;
-  const double eta = done > 0 ? since * (1 - fraction) / done : 0;
+  char eta[24] = "?";  // unknown until this process has done some of the work
+  if (done > 0) std::snprintf(eta, sizeof eta, "%.0f", since * (1 - fraction) / done);
   char line[200];
   if (tty_) {
     constexpr int width = 30;
     const int filled = static_cast<int>(width * fraction);
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    std::snprintf(line, sizeof line, "\r%-18s [%s] %3.0f%%  t = %-10.4g  %.3g time units/s  eta %.0f s  ",
+    std::snprintf(line, sizeof line, "\r%-18s [%s] %3.0f%%  t = %-10.4g  %.3g time units/s  eta %s s  ",
                   stage_.c_str(), bar.c_str(), 100 * fraction, sim_time, rate, eta);
   } else {
     std::snprintf(line, sizeof line, "%s: %3.0f%%  t = %.4g  %.3g time units/s  elapsed %.1f s\n", stage_.c_str(),

@@ -42,8 +42,9 @@ constexpr double kSeriesColumns = 10;     // the time series of a run (run_resul
 // and the model's shortfalls elsewhere (the default scene at 2000 cells wrote
 // 110 kB beyond its other items); the cells
 // of the initial condition (x, v, rho) and of the comparison (x, v, rho,
-// occupied); the PNG plots (0.72 MB at the default scene), which report.html
-// embeds again in base64 (4/3 of their bytes).
+// occupied); the PNG plots (0.72 MB at the default scene, counted as 0.9 MB:
+// busier data make larger pictures), which report.html embeds again in base64
+// (4/3 of their bytes).
 constexpr double kFileOverhead = 0.2e6;
 constexpr double kInitialCellBytes = 24, kCompareCellBytes = 32;
 constexpr double kPlotsBytes = 0.9e6 * (1 + 4.0 / 3);

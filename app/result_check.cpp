@@ -8,9 +8,11 @@
 #include <cerrno>
 #include <cstring>
 
+#include "checkpoint.hpp"
 #include "durable_file.hpp"
 #include "manifest.hpp"
 #include "sha256.hpp"
+#include "state_file.hpp"
 
 namespace shockgas::app {
 
@@ -121,15 +123,19 @@ std::vector<FileState> check_listed_files(const fs::path& dir, const Manifest& m
   std::vector<FileState> states;
   for (const ManifestEntry& e : manifest.files)
     states.push_back(e.path == skip.generic_string() ? FileState{e.path, "", ""} : listed_file_state(dir, e));
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied, ec);
-       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+  std::error_code scan;
+  for (auto it = fs::recursive_directory_iterator(dir, fs::directory_options::skip_permission_denied, scan);
+       !scan && it != fs::recursive_directory_iterator(); it.increment(scan)) {
     const std::string relative = it->path().lexically_relative(dir).generic_string();
     if (relative == kManifestFile || manifest.find(relative)) continue;
+    std::error_code ec;  // a file that goes while the scan passes is not a stop of the scan
     if (it->is_symlink(ec))
       states.push_back({relative, "not listed", "a symbolic link, which no run writes"});
     else if (it->is_regular_file(ec))
-      states.push_back({relative, "not listed", "not written by the run"});
+      states.push_back({relative, "not listed",
+                        is_checkpoint_file(relative) || is_state_file(it->path().filename())
+                            ? "an interrupted run's checkpoint: shockgas run --resume " + dir.string()
+                            : "not written by the run"});
   }
   return states;
 }

@@ -36,16 +36,17 @@ Verification check_result_file(const std::filesystem::path& file);
 // One file of a run directory checked against its manifest.json.
 struct FileState {
   std::string path;  // relative to the directory, as listed
-  std::string
-      problem;  // empty: intact; else "missing", "truncated", "damaged", "not a regular file",
-                // "unreadable", "not a file of the directory", or "not listed" (a file the run did not write)
+  // Empty: intact. Else "missing", "truncated", "damaged", "not a regular
+  // file", "unreadable", or "not listed" (a file or link the manifest does not list).
+  std::string problem;
   std::string detail;
   bool intact() const { return problem.empty(); }
 };
 
 // Every file the manifest of dir lists, in its order, by size and SHA-256 (the
 // listed path `skip`, already checked, is taken as intact), then every regular
-// file under dir that it does not list.
+// file and link under dir that it does not list (an interrupted run's
+// checkpoint named as one).
 std::vector<FileState> check_listed_files(const std::filesystem::path& dir, const Manifest& manifest,
                                           const std::filesystem::path& skip);
 

@@ -17,7 +17,7 @@ try:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from shockplot.common import CannotWrite, write_whole
+    from shockplot.common import CannotWrite, save_whole
 except ImportError as exc:
     print(f"plot_bench.py: {exc}", file=sys.stderr)
     sys.exit(3)
@@ -44,14 +44,10 @@ def positive(xs, ys, keep_order=False):
 
 
 def save(fig, directory, name):
-    """DIR/name.png, whole or not at all (write_whole); CannotWrite when the system
-    refuses it."""
+    """DIR/name.png, whole or not at all; CannotWrite when the system refuses it."""
     fig.tight_layout()
-    path = os.path.join(directory, name + ".png")
     try:
-        write_whole(path, lambda partial: fig.savefig(partial, format="png", dpi=90))
-    except OSError as exc:
-        raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
+        save_whole(os.path.join(directory, name + ".png"), lambda partial: fig.savefig(partial, format="png", dpi=90))
     finally:
         plt.close(fig)
 

@@ -14,6 +14,7 @@ try:
     import matplotlib
 
     matplotlib.use("Agg")
+    import h5py  # noqa: F401 (draw_all reads with it: missing, exit 3 like matplotlib)
     from shockplot import draw_all
     from shockplot.common import CannotWrite
 except ImportError as exc:  # the command turns this into a warning

@@ -14,6 +14,7 @@
 #include "shockgas/continuum/pressureless.hpp"
 #include "shockgas/continuum/viscous_mol.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/params.hpp"
 
 namespace shockgas::studies {
@@ -26,7 +27,7 @@ std::string Context::path(const std::string& file) const { return out_dir + "/" 
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& columns)
     : out_(path), path_(path), columns_(columns.size()) {
-  if (!out_) throw RunError("bench: cannot write " + path + ": " + std::strerror(errno));
+  if (!out_) throw TableWriteFailed("bench: cannot write " + path + ": " + std::strerror(errno));
   for (const auto& c : columns) *this << c;
   end_row();
 }
@@ -63,7 +64,12 @@ void CsvWriter::end_row() {
   out_ << '\n' << std::flush;
   cells_ = 0;
   if (!out_)
-    throw RunError("bench: cannot write " + path_ + ": " + (errno ? std::strerror(errno) : "write failed"));
+    throw TableWriteFailed("bench: cannot write " + path_ + ": " +
+                           (errno ? std::strerror(errno) : "write failed"));
+}
+
+void rethrow_if_bench_failure(const std::exception& e) {
+  if (dynamic_cast<const Interrupted*>(&e) || dynamic_cast<const TableWriteFailed*>(&e)) throw;
 }
 
 void FailureLog::write(const Context& ctx) const {
@@ -78,8 +84,8 @@ void FailureLog::write(const Context& ctx) const {
   errno = 0;
   md.flush();
   if (!md)
-    throw RunError("bench: cannot write " + ctx.path("failures.md") + ": " +
-                   (errno ? std::strerror(errno) : "write failed"));
+    throw TableWriteFailed("bench: cannot write " + ctx.path("failures.md") + ": " +
+                           (errno ? std::strerror(errno) : "write failed"));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

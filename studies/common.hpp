@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "shockgas/core/error.hpp"
+
 namespace shockgas::studies {
 
 // The size of a bench run and where it writes.
@@ -23,6 +25,18 @@ struct Context {
   std::string path(const std::string& file) const;  // out_dir/file
 };
 
+// A table that cannot be written (a full disk): it ends the bench, never a
+// method's failure.
+class TableWriteFailed : public RunError {
+ public:
+  using RunError::RunError;
+};
+
+// In a catch of std::exception around a method's run: rethrows what ends the
+// bench rather than the method (an interruption, core/interrupt.hpp, or
+// TableWriteFailed), so that only the method's own failures are recorded.
+void rethrow_if_bench_failure(const std::exception& e);
+
 // A CSV file with a header row; numbers in shortest round-trip form, text
 // quoted only if it holds a comma or a quote. Non-finite numbers are written as
 // empty cells (never "nan"), so a reader sees "not applicable", not a result.
@@ -32,7 +46,8 @@ class CsvWriter {
   CsvWriter& operator<<(double value);
   CsvWriter& operator<<(const std::string& text);
   CsvWriter& operator<<(const char* text) { return *this << std::string(text); }
-  void end_row();  // throws RunError if the row has the wrong number of cells
+  void
+  end_row();  // RunError if the row has the wrong number of cells; TableWriteFailed if it cannot be written
 
  private:
   void separator();

@@ -14,12 +14,17 @@ namespace {
 // SHOCKGAS_BENCH_SECTIONS (comma-separated section names) runs only those
 // sections, for re-measuring one chart; unset runs them all.
 bool selected(const std::string& section) {
-  const char* env = std::getenv("SHOCKGAS_BENCH_SECTIONS");
-  if (!env || !*env) return true;
-  return ("," + std::string(env) + ",").find("," + section + ",") != std::string::npos;
+  if (runs_every_section()) return true;
+  return ("," + std::string(std::getenv("SHOCKGAS_BENCH_SECTIONS")) + ",").find("," + section + ",") !=
+         std::string::npos;
 }
 
 }  // namespace
+
+bool runs_every_section() {
+  const char* env = std::getenv("SHOCKGAS_BENCH_SECTIONS");
+  return !env || !*env;
+}
 
 std::string run_studies(const StudyOptions& options) {
   if (options.out_dir.empty()) throw InputError("bench.out", "\"\"", "a directory name");

@@ -77,12 +77,14 @@ HopfColePoint hopf_cole_point(const Problem& pb, std::size_t cells, double ratio
     const auto r = continuum::solve(solver_names().hopf_cole, pb.field, p, pb.t);
     pt.solver_fft = "accepted: " + r.method_note;
   } catch (const std::exception& e) {
+    rethrow_if_bench_failure(e);
     pt.solver_fft = std::string("refused: ") + e.what();
   }
   p.hopf_cole_path = continuum::HopfColePath::automatic;
   try {
     pt.solver_auto = continuum::solve(solver_names().hopf_cole, pb.field, p, pb.t).method_note;
   } catch (const std::exception& e) {
+    rethrow_if_bench_failure(e);
     pt.solver_auto = std::string("failed: ") + e.what();
   }
   return pt;
@@ -124,6 +126,7 @@ void implicit_rows(CsvWriter& csv, FailureLog& failures, const Problem& pb, doub
           << "completed; mean step = " + fmt(pb.t / steps / limit) + " h^2/2nu";
       csv.end_row();
     } catch (const std::exception& e) {
+      rethrow_if_bench_failure(e);
       failures.add({"viscous_implicit", solver, "nu = " + fmt(nu) + ", " + std::to_string(cells) + " cells", e.what()});
       csv << solver << nu << double(cells) << NAN << NAN << "yes" << NAN << NAN << NAN << std::string("refused: ") + e.what();
       csv.end_row();

@@ -154,6 +154,7 @@ void run_setting(const Context& ctx, FailureLog& failures, CsvWriter& csv, const
     const double shock = reference_name == solver_names().hopf_lax ? shock_error(pb, reference, m.result.v) : NAN;
     write_row(csv, pb, s, reference_name, e, shock, m.seconds, m.result.method_note);
   } catch (const std::exception& e) {  // InputError (outside the range) or RunError (failed)
+    rethrow_if_bench_failure(e);
     failures.add({"work_precision", s.method, pb.name + ", parameter = " + fmt(s.parameter), e.what()});
   }
 }

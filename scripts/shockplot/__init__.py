@@ -4,8 +4,6 @@ draw_all() writes them as PNGs. One module per picture."""
 import json
 import os
 
-import h5py
-
 from .clusters import figure_clusters
 from .common import is_gas, save
 from .distribution import figure_distribution
@@ -49,6 +47,8 @@ def figures(f, summary):
 
 
 def draw_all(out_dir):
+    import h5py  # here, not above: the package's other users (bench charts, shockplot.common) need no h5py
+
     summary = read_summary(out_dir)
     with h5py.File(os.path.join(out_dir, "result.h5"), "r") as f:
         for name, fig in figures(f, summary).items():

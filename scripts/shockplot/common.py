@@ -148,18 +148,24 @@ def write_whole(path, write):
         raise
 
 
+def save_whole(path, write):
+    """write_whole(path, write), a refusal of the system (a full disk) raised as
+    CannotWrite("cannot write PATH: REASON")."""
+    try:
+        write_whole(path, write)
+    except OSError as exc:
+        raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
+
+
 def save(fig, out_dir, name):
     """Writes the figure as out_dir/name, whole or not at all (write_whole); the first
     title names the picture (PNG tEXt Title). CannotWrite when the system refuses
     the file (a full disk)."""
     title = fig._suptitle.get_text() if fig._suptitle is not None else ""
     title = title or next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
-    path = os.path.join(out_dir, name)
     try:
-        write_whole(path, lambda partial: fig.savefig(partial, format=os.path.splitext(name)[1][1:], dpi=110,
-                                                      bbox_inches="tight",
-                                                      metadata={"Title": title} if title else None))
-    except OSError as exc:
-        raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
+        save_whole(os.path.join(out_dir, name),
+                   lambda partial: fig.savefig(partial, format=os.path.splitext(name)[1][1:], dpi=110,
+                                               bbox_inches="tight", metadata={"Title": title} if title else None))
     finally:
         plt.close(fig)

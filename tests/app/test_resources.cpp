@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -179,7 +180,11 @@ TEST(Resources, TheDiskEstimateHoldsAgainstWrittenDirectories) {
        "[initial]\nN = 100000\n[particles]\nr = 0\nsolver = \"hull\"\nt_end = 2\n[output]\nplots = false\n",
        {}},
   };
+  // The plots' share is that of the pictures drawn: without the plotting
+  // script's modules none are, and the case with plots does not apply.
+  const bool plotting = std::system("/usr/bin/python3 -c 'import matplotlib, h5py' 2>/dev/null") == 0;
   for (const auto& c : cases) {
+    if (c.name == "default" && !plotting) continue;
     fs::path file = kDefault;
     if (!c.text.empty()) write_text(file = root / (c.name + ".toml"), c.text);
     const Scene scene = load_scene(file.string(), c.sets);

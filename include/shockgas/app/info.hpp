@@ -4,8 +4,9 @@
 namespace shockgas::app {
 
 // Human-readable listing of a result file: provenance attributes, every dataset
-// with shape, unit and description, and the scene text it was run from.
-// Throws InputError if the file is not a readable HDF5 file.
+// with shape, unit and description, and the scene text it was run from. For an
+// output directory whose manifest lists no result file (`shockgas bench`), one
+// line naming it. Throws InputError if the file is not a readable HDF5 file.
 std::string describe_result(const std::string& path);
 
 // The files of the run directory that holds a result file (the path itself, or

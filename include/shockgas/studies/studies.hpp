@@ -18,4 +18,7 @@ struct StudyOptions {
 // Returns the output directory. Throws InputError for bad options, RunError on failure.
 std::string run_studies(const StudyOptions& options);
 
+// Whether run_studies runs every section (SHOCKGAS_BENCH_SECTIONS unset or empty).
+bool runs_every_section();
+
 }  // namespace shockgas::studies

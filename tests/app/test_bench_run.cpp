@@ -1,0 +1,46 @@
+// `shockgas bench` as a whole (app/bench_run.cpp): its directory is staged and
+// committed with a manifest, as a run's is (the full disk:
+// test_full_disk.cpp), and a bench of some sections re-measures those without
+// losing the others' tables (finding: the staged directory held only the
+// sections measured, and replaced the earlier bench whole).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "child_run.hpp"
+#include "manifest.hpp"
+#include "run_dir_checks.hpp"
+
+namespace shockgas::app {
+namespace {
+
+using namespace testing;
+
+TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0)
+    GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib";
+  const fs::path out = fresh_dir("bench-sections") / "bench";
+  auto bench = [&](const std::string& section) {
+    return run_child({"bench", "-q", "--out", out.string()},
+                     with_env({{"SHOCKGAS_BENCH_SECTIONS", section}}));
+  };
+  const auto [first, why_first] = bench("continuum_stability");
+  ASSERT_EQ(first, 0) << why_first;
+  const std::string cfl_before = read_text(out / "stability_cfl.csv");
+  const auto [second, why_second] = bench("particles_stability");
+  ASSERT_EQ(second, 0) << why_second;
+  EXPECT_EQ(read_text(out / "stability_cfl.csv"), cfl_before);  // kept, not measured again
+  const std::optional<Manifest> m = read_manifest(out);
+  ASSERT_TRUE(m.has_value());
+  EXPECT_EQ(m->scene, "bench");
+  for (const std::string& file :
+       {"stability_cfl.csv", "stability_cfl.png", "stability_collapse.csv", "stability_collapse.png"})
+    EXPECT_NE(m->find(file), nullptr) << file;
+  const auto [checked, said] = run_child({"info", out.string()});
+  EXPECT_EQ(checked, 0) << said;
+}
+
+}  // namespace
+}  // namespace shockgas::app
