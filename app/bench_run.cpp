@@ -32,8 +32,8 @@ void keep_unmeasured_sections(const RunDirectory& dir) {
 
 }  // namespace
 
-BenchOutcome run_bench(const studies::StudyOptions& options) {
-  RunDirectory dir(options.out_dir, "bench", /*force=*/false);
+BenchOutcome run_bench(const studies::StudyOptions& options, bool force) {
+  RunDirectory dir(options.out_dir, "bench", force);
   studies::StudyOptions staged = options;
   staged.out_dir = dir.staging().string();
   keep_unmeasured_sections(dir);

@@ -15,6 +15,7 @@ struct BenchOutcome {
   std::string warnings;  // for stderr: the charts' script failed (the tables are complete)
 };
 
-BenchOutcome run_bench(const studies::StudyOptions& options);
+// force: replace an output directory that holds the results of a scene (run_target.hpp).
+BenchOutcome run_bench(const studies::StudyOptions& options, bool force);
 
 }  // namespace shockgas::app

@@ -166,7 +166,7 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     return kExitOk;
   }
   if (app.got_subcommand("bench")) {
-    const BenchOutcome bench = run_bench(args.bench);
+    const BenchOutcome bench = run_bench(args.bench, args.force);
     std::cerr << bench.warnings;
     std::cout << "bench results in " << bench.dir << "/\n";
     return kExitOk;
@@ -205,6 +205,7 @@ int run_command(int argc, char** argv) {
   auto* bench = app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
   bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)");
   bench->add_flag("--full", args.bench.full, "the record size (long) instead of the quick one");
+  bench->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
   bench->add_flag("--quiet,-q", [&args](std::int64_t) { args.bench.progress = false; }, "no progress output");
   add_tail(app, args);
   try {
