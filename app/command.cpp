@@ -33,6 +33,12 @@ namespace {
 
 constexpr int kExitOk = 0, kExitFailure = 1, kExitBadInput = 2;
 
+// A directory as the messages show it: with one trailing "/" ("out/default/").
+std::string as_directory(std::string dir) {
+  while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
+  return dir == "/" ? dir : dir + "/";
+}
+
 struct Arguments {
   std::string scene_path, out_dir, result_path, realizations, variants, resume;
   std::vector<std::string> shards;
@@ -112,7 +118,7 @@ int do_run(const Arguments& args) {
                           : resumed_scene(args, options);
   const std::string dir = run_scene(scene, options);
   if (!speaks_for_job()) return kExitOk;  // rank 0 writes and speaks for an MPI job
-  std::cout << "results in " << dir << "/\n";
+  std::cout << "results in " << as_directory(dir) << "\n";
   return kExitOk;
 }
 
@@ -139,7 +145,7 @@ int do_tail(Arguments args) {
     args.tail.sizes.push_back(static_cast<std::size_t>(N));
   }
   const std::string out = studies::run_tail_study(args.tail);  // nothing printed before it returns
-  std::cout << "tail results in " << out << "/\n";
+  std::cout << "tail results in " << as_directory(out) << "\n";
   return kExitOk;
 }
 
@@ -148,7 +154,7 @@ int dispatch(const CLI::App& app, const Arguments& args) {
   if (app.got_subcommand("run")) return do_run(args);
   if (app.got_subcommand("merge")) {
     const std::string dir = merge_shards(args.shards, run_options(args));
-    std::cout << "results in " << dir << "/\n";
+    std::cout << "results in " << as_directory(dir) << "\n";
     return kExitOk;
   }
   if (app.got_subcommand("info")) {
@@ -162,13 +168,13 @@ int dispatch(const CLI::App& app, const Arguments& args) {
   }
   if (app.got_subcommand("animate")) {
     animate(args.result_path);
-    std::cout << "animation in " << args.result_path << "/\n";
+    std::cout << "animation in " << as_directory(args.result_path) << "\n";
     return kExitOk;
   }
   if (app.got_subcommand("bench")) {
     const BenchOutcome bench = run_bench(args.bench, args.force);
     std::cerr << bench.warnings;
-    std::cout << "bench results in " << bench.dir << "/\n";
+    std::cout << "bench results in " << as_directory(bench.dir) << "\n";
     return kExitOk;
   }
   if (app.got_subcommand("scene")) {

@@ -87,8 +87,12 @@ std::string read_text(const fs::path& file, std::uintmax_t limit) {
 
 fs::path resolve_target(const fs::path& out) {
   std::error_code ec;
-  const fs::path resolved = fs::weakly_canonical(fs::absolute(out, ec), ec);
-  return ec ? fs::absolute(out).lexically_normal() : resolved;
+  fs::path resolved = fs::weakly_canonical(fs::absolute(out, ec), ec);
+  if (ec) resolved = fs::absolute(out).lexically_normal();
+  // "out/bench/" names out/bench: without the trailing separator its name is
+  // not empty, so the lock and the staging directory go beside it, not into it.
+  while (!resolved.has_filename() && resolved != resolved.root_path()) resolved = resolved.parent_path();
+  return resolved;
 }
 
 void check_target_path(const fs::path& target, const std::string& out) {

@@ -42,5 +42,18 @@ TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
   EXPECT_EQ(checked, 0) << said;
 }
 
+// --out with a trailing "/" names the same directory (finding: the bench put its
+// lock, "..lock", inside it and then refused it as holding a file no run wrote).
+TEST(BenchRun, AnOutputDirectoryWithATrailingSlashIsThatDirectory) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' 2>/dev/null") != 0)
+    GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib";
+  const fs::path out = fresh_dir("bench-slash") / "bench";
+  const auto [code, err] = run_child({"bench", "-q", "--out", out.string() + "/"},
+                                     with_env({{"SHOCKGAS_BENCH_SECTIONS", "continuum_stability"}}));
+  ASSERT_EQ(code, 0) << err;
+  EXPECT_FALSE(fs::exists(out / "..lock"));
+  EXPECT_EQ(run_child({"info", out.string()}).first, 0);
+}
+
 }  // namespace
 }  // namespace shockgas::app
