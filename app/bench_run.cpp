@@ -5,6 +5,7 @@
 
 #include "manifest.hpp"
 #include "plots.hpp"
+#include "result_check.hpp"
 #include "run_directory.hpp"
 #include "shockgas/core/interrupt.hpp"
 
@@ -15,16 +16,28 @@ namespace fs = std::filesystem;
 namespace {
 
 // A bench of some sections only (SHOCKGAS_BENCH_SECTIONS) re-measures those:
-// the earlier bench's files, as its manifest lists them, start the staging
-// directory, so that the other sections' tables stay and every chart is drawn
-// again from the tables as they then are.
+// the earlier bench's tables (CSV and the failure table) start the staging
+// directory, so that the other sections' tables and failures stay, and every
+// chart is drawn again from the tables as they then are. The earlier bench must
+// be as its manifest records: nothing unchecked is carried into the new one.
 void keep_unmeasured_sections(const RunDirectory& dir) {
   if (studies::runs_every_section()) return;
   std::error_code ec;
   if (!fs::is_directory(dir.target(), ec)) return;
   const std::optional<Manifest> earlier = read_manifest(dir.target());
   if (!earlier || earlier->scene != "bench") return;
+  std::string differences;
+  for (const FileState& f : check_listed_files(dir.target(), *earlier, ""))
+    if (!f.intact() && f.problem != "not listed")
+      differences += (differences.empty() ? "" : ", ") + f.path + " " + f.problem;
+  if (!differences.empty())
+    throw result_problem(dir.target().string(), "not as its manifest.json records",
+                         differences +
+                             "; a bench of some sections keeps the others' tables only from an intact "
+                             "bench: run every section");
   for (const ManifestEntry& e : earlier->files) {
+    const std::string kind = fs::path(e.path).extension().string();
+    if (kind != ".csv" && kind != ".md") continue;
     fs::create_directories((dir.staging() / e.path).parent_path());
     fs::copy_file(dir.target() / e.path, dir.staging() / e.path);
   }
@@ -33,6 +46,7 @@ void keep_unmeasured_sections(const RunDirectory& dir) {
 }  // namespace
 
 BenchOutcome run_bench(const studies::StudyOptions& options, bool force) {
+  studies::runs_every_section();  // a section that does not exist is refused before anything is made
   RunDirectory dir(options.out_dir, "bench", force);
   studies::StudyOptions staged = options;
   staged.out_dir = dir.staging().string();

@@ -131,6 +131,20 @@ std::optional<std::string> scene_of_results(const fs::path& dir) {
   return std::nullopt;
 }
 
+namespace {
+
+// The name of the scene whose interrupted run left its checkpoint in dir, or
+// "" where none can be read.
+std::string interrupted_scene(const fs::path& dir) {
+  try {
+    return checkpoint_scene(read_checkpoint(dir), nullptr).name;
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
+}  // namespace
+
 void check_target_contents(const fs::path& target, const std::string& out, const std::string& scene, bool force) {
   std::error_code ec;
   if (!fs::is_directory(target, ec) || fs::is_empty(target, ec)) return;
@@ -143,8 +157,17 @@ void check_target_contents(const fs::path& target, const std::string& out, const
   const auto in_progress = [](const fs::directory_entry& e) {
     return run_in_progress_file(e.path().filename());
   };
-  if (!theirs && std::all_of(fs::directory_iterator(target, ec), fs::directory_iterator(), in_progress))
-    return;  // only the checkpoint and state files of an interrupted run (checkpoint.hpp, state_file.hpp)
+  if (!theirs && std::all_of(fs::directory_iterator(target, ec), fs::directory_iterator(), in_progress)) {
+    // Only the checkpoint and state files of an interrupted run (checkpoint.hpp,
+    // state_file.hpp), or the state files this run writes before its directory
+    // is made: the same scene may start afresh over them; another command or
+    // scene would throw the interrupted run's work away.
+    if (!fs::exists(checkpoint_path(target), ec) || interrupted_scene(target) == scene) return;
+    refuse(out,
+           "a new or empty directory, or one that holds this scene's results (this one holds an interrupted "
+           "run's checkpoint" +
+               resume_hint(target) + "): give --force to replace it, or another --out");
+  }
   refuse(out, "a new or empty directory, or one that holds this scene's results (this one holds " +
                   (theirs ? "the results of scene \"" + *theirs + "\"" : std::string("results of an unknown scene")) +
                   "): give --force to replace them, or another --out");

@@ -73,11 +73,11 @@ void rethrow_if_bench_failure(const std::exception& e) {
 }
 
 void FailureLog::write(const Context& ctx) const {
-  CsvWriter csv(ctx.path("failures.csv"), {"section", "method", "parameter", "what"});
+  CsvWriter csv(ctx.path("failures.csv"), {"bench_section", "section", "method", "parameter", "what"});
   std::ofstream md(ctx.path("failures.md"));
   md << "# Failures detected by shockgas bench\n\n| section | method | parameter | what happened |\n|---|---|---|---|\n";
-  for (const auto& f : failures_) {
-    csv << f.section << f.method << f.parameter << f.what;
+  for (const auto& [bench_section, f] : failures_) {
+    csv << bench_section << f.section << f.method << f.parameter << f.what;
     csv.end_row();
     md << "| " << f.section << " | " << f.method << " | " << f.parameter << " | " << f.what << " |\n";
   }
@@ -86,6 +86,40 @@ void FailureLog::write(const Context& ctx) const {
   if (!md)
     throw TableWriteFailed("bench: cannot write " + ctx.path("failures.md") + ": " +
                            (errno ? std::strerror(errno) : "write failed"));
+}
+
+namespace {
+
+// The cells of one line as CsvWriter writes them: quoted where they hold a
+// comma or a quote, a quote doubled inside.
+std::vector<std::string> csv_cells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+      cells.back() += '"', ++i;
+    else if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      cells.emplace_back();
+    else
+      cells.back() += c;
+  }
+  return cells;
+}
+
+}  // namespace
+
+void FailureLog::keep_earlier(const std::string& path, const std::vector<std::string>& measured) {
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line) || csv_cells(line).front() != "bench_section") return;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> c = csv_cells(line);
+    if (c.size() != 5 || std::find(measured.begin(), measured.end(), c[0]) != measured.end()) continue;
+    failures_.push_back({c[0], {c[1], c[2], c[3], c[4]}});
+  }
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

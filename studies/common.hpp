@@ -65,14 +65,25 @@ struct Failure {
 };
 
 // Collects failures from every section; written as failures.csv and failures.md.
+// failures.csv's first column names the bench section (run_studies.cpp) a
+// failure was found in, so that a bench of some sections keeps the others'.
 class FailureLog {
  public:
-  void add(Failure f) { failures_.push_back(std::move(f)); }
-  const std::vector<Failure>& all() const { return failures_; }
+  void begin_section(std::string name) { section_ = std::move(name); }
+  void add(Failure f) { failures_.push_back({section_, std::move(f)}); }
+  std::size_t size() const { return failures_.size(); }
   void write(const Context& ctx) const;
+  // The failures of an earlier failures.csv at path found in sections other
+  // than `measured`, added as they were (none from a file without the column).
+  void keep_earlier(const std::string& path, const std::vector<std::string>& measured);
 
  private:
-  std::vector<Failure> failures_;
+  struct Found {
+    std::string bench_section;
+    Failure failure;
+  };
+  std::string section_;
+  std::vector<Found> failures_;
 };
 
 // Wall-clock seconds of fn(), median over `runs` calls (>= 1).

@@ -7,6 +7,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "child_run.hpp"
@@ -29,9 +31,17 @@ TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
   const auto [first, why_first] = bench("continuum_stability");
   ASSERT_EQ(first, 0) << why_first;
   const std::string cfl_before = read_text(out / "stability_cfl.csv");
+  auto failures_of = [&](const std::string& section) {  // rows of failures.csv found in that section
+    std::size_t n = 0;
+    std::istringstream in(read_text(out / "failures.csv"));
+    for (std::string line; std::getline(in, line);) n += line.rfind(section + ",", 0) == 0;
+    return n;
+  };
+  const std::size_t stability_failures = failures_of("continuum_stability");
   const auto [second, why_second] = bench("particles_stability");
   ASSERT_EQ(second, 0) << why_second;
   EXPECT_EQ(read_text(out / "stability_cfl.csv"), cfl_before);  // kept, not measured again
+  EXPECT_EQ(failures_of("continuum_stability"), stability_failures);  // and its failures with it
   const std::optional<Manifest> m = read_manifest(out);
   ASSERT_TRUE(m.has_value());
   EXPECT_EQ(m->scene, "bench");
@@ -40,6 +50,27 @@ TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
     EXPECT_NE(m->find(file), nullptr) << file;
   const auto [checked, said] = run_child({"info", out.string()});
   EXPECT_EQ(checked, 0) << said;
+
+  // Nothing unchecked is carried: a damaged earlier table stops a bench of
+  // some sections before any work, naming it.
+  { std::ofstream(out / "stability_cfl.csv", std::ios::app) << "junk\n"; }
+  const auto [refused, why] = bench("particles_stability");
+  EXPECT_EQ(refused, 2) << why;
+  EXPECT_NE(why.find("stability_cfl.csv damaged"), std::string::npos) << why;
+}
+
+// A section that does not exist is refused before anything is made (finding:
+// it measured nothing, exit 0, and emptied the failure table).
+TEST(BenchRun, ASectionThatDoesNotExistIsRefused) {
+  const fs::path out = fresh_dir("bench-no-section") / "bench";
+  for (const std::string list : {"bogus", ",", "CONTINUUM_STABILITY"}) {
+    const auto [code, err] =
+        run_child({"bench", "-q", "--out", out.string()}, with_env({{"SHOCKGAS_BENCH_SECTIONS", list}}));
+    EXPECT_EQ(code, 2) << list << "\n" << err;
+    EXPECT_NE(err.find("SHOCKGAS_BENCH_SECTIONS = \"" + list + "\" is not allowed"), std::string::npos)
+        << err;
+    EXPECT_FALSE(fs::exists(out));
+  }
 }
 
 // --out with a trailing "/" names the same directory (finding: the bench put its

@@ -125,6 +125,21 @@ TEST_F(Checkpoints, ARunThatEndsLeavesNoCheckpoint) {
   EXPECT_FALSE(fs::exists(checkpoint_path(path("run"))));
 }
 
+// A directory that holds only an interrupted run's checkpoint is refused to
+// another scene (finding: any command replaced it, and the work was lost
+// without a word); the same scene may start afresh over it.
+TEST_F(Checkpoints, AnotherScenesRunDoesNotReplaceAnInterruptedRun) {
+  fs::create_directories(path("run"));
+  interrupted_run("run", {0, 2});
+  std::ofstream(path("other.toml")) << "[scene]\nname = \"other\"\n" << kScene;
+  EXPECT_EQ(command({"run", path("other.toml"), "--out", path("run"), "-q"}), 2) << said_;
+  EXPECT_NE(said_.find("holds an interrupted run's checkpoint; continue with: shockgas run --resume"),
+            std::string::npos)
+      << said_;
+  EXPECT_TRUE(fs::exists(checkpoint_path(path("run"))));
+  EXPECT_EQ(command({"run", path("scene.toml"), "--out", path("run"), "-q"}), 0) << said_;
+}
+
 TEST_F(Checkpoints, ADamagedCheckpointIsRefusedAndKept) {
   interrupted_run("run", {0, 1});
   std::string bytes = bytes_of(checkpoint_path(path("run")));

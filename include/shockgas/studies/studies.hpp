@@ -18,7 +18,8 @@ struct StudyOptions {
 // Returns the output directory. Throws InputError for bad options, RunError on failure.
 std::string run_studies(const StudyOptions& options);
 
-// Whether run_studies runs every section (SHOCKGAS_BENCH_SECTIONS unset or empty).
+// Whether run_studies runs every section (SHOCKGAS_BENCH_SECTIONS unset, empty
+// or naming all four); InputError if it names something that is not a section.
 bool runs_every_section();
 
 }  // namespace shockgas::studies
