@@ -9,6 +9,7 @@
 #include "plots.hpp"
 #include "report_html.hpp"
 #include "result_check.hpp"
+#include "run_target.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -33,13 +34,11 @@ void animate(const std::string& dir) {
   // The new files and the new report.html join the run's manifest, and a
   // sweep variant's files (its manifest among them) the sweep's.
   if (const auto manifest = read_manifest(dir)) write_manifest(dir, manifest->scene);
-  const std::filesystem::path variant = std::filesystem::absolute(dir).lexically_normal();
-  const std::filesystem::path name =
-      variant.has_filename() ? variant.filename() : variant.parent_path().filename();
-  const std::filesystem::path sweep =
-      variant.has_filename() ? variant.parent_path() : variant.parent_path().parent_path();
-  if (const auto outer = read_manifest(sweep); outer && outer->find(name.string() + "/" + kManifestFile))
-    update_manifest(sweep, name.string());
+  const std::filesystem::path variant = resolve_target(dir);
+  const std::string name = variant.filename().string();
+  if (const auto sweep = read_manifest(variant.parent_path());
+      sweep && sweep->find(name + "/" + kManifestFile))
+    update_manifest(variant.parent_path(), name);
 }
 
 }  // namespace shockgas::app

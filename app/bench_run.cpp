@@ -26,10 +26,7 @@ void keep_unmeasured_sections(const RunDirectory& dir) {
   if (!fs::is_directory(dir.target(), ec)) return;
   const std::optional<Manifest> earlier = read_manifest(dir.target());
   if (!earlier || earlier->scene != "bench") return;
-  std::string differences;
-  for (const FileState& f : check_listed_files(dir.target(), *earlier, ""))
-    if (!f.intact() && f.problem != "not listed")
-      differences += (differences.empty() ? "" : ", ") + f.path + " " + f.problem;
+  const std::string differences = differences_of(check_listed_files(dir.target(), *earlier, ""));
   if (!differences.empty())
     throw result_problem(dir.target().string(), "not as its manifest.json records",
                          differences +

@@ -141,14 +141,14 @@ RunFilesCheck check_run_files(const std::string& path) {
   const fs::path checked = manifest->find(file.filename().string()) ? file.filename() : fs::path();
   const std::vector<FileState> states = check_listed_files(dir, *manifest, checked);
   std::size_t intact = 0, wrong = 0;
-  std::ostringstream listing, differences;
+  std::ostringstream listing;
   for (const FileState& f : states) {
     intact += f.intact();
     if (f.intact()) continue;
     listing << "  " << f.path << ": " << f.problem << (f.detail.empty() ? "" : " (" + f.detail + ")") << "\n";
-    if (f.problem == "not listed") continue;
-    differences << (wrong++ ? ", " : "") << f.path << " " << f.problem;
+    wrong += f.problem != "not listed";
   }
+  std::string differences = differences_of(states);
   const std::size_t listed = manifest->files.size();
   std::ostringstream head;
   head << "\nfiles of " << dir.string() << " (as " << kManifestFile << " lists them, scene \""
@@ -157,8 +157,10 @@ RunFilesCheck check_run_files(const std::string& path) {
     head << "all " << listed << " intact (size and SHA-256 as recorded)\n";
   else
     head << intact << " of " << listed << " intact\n";
-  if (wrong) differences << " (" << wrong << " of the " << listed << " files " << kManifestFile << " lists)";
-  return {head.str() + listing.str(), differences.str(), dir.string()};
+  if (wrong)
+    differences += " (" + std::to_string(wrong) + " of the " + std::to_string(listed) + " files " +
+                   kManifestFile + " lists)";
+  return {head.str() + listing.str(), differences, dir.string()};
 }
 
 std::string describe_layout() { return output_layout_markdown(); }

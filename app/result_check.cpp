@@ -11,8 +11,8 @@
 #include "checkpoint.hpp"
 #include "durable_file.hpp"
 #include "manifest.hpp"
+#include "run_target.hpp"
 #include "sha256.hpp"
-#include "state_file.hpp"
 
 namespace shockgas::app {
 
@@ -133,11 +133,18 @@ std::vector<FileState> check_listed_files(const fs::path& dir, const Manifest& m
       states.push_back({relative, "not listed", "a symbolic link, which no run writes"});
     else if (it->is_regular_file(ec))
       states.push_back({relative, "not listed",
-                        is_checkpoint_file(relative) || is_state_file(it->path().filename())
-                            ? "an interrupted run's checkpoint: shockgas run --resume " + dir.string()
-                            : "not written by the run"});
+                        run_in_progress_file(relative) ? "an interrupted run's checkpoint" + resume_hint(dir)
+                                                       : "not written by the run"});
   }
   return states;
+}
+
+std::string differences_of(const std::vector<FileState>& states) {
+  std::string text;
+  for (const FileState& f : states)
+    if (!f.intact() && f.problem != "not listed")
+      text += (text.empty() ? "" : ", ") + f.path + " " + f.problem;
+  return text;
 }
 
 std::string unverified_warning(const fs::path& file) {

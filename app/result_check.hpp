@@ -50,6 +50,10 @@ struct FileState {
 std::vector<FileState> check_listed_files(const std::filesystem::path& dir, const Manifest& manifest,
                                           const std::filesystem::path& skip);
 
+// "summary.json damaged, fields.png missing": the listed files that are not as
+// recorded ("" when all are; files not listed are no difference).
+std::string differences_of(const std::vector<FileState>& states);
+
 // The warning a reader gives for Verification::no_manifest.
 std::string unverified_warning(const std::filesystem::path& file);
 

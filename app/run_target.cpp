@@ -52,13 +52,6 @@ bool legacy_run_file(const fs::path& relative) {
   return false;
 }
 
-// What a run keeps in its output directory while it computes: the checkpoint
-// and the running realizations' saved states (with the temporary files of
-// killed writes), realization 0's state files.
-bool run_in_progress_file(const fs::path& relative) {
-  return !relative.has_parent_path() && (is_checkpoint_file(relative) || is_state_file(relative));
-}
-
 // The first entry under dir that is not a result of a run: not listed in the
 // manifest (or, without one, not a file an older version wrote).
 std::optional<std::string> foreign_entry(const fs::path& dir, const std::optional<Manifest>& manifest) {
@@ -84,6 +77,10 @@ std::string read_text(const fs::path& file, std::uintmax_t limit) {
 }
 
 }  // namespace
+
+bool run_in_progress_file(const fs::path& relative) {
+  return !relative.has_parent_path() && (is_checkpoint_file(relative) || is_state_file(relative));
+}
 
 fs::path resolve_target(const fs::path& out) {
   std::error_code ec;

@@ -24,6 +24,11 @@ void check_target_path(const std::filesystem::path& target, const std::string& o
 void check_target_contents(const std::filesystem::path& target, const std::string& out, const std::string& scene,
                            bool force);
 
+// What a run keeps in its output directory while it computes (relative: a
+// path in it): the checkpoint and the running realizations' saved states (with
+// the temporary files of killed writes), realization 0's state files.
+bool run_in_progress_file(const std::filesystem::path& relative);
+
 // The scene whose results dir holds: from its manifest.json, or the
 // summary.json of an older version; nullopt if neither names one.
 std::optional<std::string> scene_of_results(const std::filesystem::path& dir);

@@ -23,11 +23,22 @@ void Context::log(const std::string& section, const std::string& text) const {
   if (progress) std::cerr << "bench: " << section << ": " << text << std::endl;
 }
 
+namespace {
+
+// The failure to write a table at path, with the system's reason (errno,
+// cleared before the write).
+[[noreturn]] void cannot_write(const std::string& path) {
+  throw TableWriteFailed("bench: cannot write " + path + ": " +
+                         (errno ? std::strerror(errno) : "write failed"));
+}
+
+}  // namespace
+
 std::string Context::path(const std::string& file) const { return out_dir + "/" + file; }
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& columns)
     : out_(path), path_(path), columns_(columns.size()) {
-  if (!out_) throw TableWriteFailed("bench: cannot write " + path + ": " + std::strerror(errno));
+  if (!out_) cannot_write(path);
   for (const auto& c : columns) *this << c;
   end_row();
 }
@@ -63,9 +74,7 @@ void CsvWriter::end_row() {
   errno = 0;
   out_ << '\n' << std::flush;
   cells_ = 0;
-  if (!out_)
-    throw TableWriteFailed("bench: cannot write " + path_ + ": " +
-                           (errno ? std::strerror(errno) : "write failed"));
+  if (!out_) cannot_write(path_);
 }
 
 void rethrow_if_bench_failure(const std::exception& e) {
@@ -83,9 +92,7 @@ void FailureLog::write(const Context& ctx) const {
   }
   errno = 0;
   md.flush();
-  if (!md)
-    throw TableWriteFailed("bench: cannot write " + ctx.path("failures.md") + ": " +
-                           (errno ? std::strerror(errno) : "write failed"));
+  if (!md) cannot_write(ctx.path("failures.md"));
 }
 
 namespace {
