@@ -33,12 +33,14 @@ void animate(const std::string& dir) {
   write_report_html(dir);
   // The new files and the new report.html join the run's manifest, and a
   // sweep variant's files (its manifest among them) the sweep's.
-  if (const auto manifest = read_manifest(dir)) write_manifest(dir, manifest->scene);
+  const auto manifest = read_manifest(dir);
+  if (!manifest) return;
+  const Manifest written = write_manifest(dir, manifest->scene);
   const std::filesystem::path variant = resolve_target(dir);
   const std::string name = variant.filename().string();
   if (const auto sweep = read_manifest(variant.parent_path());
       sweep && sweep->find(name + "/" + kManifestFile))
-    update_manifest(variant.parent_path(), name);
+    update_manifest(variant.parent_path(), name, written);
 }
 
 }  // namespace shockgas::app

@@ -67,10 +67,10 @@ const ManifestEntry* Manifest::find(const std::string& relative_path) const {
 
 namespace {
 
-// Every regular file under dir / sub (links not followed, none listed), with
-// its path relative to dir, the manifest of dir itself excepted.
-void add_files(const fs::path& dir, const fs::path& sub, std::vector<ManifestEntry>& files) {
-  for (const auto& entry : fs::recursive_directory_iterator(dir / sub)) {
+// Every regular file under dir (links not followed, none listed), with its
+// path relative to dir, the manifest of dir itself excepted.
+void add_files(const fs::path& dir, std::vector<ManifestEntry>& files) {
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
     if (entry.is_symlink() || !entry.is_regular_file() || entry.path() == dir / kManifestFile) continue;
     files.push_back({entry.path().lexically_relative(dir).generic_string(), entry.file_size(),
                      sha256_of_file(entry.path())});
@@ -94,17 +94,19 @@ void write_manifest_file(const fs::path& dir, Manifest& m) {
 Manifest write_manifest(const fs::path& dir, const std::string& scene) {
   Manifest m;
   m.scene = scene;
-  add_files(dir, "", m.files);
+  add_files(dir, m.files);
   write_manifest_file(dir, m);
   return m;
 }
 
-void update_manifest(const fs::path& dir, const std::string& sub) {
+void update_manifest(const fs::path& dir, const std::string& sub, const Manifest& of_sub) {
   std::optional<Manifest> m = read_manifest(dir);
   if (!m) return;
   const std::string prefix = sub + "/";
   std::erase_if(m->files, [&](const ManifestEntry& e) { return e.path.rfind(prefix, 0) == 0; });
-  add_files(dir, sub, m->files);
+  for (const ManifestEntry& e : of_sub.files) m->files.push_back({prefix + e.path, e.bytes, e.sha256});
+  const fs::path own = dir / sub / kManifestFile;  // the one file of sub its manifest does not list
+  m->files.push_back({prefix + kManifestFile, fs::file_size(own), sha256_of_file(own)});
   write_manifest_file(dir, *m);
 }
 

@@ -34,9 +34,11 @@ struct Manifest {
 Manifest write_manifest(const std::filesystem::path& dir, const std::string& scene);
 
 // The entries of dir's manifest for the files under dir/sub (a sweep's
-// variant) hashed again, the others as they were: after a command changed the
-// files of a variant (`shockgas animate`). Nothing where dir has no manifest.
-void update_manifest(const std::filesystem::path& dir, const std::string& sub);
+// variant) replaced by those of of_sub, the manifest just written for dir/sub
+// (its files are not hashed again), and dir/sub/manifest.json itself; the
+// others as they were: after a command changed the files of a variant
+// (`shockgas animate`). Nothing where dir has no manifest.
+void update_manifest(const std::filesystem::path& dir, const std::string& sub, const Manifest& of_sub);
 
 // The manifest of dir, or nullopt where dir has none. A manifest.json that is
 // not one shockgas wrote (unreadable, not JSON, wrong fields, a path that is

@@ -45,7 +45,7 @@ TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
   const std::optional<Manifest> m = read_manifest(out);
   ASSERT_TRUE(m.has_value());
   EXPECT_EQ(m->scene, "bench");
-  for (const std::string& file :
+  for (const std::string file :
        {"stability_cfl.csv", "stability_cfl.png", "stability_collapse.csv", "stability_collapse.png"})
     EXPECT_NE(m->find(file), nullptr) << file;
   const auto [checked, said] = run_child({"info", out.string()});
