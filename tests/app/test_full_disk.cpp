@@ -209,8 +209,7 @@ TEST(FullDisk, ABenchChartThatCannotBeWrittenLeavesNoPartOfIt) {
       ("/usr/bin/python3 '" + script + "' '" + disk.dir().string() + "' 2>'" + err.string() + "'").c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 4);
-  std::ifstream in(err);
-  const std::string said((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string said = read_text(err);
   EXPECT_EQ(said.rfind("plot_bench.py: cannot write " + (disk.dir() / "stability_cfl.png").string() +
                            ": No space left on device",
                        0),
@@ -234,8 +233,7 @@ TEST(FullDisk, ABenchThatFillsTheDiskLeavesTheEarlierBenchAsItWas) {
   const Options one_section = with_env({{"SHOCKGAS_BENCH_SECTIONS", "continuum_stability"}});
   const auto [made, why] = run_child({"bench", "-q", "--out", out.string()}, one_section);
   ASSERT_EQ(made, 0) << why;
-  std::ifstream in(out / kManifestFile);
-  const std::string before((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string before = read_text(out / kManifestFile);
   EXPECT_NE(before.find("\"stability_cfl.png\""), std::string::npos) << before;
   disk.fill(0);
   const auto [code, err] = run_child({"bench", "-q", "--out", out.string()}, one_section);
@@ -244,8 +242,7 @@ TEST(FullDisk, ABenchThatFillsTheDiskLeavesTheEarlierBenchAsItWas) {
   EXPECT_NE(err.find("No space left on device"), std::string::npos) << err;
   EXPECT_NE(err.find("(the results in the output directory are as they were)"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
-  std::ifstream again(out / kManifestFile);
-  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>()), before);
+  EXPECT_EQ(read_text(out / kManifestFile), before);
   const auto [checked, said] = run_child({"info", out.string()});
   EXPECT_EQ(checked, 0) << said;
   EXPECT_TRUE(leftovers(out).empty()) << leftovers(out).front();

@@ -197,8 +197,7 @@ TEST(Integrity, AManifestShockgasCannotHaveWrittenIsRefused) {
   };
   for (std::size_t k = 0; k < edits.size(); ++k) {
     const fs::path run = copy_of_run("manifest-edit-" + std::to_string(k));
-    std::ifstream in(run / kManifestFile);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = read_text(run / kManifestFile);
     const auto at = text.find(edits[k].first);
     ASSERT_NE(at, std::string::npos);
     text.replace(at, edits[k].first.size(), edits[k].second);
@@ -208,8 +207,7 @@ TEST(Integrity, AManifestShockgasCannotHaveWrittenIsRefused) {
     EXPECT_NE(err.find("manifest.json: not a manifest.json written by shockgas: "), std::string::npos) << err;
   }
   const fs::path run = copy_of_run("manifest-digest");
-  std::ifstream in(run / kManifestFile);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = read_text(run / kManifestFile);
   const auto at = text.find("\"sha256\": \"");
   ASSERT_NE(at, std::string::npos);
   text.replace(at + 11, 3, "XYZ");

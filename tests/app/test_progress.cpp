@@ -145,8 +145,7 @@ TEST(Progress, ARunTakenUpAtACheckpointCountsItsRateFromThere) {
   dup2(saved, STDERR_FILENO);
   close(saved);
   std::fclose(file);
-  std::ifstream in(log);
-  const std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string err = read_text(log);
   std::smatch m;
   ASSERT_TRUE(std::regex_search(err, m, std::regex(R"(t = 9960  ([0-9.e+-]+) time units/s)"))) << err;
   const double rate = std::stod(m[1].str());
