@@ -53,17 +53,31 @@ bool legacy_run_file(const fs::path& relative) {
 }
 
 // The first entry under dir that is not a result of a run: not listed in the
-// manifest (or, without one, not a file an older version wrote).
+// manifest (or, without one, not a file an older version wrote). Entries that
+// vanish while they are listed are skipped: in an MPI job every rank checks the
+// directory while rank 0 may already write a checkpoint through a temporary
+// file (checkpoint.bin.partial-PID) and rename it. Paths are taken lexically,
+// with no call that resolves a name (fs::relative would), so a name gone
+// between the listing and the check cannot fail the run.
 std::optional<std::string> foreign_entry(const fs::path& dir, const std::optional<Manifest>& manifest) {
-  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
-    const fs::path relative = fs::relative(entry.path(), dir);
-    if (entry.is_directory() && !entry.is_symlink()) continue;
-    const bool ours = !entry.is_regular_file() || entry.is_symlink() ? false
+  std::error_code ec;
+  fs::recursive_directory_iterator it(dir, ec), end;
+  for (; !ec && it != end; it.increment(ec)) {
+    const auto type = it->symlink_status(ec).type();
+    if (ec || type == fs::file_type::not_found) {
+      ec.clear();
+      continue;
+    }
+    if (type == fs::file_type::directory) continue;
+    const fs::path relative = it->path().lexically_relative(dir);
+    const bool ours = type != fs::file_type::regular   ? false
                       : run_in_progress_file(relative) ? true  // an interrupted run's, to resume
                       : manifest ? relative == kManifestFile || manifest->find(relative.generic_string())
                                  : legacy_run_file(relative);
     if (!ours) return relative.generic_string();
   }
+  if (ec && ec != std::errc::no_such_file_or_directory)
+    throw fs::filesystem_error("cannot list the output directory", dir, ec);
   return std::nullopt;
 }
 

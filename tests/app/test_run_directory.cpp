@@ -7,13 +7,17 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
 #include "run_directory.hpp"
+#include "run_target.hpp"
 #include "shockgas/app/command.hpp"
 
 namespace shockgas::app {
@@ -159,6 +163,34 @@ TEST(RunDirectory, ALockKeepsASecondRunOut) {
   }
   EXPECT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 0);
   EXPECT_TRUE(leftovers(d.out).empty());
+}
+
+// In an MPI job every rank checks the output directory while rank 0 may
+// already write its checkpoint through a temporary file and rename it (the
+// finding: rank 1 failed the job with "cannot make canonical path" for a
+// checkpoint.bin.partial-PID that was gone by the time it was resolved).
+TEST(RunDirectory, AFileRenamedWhileTheDirectoryIsCheckedDoesNotFailTheCheck) {
+  const Dirs d = setup("rundir-vanishing");
+  fs::create_directories(d.out);
+  std::atomic<bool> done{false};
+  std::thread writer([&] {
+    const fs::path partial = d.out / "checkpoint.bin.partial-4242";
+    while (!done) {
+      std::ofstream(partial) << "a checkpoint being written";
+      std::error_code ec;
+      fs::rename(partial, d.out / "checkpoint.bin", ec);
+    }
+  });
+  int failures = 0;
+  std::string first;
+  for (int i = 0; i < 10000; ++i) try {
+      check_target_contents(d.out, d.out.string(), "alpha", /*force=*/true);
+    } catch (const std::exception& e) {
+      if (failures++ == 0) first = e.what();
+    }
+  done = true;
+  writer.join();
+  EXPECT_EQ(failures, 0) << first;
 }
 
 TEST(RunDirectory, WhatKilledRunsLeftIsClearedByTheNextRun) {
