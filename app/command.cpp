@@ -17,6 +17,7 @@
 #include "merge.hpp"
 #include "plots.hpp"
 #include "result_check.hpp"
+#include "run_directory.hpp"
 #include "shockgas/app/info.hpp"
 #include "shockgas/app/run.hpp"
 #include "shockgas/app/scene.hpp"
@@ -246,7 +247,7 @@ int run_command(int argc, char** argv) {
     report_for_job("shockgas: run failed: out of memory" + unchanged + "\n");
     return kExitFailure;
   } catch (const std::exception& e) {
-    report_for_job(std::string("shockgas: run failed: ") + e.what() + unchanged + "\n");
+    report_for_job("shockgas: run failed: " + with_staging_as_target(e.what()) + unchanged + "\n");
     return kExitFailure;
   }
 }

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <regex>
 
 #include "durable_file.hpp"
 #include "fault.hpp"
@@ -32,6 +33,7 @@ bool starts_with(const std::string& s, const std::string& prefix) { return s.rfi
 }
 
 fs::path make_staging(const fs::path& target) {
+  // The pattern below (with_staging_as_target) reads this name back.
   std::string name = (target.parent_path() / hidden(target, "tmp-")).string() + std::to_string(getpid()) + "-XXXXXX";
   if (!mkdtemp(name.data())) refuse_unwritable(target, std::strerror(errno));
   const mode_t mask = umask(0);  // mkdtemp makes it 0700; the results get the usual mode
@@ -186,6 +188,12 @@ std::vector<std::string> clear_leftovers(const fs::path& target) {
     done.push_back("removed " + dir.string() + ", the previous results of a killed run, replaced since");
   }
   return done;
+}
+
+std::string with_staging_as_target(const std::string& message) {
+  // "/." NAME ".tmp-" PID "-" and mkdtemp's six letters or digits (make_staging).
+  static const std::regex staging(R"(/\.([^/]+)\.tmp-[0-9]+-[A-Za-z0-9]{6}(?=/|$|[^A-Za-z0-9]))");
+  return std::regex_replace(message, staging, "/$1");
 }
 
 }  // namespace shockgas::app

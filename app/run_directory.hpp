@@ -76,6 +76,12 @@ class RunDirectory {
   bool committed_ = false;
 };
 
+// message with each path into a staging directory written as the path into its
+// target ("/x/.D.tmp-812-Ab3dEf/result.h5" -> "/x/D/result.h5"): a failure is
+// read after the staging directory has been removed, and names the file the
+// user asked for.
+std::string with_staging_as_target(const std::string& message);
+
 // How a finished staging directory replaces an existing target: one atomic
 // exchange, or (file systems without RENAME_EXCHANGE) the target moved aside
 // to `.NAME.old-*`, the staging directory renamed, the old one removed.

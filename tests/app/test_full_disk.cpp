@@ -94,6 +94,9 @@ TEST(FullDisk, ADiskThatFillsDuringTheRunLeavesThePreviousResults) {
   EXPECT_NE(err.find("shockgas: run failed: "), std::string::npos) << err;
   EXPECT_NE(err.find("HDF5: H5"), std::string::npos) << err;
   EXPECT_NE(err.find("result.h5"), std::string::npos) << err;  // the file, not only the dataset
+  // named where the user looks for it, not in the staging directory, gone by now
+  EXPECT_NE(err.find((fs::weakly_canonical(out) / "result.h5").string()), std::string::npos) << err;
+  EXPECT_EQ(err.find(".tmp-"), std::string::npos) << err;
   EXPECT_NE(err.find("(No space left on device)"), std::string::npos) << err;
   EXPECT_NE(run.err().find("the results in the output directory are as they were"), std::string::npos) << run.err();
   EXPECT_EQ(whole_run(out, "alpha"), "");

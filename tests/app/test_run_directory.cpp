@@ -193,6 +193,20 @@ TEST(RunDirectory, AFileRenamedWhileTheDirectoryIsCheckedDoesNotFailTheCheck) {
   EXPECT_EQ(failures, 0) << first;
 }
 
+TEST(RunDirectory, AFailureNamesTheFileInTheTargetNotInTheStagingDirectory) {
+  const Dirs d = setup("rundir-message");
+  RunDirectory dir(d.out, "alpha", false);
+  const std::string message = "H5Fcreate failed on " + (dir.staging() / "v1" / "result.h5").string() +
+                              " (No space left on device); cannot write " +
+                              (dir.staging() / "a.png").string();
+  const std::string target = fs::weakly_canonical(d.out).string();
+  EXPECT_EQ(with_staging_as_target(message), "H5Fcreate failed on " + target +
+                                                 "/v1/result.h5 (No space left on device); cannot write " +
+                                                 target + "/a.png");
+  EXPECT_EQ(with_staging_as_target("cannot write /x/.run.tmp-12/result.h5"),
+            "cannot write /x/.run.tmp-12/result.h5");
+}
+
 TEST(RunDirectory, WhatKilledRunsLeftIsClearedByTheNextRun) {
   const Dirs d = setup("rundir-leftovers");
   ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 0);
