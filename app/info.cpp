@@ -135,6 +135,8 @@ RunFilesCheck check_run_files(const std::string& path) {
   std::error_code ec;
   const fs::path file = fs::is_directory(path, ec) ? fs::path(path) / "result.h5" : fs::path(path);
   const fs::path dir = file.parent_path().empty() ? "." : file.parent_path();
+  // `info result.h5` in the run's own directory: named by its path, not as "."
+  const fs::path shown = file.parent_path().empty() ? fs::current_path(ec) : dir;
   const auto manifest = read_manifest(dir);
   if (!manifest) return {};
   // The result file itself was checked before it was described, if listed.
@@ -151,7 +153,7 @@ RunFilesCheck check_run_files(const std::string& path) {
   std::string differences = differences_of(states);
   const std::size_t listed = manifest->files.size();
   std::ostringstream head;
-  head << "\nfiles of " << dir.string() << " (as " << kManifestFile << " lists them, scene \""
+  head << "\nfiles of " << shown.string() << " (as " << kManifestFile << " lists them, scene \""
        << manifest->scene << "\"): ";
   if (wrong == 0)
     head << "all " << listed << " intact (size and SHA-256 as recorded)\n";
@@ -160,7 +162,7 @@ RunFilesCheck check_run_files(const std::string& path) {
   if (wrong)
     differences += " (" + std::to_string(wrong) + " of the " + std::to_string(listed) + " files " +
                    kManifestFile + " lists)";
-  return {head.str() + listing.str(), differences, dir.string()};
+  return {head.str() + listing.str(), differences, shown.string()};
 }
 
 std::string describe_layout() { return output_layout_markdown(); }

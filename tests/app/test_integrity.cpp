@@ -161,6 +161,16 @@ TEST(Integrity, InfoChecksEveryFileTheManifestLists) {
             std::string::npos)
       << after.listing;
 
+  {  // `info result.h5` in the run's own directory names it by its path, not "."
+    const fs::path here = fs::current_path();
+    fs::current_path(run);
+    const RunFilesCheck local = check_run_files("result.h5");
+    fs::current_path(here);
+    EXPECT_EQ(local.directory, fs::canonical(run).string());
+    EXPECT_EQ(local.listing.rfind("\nfiles of " + fs::canonical(run).string() + " (", 0), 0u)
+        << local.listing;
+  }
+
   const auto [code, err] = run_child({"info", run.string()});
   EXPECT_EQ(code, 2) << err;
   EXPECT_NE(err.find(": not as its manifest.json records: "), std::string::npos) << err;
