@@ -160,11 +160,7 @@ int dispatch(const CLI::App& app, const Arguments& args) {
   }
   if (app.got_subcommand("info")) {
     if (args.layout) return std::cout << describe_layout(), kExitOk;
-    std::cout << describe_result(args.result_path);
-    const RunFilesCheck files = check_run_files(args.result_path);
-    std::cout << files.listing << std::flush;
-    if (!files.differences.empty())
-      throw result_problem(files.directory, "not as its manifest.json records", files.differences);
+    print_info(args.result_path, std::cout);
     return kExitOk;
   }
   if (app.got_subcommand("animate")) {

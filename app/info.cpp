@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "hdf5_file.hpp"
@@ -131,7 +132,7 @@ std::string describe_result(const std::string& path) {
   return describe_isolated(file);
 }
 
-RunFilesCheck check_run_files(const std::string& path) {
+RunFilesCheck check_run_files(const std::string& path, bool result_checked) {
   std::error_code ec;
   const fs::path file = fs::is_directory(path, ec) ? fs::path(path) / "result.h5" : fs::path(path);
   const fs::path dir = file.parent_path().empty() ? "." : file.parent_path();
@@ -140,7 +141,8 @@ RunFilesCheck check_run_files(const std::string& path) {
   const auto manifest = read_manifest(dir);
   if (!manifest) return {};
   // The result file itself was checked before it was described, if listed.
-  const fs::path checked = manifest->find(file.filename().string()) ? file.filename() : fs::path();
+  const fs::path checked =
+      result_checked && manifest->find(file.filename().string()) ? file.filename() : fs::path();
   const std::vector<FileState> states = check_listed_files(dir, *manifest, checked);
   std::size_t intact = 0, wrong = 0;
   std::ostringstream listing;
@@ -163,6 +165,20 @@ RunFilesCheck check_run_files(const std::string& path) {
     differences += " (" + std::to_string(wrong) + " of the " + std::to_string(listed) + " files " +
                    kManifestFile + " lists)";
   return {head.str() + listing.str(), differences, shown.string()};
+}
+
+void print_info(const std::string& path, std::ostream& out) {
+  std::optional<FileProblem> undescribed;
+  try {
+    out << describe_result(path);
+  } catch (const FileProblem& e) {
+    undescribed = e;
+  }
+  const RunFilesCheck files = check_run_files(path, !undescribed);
+  out << files.listing << std::flush;
+  if (undescribed) throw *undescribed;
+  if (!files.differences.empty())
+    throw result_problem(files.directory, "not as its manifest.json records", files.differences);
 }
 
 std::string describe_layout() { return output_layout_markdown(); }

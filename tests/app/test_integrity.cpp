@@ -8,9 +8,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "child_run.hpp"
+#include "file_problem.hpp"
 #include "run_dir_checks.hpp"
 #include "shockgas/app/info.hpp"
 
@@ -177,6 +179,24 @@ TEST(Integrity, InfoChecksEveryFileTheManifestLists) {
   EXPECT_NE(err.find("(2 of the " + std::to_string(listed) + " files manifest.json lists)"),
             std::string::npos)
       << err;
+}
+
+// A result file that cannot be described does not keep info from checking the
+// other files (finding: a truncated result.h5 ended info before the edited
+// summary.json beside it was named).
+TEST(Integrity, ADamagedResultDoesNotHideTheOtherFiles) {
+  const fs::path run = copy_of_run("result-and-more");
+  fs::resize_file(run / "result.h5", 5000);
+  { std::ofstream(run / "summary.json", std::ios::app) << " "; }
+  std::ostringstream out;
+  try {
+    print_info(run.string(), out);
+    ADD_FAILURE() << "a truncated result.h5 passed";
+  } catch (const FileProblem& e) {
+    EXPECT_NE(std::string(e.what()).find("result.h5: truncated"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(out.str().find("  result.h5: truncated (5000 of the "), std::string::npos) << out.str();
+  EXPECT_NE(out.str().find("  summary.json: damaged"), std::string::npos) << out.str();
 }
 
 // A file of the same size with other bytes is found by its SHA-256; a link
