@@ -50,10 +50,18 @@ struct Arguments {
   std::vector<double> tail_sizes;  // --N, read as numbers so that 1e7 is allowed
 };
 
+// --out "" would name no directory: a run took its default, bench the root.
+const CLI::Validator kDirectoryName(
+    [](const std::string& value) {
+      return value.empty() ? std::string("\"\" is not allowed; allowed: a directory name (not empty)") : "";
+    },
+    "");
+
 void add_run(CLI::App& app, Arguments& args) {
   auto* run = app.add_subcommand("run", "Run a scene (TOML) and write result.h5, summary.json, report.md, plots");
   run->add_option("SCENE", args.scene_path, "scene file, e.g. data/scenes/default.toml");
-  auto* out = run->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)");
+  auto* out = run->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)")
+                  ->check(kDirectoryName);
   run->add_option("--set", args.overrides, "override a scene key: --set particles.r=0.5 (value read as TOML)")
       ->allow_extra_args(false);
   run->add_flag("--quiet,-q", args.quiet, "no progress output");
@@ -77,7 +85,8 @@ void add_merge(CLI::App& app, Arguments& args) {
       app.add_subcommand("merge", "Merge the shards of one run into its result, as if it had run whole");
   merge->add_option("SHARD", args.shards, "shard directories (shockgas run --realizations A:B --out SHARD)")
       ->required();
-  merge->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)");
+  merge->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)")
+      ->check(kDirectoryName);
   merge->add_flag("--quiet,-q", args.quiet, "no progress output");
   merge->add_flag("--no-plots", args.no_plots, "skip the PNG plots");
 }
@@ -135,7 +144,7 @@ void add_tail(CLI::App& app, Arguments& args) {
   tail->add_option("--bin-width", o.bin_width, "bin width in |z| (default 0.05)");
   tail->add_option("--min-clusters", o.min_clusters, "clusters a bin must hold to count (default 25)");
   tail->add_option("--threads", o.threads, "realizations at once (default 0: every core)");
-  tail->add_option("--out", o.out_dir, "output directory (default out/tail)");
+  tail->add_option("--out", o.out_dir, "output directory (default out/tail)")->check(kDirectoryName);
   tail->add_flag("--quiet,-q", [&o](std::int64_t) { o.progress = false; }, "no progress output");
 }
 
@@ -206,7 +215,8 @@ int run_command(int argc, char** argv) {
   anim->add_option("DIR", args.result_path, "a run's output directory (its scene has [output] animation = true)")
       ->required();
   auto* bench = app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
-  bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)");
+  bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)")
+      ->check(kDirectoryName);
   bench->add_flag("--full", args.bench.full, "the record size (long) instead of the quick one");
   bench->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
   bench->add_flag("--quiet,-q", [&args](std::int64_t) { args.bench.progress = false; }, "no progress output");

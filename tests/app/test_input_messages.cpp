@@ -145,5 +145,24 @@ TEST(InputMessages, TheSceneNameIsANameNotAPath) {
   EXPECT_EQ(whole_run(root / "a" / "b" / "out" / "plain name", "plain name"), "");
 }
 
+// --out "" names no directory (finding: run wrote into its default out/NAME,
+// bench refused it as the root directory).
+TEST(InputMessages, AnEmptyOutputDirectoryIsRefusedByEveryCommand) {
+  const fs::path root = fresh_dir("input-empty-out");
+  const std::string scene = (fs::path(SHOCKGAS_SOURCE_DIR) / "data/scenes/default.toml").string();
+  for (const std::vector<std::string> args :
+       {std::vector<std::string>{"run", scene}, {"merge", "a", "b"}, {"bench"}, {"tail", "--N", "100"}}) {
+    std::vector<std::string> with_out = args;
+    with_out.insert(with_out.end(), {"--out", "", "-q"});
+    const auto [code, err] = run_child(with_out, in_dir(root));
+    EXPECT_EQ(code, 2) << args.front() << "\n" << err;
+    EXPECT_NE(err.find("--out: \"\" is not allowed; allowed: a directory name (not empty)"),
+              std::string::npos)
+        << args.front() << "\n"
+        << err;
+  }
+  EXPECT_TRUE(fs::is_empty(root));
+}
+
 }  // namespace
 }  // namespace shockgas::app
