@@ -23,10 +23,32 @@ bool has_frames(const std::string& result_path) {
   return false;
 }
 
+namespace {
+
+// The first variant directory of a sweep's output directory (its manifest
+// lists the variants' manifests), or "" where dir is not a sweep's.
+std::string first_variant(const std::string& dir) {
+  const auto manifest = read_manifest(dir);
+  if (!manifest) return "";
+  const std::string tail = std::string("/") + kManifestFile;
+  for (const ManifestEntry& e : manifest->files)
+    if (e.path.size() > tail.size() && e.path.compare(e.path.size() - tail.size(), tail.size(), tail) == 0)
+      return e.path.substr(0, e.path.size() - tail.size());
+  return "";
+}
+
+}  // namespace
+
 void animate(const std::string& dir) {
   const std::string result = (std::filesystem::path(dir) / "result.h5").string();
   require(std::filesystem::is_regular_file(result), "DIR", dir,
           "a run's output directory, holding result.h5");
+  if (const std::string variant = first_variant(dir); !variant.empty())
+    throw InputError(
+        "DIR", to_text(dir),
+        "a run's output directory; this one is a sweep's, whose frames are its variants': give one of them, "
+        "e.g. " +
+            (std::filesystem::path(dir) / variant).string());
   require(has_frames(result), "output.animation", std::string("false"),
           "true: the run must record its frames (run the scene again with --set output.animation=true)");
   std::cerr << make_animation(dir);

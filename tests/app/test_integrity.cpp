@@ -310,6 +310,14 @@ TEST(Integrity, AnAnimatedVariantKeepsItsSweepIntact) {
   EXPECT_EQ(check_run_files(run.string()).differences, "");
   EXPECT_NE(read_manifest(run)->find(variant.filename().string() + "/animation.png"), nullptr);
   EXPECT_EQ(check_run_files(variant.string()).differences, "");
+  // The sweep's own directory has no frames: animate names a variant to give
+  // (it said to record frames, though the variants hold them).
+  const auto [top, top_said] = run_child({"animate", run.string()}, stand_in);
+  EXPECT_EQ(top, 2) << top_said;
+  EXPECT_NE(top_said.find("this one is a sweep's, whose frames are its variants': give one of them, e.g. " +
+                          run.string() + "/"),
+            std::string::npos)
+      << top_said;
 }
 
 }  // namespace
