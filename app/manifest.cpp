@@ -1,5 +1,7 @@
 #include "manifest.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -77,7 +79,7 @@ void add_files(const fs::path& dir, std::vector<ManifestEntry>& files) {
   }
 }
 
-void write_manifest_file(const fs::path& dir, Manifest& m) {
+void write_manifest_file(const fs::path& dir, Manifest& m, const fs::path& as = kManifestFile) {
   std::sort(m.files.begin(), m.files.end(), [](const auto& a, const auto& b) { return a.path < b.path; });
   ordered_json j;
   j["format"] = kFormat;
@@ -86,7 +88,7 @@ void write_manifest_file(const fs::path& dir, Manifest& m) {
   j["git_commit"] = kGitCommit;
   j["files"] = ordered_json::array();
   for (const auto& f : m.files) j["files"].push_back({{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
-  write_file(dir / kManifestFile, j.dump(2) + "\n");
+  write_file(dir / as, j.dump(2) + "\n");
 }
 
 }  // namespace
@@ -96,6 +98,17 @@ Manifest write_manifest(const fs::path& dir, const std::string& scene) {
   m.scene = scene;
   add_files(dir, m.files);
   write_manifest_file(dir, m);
+  return m;
+}
+
+Manifest write_manifest_of(const fs::path& dir, const std::string& scene,
+                           const std::vector<std::string>& files) {
+  Manifest m;
+  m.scene = scene;
+  for (const std::string& f : files) m.files.push_back({f, fs::file_size(dir / f), sha256_of_file(dir / f)});
+  const std::string temporary = std::string(kManifestFile) + ".partial-" + std::to_string(::getpid());
+  write_manifest_file(dir, m, temporary);
+  fs::rename(dir / temporary, dir / kManifestFile);
   return m;
 }
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "parallel_run.hpp"
+#include "run_target.hpp"
 #include "shard_file.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -108,6 +109,9 @@ std::string merge_shards(const std::vector<std::string>& shard_dirs, const RunOp
   for (std::size_t e = 0; e < plan.ensembles(); ++e) ensembles.push_back(plan.scene(e));
   require_tiling(shards, ensembles, scene);
 
+  const fs::path dir = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
+  check_target_spares(resolve_target(dir), dir.string(), shard_dirs, "shard being merged");
+
   std::vector<RealizationRecord> records;
   ParallelRun parallel{1, 1, shards.size()};
   double shard_seconds = 0;
@@ -117,7 +121,6 @@ std::string merge_shards(const std::vector<std::string>& shard_dirs, const RunOp
     parallel.threads = std::max<std::size_t>(parallel.threads, std::stoull(h.shard.at("threads")));
     shard_seconds += std::stod(h.shard.at("wall_seconds"));
   }
-  const fs::path dir = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
   return write_from_records(scene, plan, std::move(records), parallel, shard_seconds, dir, options,
                             scene.has_sweep ? nullptr : &plan.initial(0));
 }

@@ -134,6 +134,15 @@ void check_target_path(const fs::path& target, const std::string& out) {
   }
 }
 
+void check_target_spares(const fs::path& target, const std::string& out,
+                         const std::vector<std::string>& inputs, const std::string& what) {
+  for (const std::string& input : inputs)
+    if (contains(target, resolve_target(input)))
+      refuse(out, "a directory that neither is nor holds a " + what + " (" + input + " is " +
+                      (resolve_target(input) == target ? "this directory" : "in it") +
+                      "; the output directory is replaced as a whole)");
+}
+
 std::optional<std::string> scene_of_results(const fs::path& dir) {
   if (const auto manifest = read_manifest(dir)) return manifest->scene;
   const auto summary = nlohmann::json::parse(read_text(dir / "summary.json", 64u << 20), nullptr, false);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace shockgas::app {
 
@@ -23,6 +24,12 @@ void check_target_path(const std::filesystem::path& target, const std::string& o
 // without force). Called with the directory's lock held.
 void check_target_contents(const std::filesystem::path& target, const std::string& out, const std::string& scene,
                            bool force);
+
+// Refuses a target that is, or holds, one of the inputs a command reads (the
+// shards of a merge: replacing the output directory would replace them). what
+// names an input in the message ("shard being merged").
+void check_target_spares(const std::filesystem::path& target, const std::string& out,
+                         const std::vector<std::string>& inputs, const std::string& what);
 
 // What a run keeps in its output directory while it computes (relative: a
 // path in it): the checkpoint and the running realizations' saved states (with

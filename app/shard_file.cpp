@@ -1,7 +1,9 @@
 #include "shard_file.hpp"
 
-#include <fstream>
+#include <sstream>
 
+#include "durable_file.hpp"
+#include "manifest.hpp"
 #include "output_layout.hpp"
 #include "partial_outputs.hpp"
 #include "shockgas/core/error.hpp"
@@ -23,12 +25,13 @@ std::map<std::string, std::string> attribute_map(const Hdf5File& h5, const std::
 fs::path shard_file(const std::string& dir) { return fs::path(dir) / "result.h5"; }
 
 void write_report(const fs::path& dir, const Scene& scene, const EnsemblePlan& plan) {
-  std::ofstream out(dir / "report.md");
+  std::ostringstream out;
   out << "# shockgas shard: " << scene.name << "\n\n"
       << "Realizations " << slice_or_all(plan.realization_slice()) << " of each ensemble"
       << (scene.has_sweep ? ", variants " + slice_or_all(plan.variant_slice()) : std::string()) << ": "
       << plan.items().size() << " realization(s). Merge the shards of the whole run with\n\n"
       << "    shockgas merge SHARD... --out DIR\n";
+  write_file(dir / "report.md", out.str());
 }
 
 }  // namespace
@@ -36,6 +39,11 @@ void write_report(const fs::path& dir, const Scene& scene, const EnsemblePlan& p
 void write_shard(const fs::path& dir, const Scene& scene, const EnsemblePlan& plan,
                  ComputedRecords computed) {
   PartialOutputs outputs(dir);
+  // A shard is written in place: an earlier shard's manifest goes first, so
+  // that no file is ever vouched for by a manifest of other files; the new one
+  // is written last, over exactly the shard's files.
+  std::error_code ec;
+  fs::remove(dir / kManifestFile, ec);
   nlohmann::ordered_json summary;
   RunResults r;
   r.scene = &scene;
@@ -55,6 +63,7 @@ void write_shard(const fs::path& dir, const Scene& scene, const EnsemblePlan& pl
   }
   write_report(dir, scene, plan);
   outputs.commit(summary);
+  write_manifest_of(dir, scene.name, {"report.md", "result.h5", "summary.json"});
 }
 
 ShardHeader read_shard_header(const std::string& dir) {

@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "hdf5_file.hpp"
-#include "run_comparison.hpp"
+#include "manifest.hpp"
 #include "run_command.hpp"
+#include "run_comparison.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -144,6 +145,8 @@ TEST_F(Shards, ShardsOfAnotherBuildAreRefused) {
   ASSERT_EQ(shard("scene.toml", "--realizations", "0:5", "a"), 0);
   ASSERT_EQ(shard("scene.toml", "--realizations", "5:10", "b"), 0);
   Hdf5File::update(path("b/result.h5")).set_attribute("/", "git_commit", "0000000");
+  write_manifest_of(dir_ / "b", "scene",
+                    {"report.md", "result.h5", "summary.json"});  // as that build wrote it
   EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
   EXPECT_NE(said_.find("shards written by one build"), std::string::npos) << said_;
   EXPECT_FALSE(fs::exists(dir_ / "merged"));
@@ -165,6 +168,44 @@ TEST_F(Shards, SlicesOutsideTheRunAreRefusedBeforeAnyWork) {
   EXPECT_EQ(shard("scene.toml", "--variants", "0:1", "d"), 2);  // no [sweep]
   EXPECT_EQ(shard("sweep.toml", "--variants", "1:3", "e"), 2);
   for (const char* out : {"a", "b", "c", "d", "e"}) EXPECT_FALSE(fs::exists(dir_ / out)) << out;
+}
+
+// A shard carries a manifest of its three files (it had none: `info` could not
+// check it, and a merge read a shard with a changed byte as data), so a merge
+// refuses a damaged shard before the HDF5 library reads it.
+TEST_F(Shards, AShardIsCheckedAgainstItsManifestBeforeItIsMerged) {
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:5", "a"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "5:10", "b"), 0);
+  const auto manifest = read_manifest(dir_ / "b");
+  ASSERT_TRUE(manifest);
+  std::vector<std::string> listed;
+  for (const auto& f : manifest->files) listed.push_back(f.path);
+  EXPECT_EQ(listed, (std::vector<std::string>{"report.md", "result.h5", "summary.json"}));
+  const fs::path file = dir_ / "b" / "result.h5";
+  {
+    std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(static_cast<std::streamoff>(fs::file_size(file) / 2));
+    f.put('\x55');
+  }
+  EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
+  EXPECT_NE(said_.find(file.string() + ": damaged"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(dir_ / "merged"));
+}
+
+// The merge's output directory is replaced as a whole: it may not be, or hold,
+// a shard it merges (merge a b --out a replaced shard a without a word).
+TEST_F(Shards, AMergeIntoOneOfItsShardsIsRefused) {
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:5", "in/a"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "5:10", "in/b"), 0);
+  for (const std::string out : {"in/a", "in"}) {
+    EXPECT_EQ(merge({"in/a", "in/b"}, out), 2) << out;
+    EXPECT_NE(said_.find("a directory that neither is nor holds a shard being merged"), std::string::npos)
+        << said_;
+  }
+  const auto a = read_manifest(dir_ / "in" / "a");
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->scene, "scene");  // still the shard
+  EXPECT_EQ(merge({"in/a", "in/b"}, "merged"), 0) << said_;
 }
 
 }  // namespace
