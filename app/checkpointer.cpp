@@ -60,8 +60,11 @@ Checkpointer::Checkpointer(std::filesystem::path dir, const Scene& scene, const 
   g_signals_take_checkpoints = true;
 }
 
-// The states beside the resumed checkpoint: of this build and scene, or refused;
-// those of realizations it holds finished are stale and removed.
+// The states beside the resumed checkpoint: of this build and scene, whole
+// (each checksum checked before any realization continues: one that did would
+// move its states file on, and a refusal after that would leave a checkpoint
+// that cannot be resumed), or refused; those of realizations it holds finished
+// are stale and removed.
 void Checkpointer::find_states() {
   for (const RunStateHeader& h : read_run_state_headers(dir_)) {
     const std::filesystem::path file = run_state_path(dir_, h.ensemble, h.index);
@@ -82,6 +85,7 @@ void Checkpointer::find_states() {
       states_[{h.ensemble, h.index}] = h.time, resumed_[{h.ensemble, h.index}] = {h.fraction, h.time},
                            resumed_sinks_[{h.ensemble, h.index}] = h.sink;
   }
+  for (const auto& [key, time] : states_) check_run_state(run_state_path(dir_, key.first, key.second));
 }
 
 void Checkpointer::find_state(const Key& key) {

@@ -95,7 +95,8 @@ class Checkpointer {
   // realizations, variants: a shard's slices as given ("" for a whole run).
   // states: the realizations running in this process save their states;
   // then, resuming, the states in dir are continued (InputError "--resume" for
-  // one of another build or scene), and for a new run any there are removed.
+  // one of another build or scene, or damaged: each is checked whole here,
+  // before any realization continues), and for a new run any there are removed.
   // job_rank: a rank other than 0 of a job, which only saves the states of its
   // realizations (rank 0 has checked and cleared the directory before dealing
   // them out): never writes checkpoint.bin nor removes a file, and continues a

@@ -226,20 +226,26 @@ std::optional<RunStateHeader> read_run_state_header(const fs::path& file) {
   return header_of(file);
 }
 
-std::unique_ptr<particles::RunStateReader> open_run_state(const fs::path& file) {
+void check_run_state(const fs::path& file) {
   const std::uint64_t size = size_of(file);
   if (size < sizeof(std::uint64_t)) throw damaged(file, "cut short");
   const std::uint64_t body = size - sizeof(std::uint64_t);
   try {
     std::uint64_t sum = 0;  // the stored checksum: the last 8 bytes
-    {
-      const int fd = ::open(file.c_str(), O_RDONLY);
-      const bool got = fd >= 0 && ::pread(fd, &sum, sizeof sum, static_cast<off_t>(body)) == sizeof sum;
-      if (fd >= 0) ::close(fd);
-      if (!got) throw RunError("cannot read its checksum");
-    }
+    const int fd = ::open(file.c_str(), O_RDONLY);
+    const bool got = fd >= 0 && ::pread(fd, &sum, sizeof sum, static_cast<off_t>(body)) == sizeof sum;
+    if (fd >= 0) ::close(fd);
+    if (!got) throw RunError("cannot read its checksum");
     if (hash_of(file, body) != sum) throw damaged(file, "its checksum does not match its contents");
-    auto in = std::make_unique<FileIn>(file, body);
+  } catch (const RunError& e) {
+    throw damaged(file, e.what());
+  }
+}
+
+std::unique_ptr<particles::RunStateReader> open_run_state(const fs::path& file) {
+  check_run_state(file);
+  try {
+    auto in = std::make_unique<FileIn>(file, size_of(file) - sizeof(std::uint64_t));
     read_header(*in, file);
     return in;
   } catch (const RunError& e) {

@@ -57,9 +57,12 @@ std::vector<RunStateHeader> read_run_state_headers(const std::filesystem::path& 
 // for one that is not a state file of this format).
 std::optional<RunStateHeader> read_run_state_header(const std::filesystem::path& file);
 
-// A state file opened for resuming: its checksum checked over the whole file
-// first (InputError "--resume" naming the file if it does not match or the
-// file is cut short), then read after its header.
+// Checks a state file's checksum over the whole file: InputError "--resume"
+// naming the file if it does not match or the file is cut short.
+void check_run_state(const std::filesystem::path& file);
+
+// A state file opened for resuming: checked (check_run_state), then read after
+// its header.
 std::unique_ptr<particles::RunStateReader> open_run_state(const std::filesystem::path& file);
 
 // Removes every state file of dir (and temporaries of interrupted writes).

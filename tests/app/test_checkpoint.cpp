@@ -371,6 +371,26 @@ TEST_F(RunningStates, ADamagedOrCutStateIsRefusedAndKept) {
   }
 }
 
+// Every state is checked whole before any realization continues (finding: a
+// damaged state of realization 1 was found only when realization 1 started;
+// realization 0 had continued by then and moved its states file on, and the
+// checkpoint could no longer be resumed at all).
+TEST_F(RunningStates, EveryStateIsCheckedBeforeAnyRealizationContinues) {
+  interrupted_inside("run");
+  std::string bytes = bytes_of(state("run"));
+  bytes[bytes.size() / 2] ^= 0x01;
+  std::ofstream(state("run"), std::ios::binary) << bytes;
+  const Scene scene = load_scene(path("longer.toml"));
+  try {
+    Checkpointer resumed(path("run"), scene, "", "", {}, /*resuming=*/true, /*states=*/true);
+    ADD_FAILURE() << "a damaged state was taken up";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("its checksum does not match its contents"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(bytes_of(state("run")), bytes);
+}
+
 TEST_F(RunningStates, AStateOfAnotherBuildIsRefused) {
   interrupted_inside("run", "0.0.1-other");
   EXPECT_EQ(command({"run", "--resume", path("run"), "-q"}), 2);

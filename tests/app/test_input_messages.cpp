@@ -150,8 +150,9 @@ TEST(InputMessages, TheSceneNameIsANameNotAPath) {
 TEST(InputMessages, AnEmptyOutputDirectoryIsRefusedByEveryCommand) {
   const fs::path root = fresh_dir("input-empty-out");
   const std::string scene = (fs::path(SHOCKGAS_SOURCE_DIR) / "data/scenes/default.toml").string();
-  for (const std::vector<std::string> args :
-       {std::vector<std::string>{"run", scene}, {"merge", "a", "b"}, {"bench"}, {"tail", "--N", "100"}}) {
+  const std::vector<std::vector<std::string>> commands = {
+      {"run", scene}, {"merge", "a", "b"}, {"bench"}, {"tail", "--N", "100"}};
+  for (const auto& args : commands) {
     std::vector<std::string> with_out = args;
     with_out.insert(with_out.end(), {"--out", "", "-q"});
     const auto [code, err] = run_child(with_out, in_dir(root));
