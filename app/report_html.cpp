@@ -254,7 +254,13 @@ void write_report_html(const fs::path& dir) {
       figures_table(summary) + reference_table(scene, summary) + variants_section(dir, summary);
   body += plots + scene_section(p);
   const fs::path tmp = dir / "report.html.partial";
-  write_file(tmp, html::page("shockgas: " + name, body));  // a failure names the file and the reason
+  try {
+    write_file(tmp, html::page("shockgas: " + name, body));  // a failure names the file and the reason
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(tmp, ec);  // in a finished run's directory (`shockgas animate`) nothing is left half-written
+    throw;
+  }
   fs::rename(tmp, dir / "report.html");
 }
 

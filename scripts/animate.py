@@ -314,9 +314,14 @@ def ffmpeg(args, partial, fmt, stdin=None):
 
 
 def finished(proc):
+    """ffmpeg's end: EncoderFailed on a non-zero status, and also on an "Error ..."
+    line with status 0, which ffmpeg 5 returns when it cannot write the trailer
+    or close the file (a full disk): the file is then cut short."""
     said = proc.stderr.read().decode(errors="replace")
     if proc.wait() != 0:
         raise EncoderFailed(f"ffmpeg failed (exit {proc.returncode})", said)
+    if any(line.startswith("Error") for line in said.splitlines()):
+        raise EncoderFailed("ffmpeg failed (exit 0, with errors)", said)
     if said:
         sys.stderr.write(said)
 

@@ -170,5 +170,32 @@ TEST(PlotFailures, ASucceedingAnimationRemovesTheLogOfAFailedOne) {
   EXPECT_EQ(whole_run(s.out, "alpha"), "");
 }
 
+// ffmpeg that cannot write its file's trailer on a full disk says "Error
+// writing trailer of ...: No space left on device" and still exits with 0 (as
+// ffmpeg 5 does; finding: `shockgas animate` on a nearly full disk renamed the
+// cut-short movie over the run's whole one). A stand-in ffmpeg on PATH does
+// just that; the real animation script must take it as the failure it is.
+TEST(PlotFailures, AnEncoderThatCutsItsFileShortButExitsWithZeroReplacesNothing) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib, h5py' 2>/dev/null") != 0)
+    GTEST_SKIP() << "/usr/bin/python3 lacks matplotlib or h5py: the real animation script cannot run";
+  const TwoRuns s = alpha_done(fresh_dir("animate-cut-short"));
+  ASSERT_EQ(run_with_frames(s), 0);
+  const std::string before = read_text(s.out / "manifest.json");
+  const fs::path bin = s.root / "bin";
+  fs::create_directories(bin);
+  write_text(bin / "ffmpeg",
+             "#!/bin/sh\nfor last; do :; done\ncat > /dev/null\nhead -c 1000 /dev/zero > \"$last\"\n"
+             "echo \"Error writing trailer of $last: No space left on device\" >&2\nexit 0\n");
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  const auto [code, err] =
+      run_child({"animate", s.out.string()}, with_env({{"PATH", bin.string() + ":" + std::getenv("PATH")}}));
+  EXPECT_NE(code, 0) << err;
+  EXPECT_NE(err.find("animation.mp4: No space left on device"), std::string::npos) << err;
+  EXPECT_EQ(read_text(s.out / "manifest.json"), before);
+  EXPECT_EQ(whole_run(s.out, "alpha"), "");
+  for (const auto& entry : fs::directory_iterator(s.out))
+    EXPECT_NE(entry.path().extension(), ".partial") << entry.path();
+}
+
 }  // namespace
 }  // namespace shockgas::app
