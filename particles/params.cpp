@@ -37,7 +37,10 @@ ParameterTable<ParticleParams> declare() {
         "frames of the space-time record, equally spaced in [0, t_end]", allowed(at_least(2)));
   t.add(&P::clusters, "clusters", "", "count clusters (default criteria) at the sample times");
   t.add(&P::max_collisions, "max_collisions", "1",
-        "stop a realization after this many collisions; 0 = no limit", allowed(at_least(0)));
+        "stop a realization at its first safe point with at least this many collisions (the end of a time "
+        "window, or every 16384 collisions on the global queue), stop = event_limit; one that reaches t_end "
+        "first has completed; 0 = no limit",
+        allowed(at_least(0)));
   t.add(&P::max_wall_seconds, "max_wall_seconds", "s",
         "stop a realization after this wall-clock time; 0 = no limit", allowed(at_least(0)));
   return t;
