@@ -27,6 +27,7 @@
 #include "shockgas/studies/tail_study.hpp"
 #include "shockgas/version.hpp"
 #include "signals.hpp"
+#include "tail_run.hpp"
 
 namespace shockgas::app {
 
@@ -145,16 +146,18 @@ void add_tail(CLI::App& app, Arguments& args) {
   tail->add_option("--min-clusters", o.min_clusters, "clusters a bin must hold to count (default 25)");
   tail->add_option("--threads", o.threads, "realizations at once (default 0: every core)");
   tail->add_option("--out", o.out_dir, "output directory (default out/tail)")->check(kDirectoryName);
+  tail->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
   tail->add_flag("--quiet,-q", [&o](std::int64_t) { o.progress = false; }, "no progress output");
 }
 
 int do_tail(Arguments args) {
   if (!args.tail_sizes.empty()) args.tail.sizes.clear();
   for (const double N : args.tail_sizes) {
-    if (!(N >= 1 && N <= 4e9 && N == std::floor(N))) throw InputError("tail.N", to_text(N), "whole numbers >= 1");
+    if (!(N >= 0 && N <= studies::kTailMaxN && N == std::floor(N)))
+      throw InputError("tail.N", to_text(N), studies::kTailSizesAllowed);
     args.tail.sizes.push_back(static_cast<std::size_t>(N));
   }
-  const std::string out = studies::run_tail_study(args.tail);  // nothing printed before it returns
+  const std::string out = run_tail(args.tail, args.force);  // nothing printed before it returns
   std::cout << "tail results in " << as_directory(out) << "\n";
   return kExitOk;
 }
@@ -232,6 +235,8 @@ int run_command(int argc, char** argv) {
   const std::string unchanged =
       app.got_subcommand("run") || app.got_subcommand("merge") || app.got_subcommand("bench")
           ? " (the results in the output directory are as they were)"
+      : app.got_subcommand("tail")
+          ? " (the output directory holds the sizes finished before, each file whole)"
           : "";
   try {
     // SIGINT, SIGTERM -> request_interrupt, restored on return; in an MPI job

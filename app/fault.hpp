@@ -13,8 +13,10 @@
 // "write:summary.json"), "plot" (each poll while the plotting process runs),
 // "swap" (the finished directory about to replace the previous one),
 // "swapped" (replaced, the previous contents not yet removed), "checkpoint"
-// (a checkpoint or a running realization's state written in full) and "state"
-// (a state written in full by a rank other than 0 of an MPI job).
+// (a checkpoint or a running realization's state written in full), "state"
+// (a state written in full by a rank other than 0 of an MPI job) and
+// "published" (a step of a result that grows in steps in place: a size of
+// `shockgas tail`).
 #include <string_view>
 
 namespace shockgas::app {

@@ -12,6 +12,7 @@
 
 #include "durable_file.hpp"
 #include "fault.hpp"
+#include "manifest.hpp"
 #include "run_target.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -133,6 +134,25 @@ void RunDirectory::commit() {
   fault_point("swapped");
   std::error_code ec;
   if (!previous.empty()) fs::remove_all(previous, ec);
+}
+
+void RunDirectory::publish_copy(const std::string& scene) {
+  const fs::path copy = make_staging(target_);
+  try {
+    fs::copy(staging_, copy, fs::copy_options::recursive);
+    write_manifest(copy, scene);
+    sync_tree(copy);
+    const fs::path previous = swap_into_place(copy, target_, SwapMethod::exchange);
+    sync_directory(target_.parent_path());
+    created_.keep();
+    std::error_code ec;
+    if (!previous.empty()) fs::remove_all(previous, ec);
+    fault_point("published");
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(copy, ec);
+    throw;
+  }
 }
 
 fs::path swap_into_place(const fs::path& staging, const fs::path& target, SwapMethod method) {

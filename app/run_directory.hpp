@@ -68,6 +68,12 @@ class RunDirectory {
   // the previous contents. RunError if the move fails (the target unchanged).
   void commit();
 
+  // For a command whose results grow in steps, each step whole (`shockgas
+  // tail`): a copy of the staging directory, with a manifest of scene's, moves
+  // into place as commit() moves the staging directory; the staging directory
+  // stays, for the next step. RunError if it fails (the target as it was).
+  void publish_copy(const std::string& scene);
+
  private:
   std::filesystem::path target_;
   CreatedDirectories created_;

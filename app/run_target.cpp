@@ -40,9 +40,12 @@ std::vector<std::pair<std::string, fs::path>> protected_directories() {
   return dirs;
 }
 
-// Files an older shockgas (without manifest.json) wrote into a run directory.
+// Files an older shockgas (without manifest.json) wrote into a run directory,
+// or into the output directory of `shockgas tail`.
 bool legacy_run_file(const fs::path& relative) {
-  static const std::vector<std::string> names = {"result.h5", "summary.json", "report.md", "report.html"};
+  static const std::vector<std::string> names = {"result.h5",    "summary.json", "report.md",
+                                                 "report.html",  "tail_phi.csv", "tail_windows.csv",
+                                                 "tail_runs.csv"};
   static const std::vector<std::string> extensions = {".png", ".gif", ".mp4", ".svg"};
   const std::string name = relative.filename().string();
   if (name.find(".partial-") != std::string::npos) return true;  // killed runs of older versions
@@ -148,6 +151,8 @@ std::optional<std::string> scene_of_results(const fs::path& dir) {
   const auto summary = nlohmann::json::parse(read_text(dir / "summary.json", 64u << 20), nullptr, false);
   if (summary.is_object() && summary.contains("scene") && summary["scene"].is_string())
     return summary["scene"].get<std::string>();
+  std::error_code ec;
+  if (fs::exists(dir / "tail_runs.csv", ec)) return "tail";  // `shockgas tail` of an older version
   return std::nullopt;
 }
 

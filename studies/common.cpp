@@ -28,8 +28,7 @@ namespace {
 // The failure to write a table at path, with the system's reason (errno,
 // cleared before the write).
 [[noreturn]] void cannot_write(const std::string& path) {
-  throw TableWriteFailed("bench: cannot write " + path + ": " +
-                         (errno ? std::strerror(errno) : "write failed"));
+  throw TableWriteFailed("cannot write " + path + ": " + (errno ? std::strerror(errno) : "write failed"));
 }
 
 }  // namespace

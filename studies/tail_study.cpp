@@ -108,10 +108,18 @@ TailRealization engine_realization(const InitialParams& ip, std::uint64_t k, con
   return out;
 }
 
-void validate(const TailStudyOptions& o) {
+}  // namespace
+
+void validate_tail_study(const TailStudyOptions& o) {
   require(!o.out_dir.empty(), "tail.out", o.out_dir, "a directory name");
   require(!o.sizes.empty(), "tail.N", o.sizes.size(), "at least one size");
-  for (const std::size_t N : o.sizes) require(N >= 100, "tail.N", N, ">= 100");
+  for (std::size_t i = 0; i < o.sizes.size(); ++i) {
+    const std::size_t N = o.sizes[i];
+    const bool repeated = std::find(o.sizes.begin(), o.sizes.begin() + static_cast<std::ptrdiff_t>(i), N) !=
+                          o.sizes.begin() + static_cast<std::ptrdiff_t>(i);
+    require(N >= kTailMinN && static_cast<double>(N) <= kTailMaxN && !repeated, "tail.N", N,
+            kTailSizesAllowed);
+  }
   require(o.realizations >= 2, "tail.realizations", o.realizations,
           ">= 2 (the errors are a jackknife over them)");
   require(!o.times.empty(), "tail.times", o.times.size(), "at least one time");
@@ -121,7 +129,11 @@ void validate(const TailStudyOptions& o) {
   require_in_range("tail.r", o.r, 0.0, 1.0);
   require(o.r == 0 || o.delta > 0, "tail.delta", o.delta, "> 0 for r > 0");
   require(o.bin_width > 0 && o.z_max > o.bin_width, "tail.bin_width", o.bin_width, "0 < bin_width < z_max");
+  require(o.min_clusters >= 1, "tail.min_clusters", o.min_clusters,
+          ">= 1 (clusters a bin must hold to count)");
 }
+
+namespace {
 
 // Realizations 0..R-1 of size N on `threads` threads, reduced as they finish.
 TailEnsemble run_size(std::size_t N, const TailStudyOptions& o) {
@@ -146,13 +158,16 @@ TailEnsemble run_size(std::size_t N, const TailStudyOptions& o) {
 }  // namespace
 
 std::string run_tail_study(const TailStudyOptions& o) {
-  validate(o);
+  validate_tail_study(o);
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);
   if (ec || !std::filesystem::is_directory(o.out_dir))
     throw InputError("tail.out", to_text(o.out_dir), "a directory that can be created");
   TailFiles files(o);
-  for (const std::size_t N : o.sizes) files.add(N, run_size(N, o));
+  for (const std::size_t N : o.sizes) {
+    files.add(N, run_size(N, o));
+    if (o.size_written) o.size_written();
+  }
   return o.out_dir;
 }
 

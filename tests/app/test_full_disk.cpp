@@ -15,6 +15,8 @@
 #include <string>
 
 #include "child_run.hpp"
+#include "manifest.hpp"
+#include "result_check.hpp"
 #include "run_dir_checks.hpp"
 #include "two_runs.hpp"
 
@@ -248,6 +250,29 @@ TEST(FullDisk, ABenchThatFillsTheDiskLeavesTheEarlierBenchAsItWas) {
   EXPECT_EQ(read_text(out / kManifestFile), before);
   const auto [checked, said] = run_child({"info", out.string()});
   EXPECT_EQ(checked, 0) << said;
+  EXPECT_TRUE(leftovers(out).empty()) << leftovers(out).front();
+}
+
+// `shockgas tail` on a disk that is full (finding: tail_phi.csv cut mid-number,
+// tail_runs.csv silently short of a row, and the message said "bench"): the
+// earlier study stays whole, and the message names the file in the output
+// directory.
+TEST(FullDisk, ATailOnAFullDiskLeavesTheEarlierStudyWhole) {
+  SmallDisk disk("fulldisk-tail", "1m");
+  REQUIRE_MOUNTED(disk);
+  const fs::path out = disk.dir() / "t";
+  const std::vector<std::string> args = {"tail", "-q",      "--N",   "1000",  "--realizations",
+                                         "2",    "--times", "10,20", "--out", out.string()};
+  ASSERT_EQ(run_child(args).first, 0);
+  const std::string before = read_text(out / "manifest.json");
+  disk.fill(0);
+  const auto [code, err] = run_child(args);
+  EXPECT_EQ(code, 1) << err;
+  EXPECT_NE(err.find("No space left on device"), std::string::npos) << err;
+  EXPECT_EQ(err.find("bench"), std::string::npos) << err;
+  EXPECT_EQ(err.find(".tmp-"), std::string::npos) << err;
+  EXPECT_EQ(read_text(out / "manifest.json"), before);
+  EXPECT_EQ(differences_of(check_listed_files(out, *read_manifest(out), "")), "");
   EXPECT_TRUE(leftovers(out).empty()) << leftovers(out).front();
 }
 

@@ -20,6 +20,7 @@
 //                     against the law, T t^(2/3), collisions and CPU seconds.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,18 @@ struct TailStudyOptions {
   double min_clusters = 25;  // a bin counts while it holds this many clusters
   std::size_t threads = 0;   // realizations at once; 0 = every core
   bool progress = true;      // a line per finished realization on stderr
+  // Called when a size's rows are in the files (and flushed): the command
+  // publishes the files as they then are (app/tail_run.hpp).
+  std::function<void()> size_written;
 };
+
+// The sizes a study takes (tail.N).
+inline constexpr std::size_t kTailMinN = 100;
+inline constexpr double kTailMaxN = 4e9;
+inline constexpr const char* kTailSizesAllowed = "distinct whole numbers from 100 to 4e9";
+
+// InputError naming the option for options the study cannot run.
+void validate_tail_study(const TailStudyOptions& options);
 
 // Runs the study and writes its files; returns out_dir. Throws InputError for
 // bad options (naming the option), RunError if a run fails.
