@@ -58,6 +58,7 @@ SolverInfo registration(int order) {
   SolverInfo s;
   s.name = kName[order];
   s.density = true;
+  s.outflow = true;
   s.preflight = [order](const InitialField& f, const ContinuumParams& p, double t_end) {
     check_input(f, p, t_end, order);
   };

@@ -26,7 +26,10 @@ ParameterTable<ContinuumParams> declare() {
         "Hopf-Cole evaluation: spectral heat equation, log-domain heat kernel, or chosen by its roundoff "
         "bound");
   t.add(&P::limiter, "limiter", "", "slope limiter of the second-order finite-volume scheme");
-  t.add(&P::boundary, "boundary", "", "boundary condition");
+  t.add(
+      &P::boundary, "boundary", "",
+      "boundary condition; outflow (zero-gradient) only for the finite-volume solvers, the others solve the "
+      "periodic problem and refuse it");
   t.add(&P::allow_unstable, "allow_unstable", "",
         "run even outside a method's stable range (for stability studies)");
   return t;

@@ -67,6 +67,7 @@ SolverInfo pressureless_solver() {
   s.colour = "tab:green";
   s.bytes_per_cell = 60;  // peak resident memory at work, measured at 2e4-4e5 cells
   s.density = true;
+  s.outflow = true;
   s.preflight = check_input;
   s.run = solve_pressureless;
   return s;

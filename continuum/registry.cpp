@@ -45,8 +45,21 @@ std::string reference_solver_name() {
   return "";
 }
 
+void check_boundary(const SolverInfo& info, const ContinuumParams& p) {
+  if (p.boundary != Boundary::outflow || info.outflow) return;
+  std::vector<std::string> with_outflow;
+  for (const auto& s : registry())
+    if (s.outflow) with_outflow.push_back(s.name);
+  throw InputError("continuum.boundary", "\"outflow\"",
+                   "\"periodic\" for solver " + info.name +
+                       ", which solves the periodic problem only (outflow: " + choices_text(with_outflow) +
+                       ")");
+}
+
 void preflight(const std::string& name, const InitialField& f, const ContinuumParams& p, double t_end) {
-  solver_info(name).preflight(f, p, t_end);
+  const SolverInfo& info = solver_info(name);
+  check_boundary(info, p);
+  info.preflight(f, p, t_end);
 }
 
 }  // namespace shockgas::continuum

@@ -63,6 +63,7 @@ std::vector<ContinuumResult> solve_at_times(const std::string& name, const Initi
                                             const ContinuumParams& p, const std::vector<double>& times,
                                             const ProgressCallback& progress) {
   const SolverInfo& info = solver_info(name);
+  check_boundary(info, p);
   check_times(times);
   std::vector<ContinuumResult> out;
   out.reserve(times.size());

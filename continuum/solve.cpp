@@ -25,6 +25,7 @@ void require_finite(const ContinuumResult& r) {
 ContinuumResult solve(const std::string& name, const InitialField& f, const ContinuumParams& p, double t_end,
                       const ProgressCallback& progress) {
   const SolverInfo& info = solver_info(name);
+  check_boundary(info, p);
   const auto start = std::chrono::steady_clock::now();
   // The solvers' progress points are their safe points: an abort request stops them there.
   const ProgressCallback checked = [&progress](double fraction, double t) {

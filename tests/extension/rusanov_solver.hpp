@@ -16,8 +16,6 @@ namespace shockgas::extension {
 
 // Its own limits: a periodic grid only (the flux wraps), a monotone Courant number.
 inline void check_rusanov(const InitialField&, const continuum::ContinuumParams& p, double t_end) {
-  require(p.boundary == continuum::Boundary::periodic, "continuum.boundary", name_of(p.boundary),
-          "\"periodic\" for rusanov");
   require(p.cfl <= 1 || p.allow_unstable, "continuum.cfl", p.cfl, "a Courant number in (0, 1] for rusanov");
   require(std::isfinite(t_end) && t_end >= 0, "continuum.t_end", t_end, "a finite time >= 0");
 }

@@ -28,11 +28,15 @@ class NewSolver : public testing::Test {
   static void SetUpTestSuite() { continuum::register_solver(rusanov_solver()); }
 };
 
-int run(std::vector<std::string> args) {
+// Runs the command in this process; what it said on stderr into *said.
+int run(std::vector<std::string> args, std::string* said = nullptr) {
   args.insert(args.begin(), "shockgas");
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
-  return app::run_command(static_cast<int>(argv.size()), argv.data());
+  if (said) ::testing::internal::CaptureStderr();
+  const int code = app::run_command(static_cast<int>(argv.size()), argv.data());
+  if (said) *said = ::testing::internal::GetCapturedStderr();
+  return code;
 }
 
 // The sine scene after its shock (data/scenes/sine.toml) with the new solver and the exact one.
@@ -74,15 +78,28 @@ TEST_F(NewSolver, RunsFromASceneAndIsMeasuredAgainstTheExactSolver) {
   EXPECT_TRUE(labelled);
 }
 
+// The scene (rusanov beside the exact hopf_lax) is valid but for its boundary:
+// neither solver sets SolverInfo::outflow, so the registry's preflight refuses
+// outflow, naming the solver: exit 2, nothing written.
 TEST_F(NewSolver, ItsOwnLimitsAreCheckedBeforeAnyWork) {
   const fs::path dir = run_directory("limits");
   fs::remove_all(dir);
   const fs::path out = dir / "out";
-  // The scene is valid (every built-in rule passes); rusanov's preflight refuses it: exit 2, nothing written.
+  std::string said;
   EXPECT_EQ(run({"run", write_scene(dir, 64, 0.5).string(), "--out", out.string(), "-q", "--set",
-                 "continuum.boundary=outflow"}),
+                 "continuum.boundary=outflow"},
+                &said),
             2);
+  EXPECT_NE(said.find("continuum.boundary = \"outflow\" is not allowed"), std::string::npos) << said;
   EXPECT_FALSE(fs::exists(out));
+  continuum::ContinuumParams p;
+  p.boundary = continuum::Boundary::outflow;
+  try {
+    continuum::check_boundary(continuum::solver_info("rusanov"), p);
+    ADD_FAILURE() << "outflow accepted for a periodic-only solver";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.allowed().find("\"periodic\" for solver rusanov"), std::string::npos) << e.what();
+  }
   EXPECT_EQ(run({"run", write_scene(dir, 64, 0.5).string(), "--out", out.string(), "-q"}), 0);
 }
 

@@ -29,6 +29,7 @@ struct SolverInfo {
   bool viscous = false;     // solves at viscosity continuum.nu
   bool exact = false;       // the exact inviscid solution: the others' L1 errors are measured against it
   bool by_default = false;  // run when a scene does not name continuum.solvers
+  bool outflow = false;     // solves with continuum.boundary = "outflow" too (else the periodic problem only)
   // Memory at work per cell, bytes (the run's resource preflight); 0 = not
   // measured, taken as the largest of the registered solvers'.
   double bytes_per_cell = 0;
@@ -57,10 +58,15 @@ std::vector<std::string> solver_names();
 // The solver called `name`; InputError naming continuum.solvers and listing the names if none.
 const SolverInfo& solver_info(const std::string& name);
 
+// InputError "continuum.boundary" where p asks for a boundary the solver does
+// not solve with (SolverInfo::outflow): it would solve another problem.
+void check_boundary(const SolverInfo& info, const ContinuumParams& p);
+
 // The name of the exact solver (the reference of L1 errors and of the comparison).
 std::string reference_solver_name();
 
-// Checks solver `name`'s own limits for f, p and t_end, without solving.
+// Checks solver `name`'s own limits for f, p and t_end, without solving, and
+// that it solves for p.boundary (InputError "continuum.boundary" otherwise).
 void preflight(const std::string& name, const InitialField& f, const ContinuumParams& p, double t_end);
 
 }  // namespace shockgas::continuum
