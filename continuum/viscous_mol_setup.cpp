@@ -29,11 +29,25 @@ void check_resolution(const ContinuumParams& p, const std::vector<double>& v, do
                        "set continuum.allow_unstable = true to run anyway)");
 }
 
+// nu t_end / h^2 <= kMaxMolStiffness: beyond it the solution has decayed to
+// its mean many times over, and the integrators lose it.
+void check_stiffness(const ContinuumParams& p, double t_end, double length) {
+  const double h = length / static_cast<double>(p.cells);
+  const double stiffness = p.nu * t_end / (h * h);
+  if (p.allow_unstable || stiffness <= kMaxMolStiffness) return;
+  throw InputError("continuum.nu", to_text(p.nu),
+                   "nu t_end / h^2 <= " + to_text(kMaxMolStiffness) +
+                       " for the method-of-lines solvers (it is " + to_text(stiffness) +
+                       ": the integrators are not accurate that stiff; hopf_cole takes large nu; set "
+                       "continuum.allow_unstable = true to run anyway)");
+}
+
 }  // namespace
 
 void check_mol_input(const InitialField& f, const ContinuumParams& p, double t_end) {
   check_input(p, t_end);
   check_resolution(p, cell_averages(f, p.cells).v, f.length);
+  check_stiffness(p, t_end, f.length);
 }
 
 SolverInfo mol_registration(const std::string& name) {
@@ -50,6 +64,7 @@ MolProblem make_mol_problem(const InitialField& f, const ContinuumParams& p, dou
   check_input(p, t_end);
   const CellAverages a = cell_averages(f, p.cells);
   check_resolution(p, a.v, f.length);
+  check_stiffness(p, t_end, f.length);
   MolProblem m;
   m.solver = solver;
   m.grid = {p.cells, f.length / static_cast<double>(p.cells), p.nu};
@@ -62,6 +77,8 @@ MolProblem make_mol_problem(const InitialField& f, const ContinuumParams& p, dou
   }
   m.rtol = p.rtol;
   m.atol = p.rtol * (scale > 0 ? scale : 1.0);
+  const auto [lo, hi] = std::minmax_element(a.v.begin(), a.v.end());
+  m.v_min = *lo, m.v_max = *hi;
   m.t_end = t_end;
   m.length = f.length;
   require_finite_state(m, m.y0, 0.0);
@@ -69,13 +86,20 @@ MolProblem make_mol_problem(const InitialField& f, const ContinuumParams& p, dou
 }
 
 void require_finite_state(const MolProblem& m, std::span<const double> y, double t) {
-  for (std::size_t k = 0; k < y.size(); ++k) {
-    if (std::isfinite(y[k])) continue;
+  const auto where = [&](std::size_t k) {
     const std::size_t cell = k / 2;
-    throw RunError(m.solver + ": non-finite " + (k % 2 == 0 ? "velocity" : "density") + " in cell " +
-                   std::to_string(cell) + " (x = " + to_text((static_cast<double>(cell) + 0.5) * m.grid.h) +
-                   ") at t = " + to_text(t));
-  }
+    return " in cell " + std::to_string(cell) +
+           " (x = " + to_text((static_cast<double>(cell) + 0.5) * m.grid.h) + ") at t = " + to_text(t);
+  };
+  for (std::size_t k = 0; k < y.size(); ++k)
+    if (!std::isfinite(y[k]))
+      throw RunError(m.solver + ": non-finite " + (k % 2 == 0 ? "velocity" : "density") + where(k));
+  const double slack = std::max(1e-2, 10 * m.rtol) * (m.v_max - m.v_min);
+  for (std::size_t k = 0; k < y.size(); k += 2)
+    if (y[k] < m.v_min - slack || y[k] > m.v_max + slack)
+      throw RunError(m.solver + ": velocity " + to_text(y[k]) + where(k) + ", outside the initial range [" +
+                     to_text(m.v_min) + ", " + to_text(m.v_max) +
+                     "] that viscous Burgers keeps (maximum principle): the integration failed");
 }
 
 ContinuumResult mol_result(const MolProblem& m, std::span<const double> y) {

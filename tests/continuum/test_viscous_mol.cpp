@@ -152,3 +152,43 @@ TEST(ViscousMol, NonFiniteDataStopWithTheSolverNamed) {
     }
   }
 }
+
+// Beyond the stiffness nu t_end / h^2 at which the integrators are measured to
+// hold their accuracy (kMaxMolStiffness = 4e7) the preflight refuses nu, naming
+// it (finding: cvode at nu = 1e6 returned max|v| = 0.15 where the solution has
+// decayed to 0).
+TEST(ViscousMol, AStiffnessBeyondTheMeasuredRangeIsRefused) {
+  sc::ContinuumParams p;
+  p.cells = 64;
+  p.nu = 1e6;  // nu t / h^2 = 4.1e8 at t = 0.1
+  for (auto solve : {&sc::solve_cvode, &sc::solve_arkode}) {
+    try {
+      solve(sine_field(), p, 0.1, {});
+      ADD_FAILURE() << "nu t / h^2 = 4.1e8 accepted";
+    } catch (const shockgas::InputError& e) {
+      EXPECT_EQ(e.key(), "continuum.nu") << e.what();
+    }
+  }
+  p.nu = 1e4;  // 4.1e6: within the range
+  EXPECT_NO_THROW(sc::solve_cvode(sine_field(), p, 0.1, {}));
+}
+
+// Run anyway (allow_unstable), a failed integration never comes back as a
+// result outside [min v0, max v0], which viscous Burgers keeps (finding: cvode
+// at nu = 1e8 returned |v| = 10 from |v0| <= 1, and 1555 at 1e10): it is a
+// RunError, whether the integrator or the maximum-principle check finds it.
+TEST(ViscousMol, AResultOutsideTheInitialRangeIsAFailure) {
+  InitialField f;
+  f.length = 1.0;
+  f.v0 = [](double x) { return std::sin(2 * std::numbers::pi * x); };
+  f.rho0 = [](double) { return 1.0; };
+  sc::ContinuumParams p;
+  p.cells = 64;
+  p.allow_unstable = true;
+  p.nu = 1e8;
+  try {
+    const auto r = sc::solve_cvode(f, p, 0.1, {});
+    for (const double v : r.v) EXPECT_LE(std::abs(v), 1.0 + 0.01);  // the check's slack: 1 % of the range
+  } catch (const shockgas::RunError&) {
+  }
+}
