@@ -46,7 +46,11 @@ def test_an_unknown_solver_lists_the_registered_ones():
 
 def test_bad_arrays_name_their_argument():
     raises_input_error(lambda: shockgas.particles.simulate(X, V[:-1]), "v")
-    raises_input_error(lambda: shockgas.particles.simulate(X[::-1].copy(), V), "initial.bodies.x")
+    raises_input_error(lambda: shockgas.particles.simulate(X[::-1].copy(), V), "initial.bodies.x[1]")
+    bad_v = V.copy()
+    bad_v[3] = np.nan  # named by itself, not by the position beside it
+    e = raises_input_error(lambda: shockgas.particles.simulate(X, bad_v), "initial.bodies.v[3]")
+    assert str(e).startswith("initial.bodies.v[3] = nan is not allowed")
     raises_input_error(lambda: shockgas.hull(X, V, -np.ones(100), 1.0), "bodies.m")
     raises_input_error(lambda: shockgas.hull(X, V, None, -1.0), "t")
     raises_input_error(lambda: shockgas.hull(np.ones((2, 50)), V, None, 1.0), "x")
@@ -80,3 +84,14 @@ def test_a_run_that_fails_is_a_runtime_error():
     with pytest.raises(RuntimeError, match="blown up"):
         shockgas.continuum.solve("godunov", "sin(2*pi*x)", cells=64, t_end=5.0, cfl=50.0,
                                  allow_unstable=True)
+
+
+def test_deposit_refuses_bodies_it_cannot_deposit():
+    # found: a NaN position spread NaN over two cells, a negative mass gave negative densities
+    one = np.array([0.5])
+    raises_input_error(lambda: shockgas.compare.deposit(np.array([np.nan]), one, length=1.0, cells=4),
+                       "compare.bodies.x[0]")
+    raises_input_error(lambda: shockgas.compare.deposit(one, np.array([np.inf]), length=1.0, cells=4),
+                       "compare.bodies.v[0]")
+    raises_input_error(lambda: shockgas.compare.deposit(np.array([0.1, 0.6]), np.ones(2), m=np.array([1.0, -1.0]),
+                                                        length=1.0, cells=4), "compare.bodies.m[1]")

@@ -47,7 +47,8 @@ struct GridFields {
 };
 
 // Deposits b (positions taken modulo length) on `cells` cells of [0, length).
-// Throws InputError unless length > 0, cells >= 1 and b's arrays agree in size.
+// Throws InputError unless length > 0, cells >= 1, b's arrays agree in size
+// and every body has a finite x and v and a finite mass > 0.
 GridFields deposit_on_grid(const Bodies& b, double length, std::size_t cells, DepositScheme scheme);
 
 }  // namespace shockgas::compare
