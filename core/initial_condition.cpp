@@ -15,8 +15,15 @@ namespace shockgas {
 
 namespace {
 
-// Reads `x v [m]` lines; '#' starts a comment.
-Bodies read_bodies_file(const std::string& path) {
+// Whether nothing but blanks is left in row.
+bool at_end(std::istringstream& row) {
+  row >> std::ws;
+  return row.eof();
+}
+
+// Reads `x v [m]` lines; '#' starts a comment. The file must hold N bodies:
+// N is what the summary reports and, at L = 0, sets the ring's length.
+Bodies read_bodies_file(const std::string& path, std::size_t N) {
   std::ifstream in(path);
   if (!in) throw InputError("initial.file", to_text(path), "a readable text file with columns x v [m]");
   Bodies b;
@@ -30,7 +37,10 @@ Bodies read_bodies_file(const std::string& path) {
     if (!(row >> x)) continue;  // blank line
     const std::string where = path + ":" + std::to_string(lineno);
     if (!(row >> v)) throw InputError("initial.file", to_text(line), "lines `x v [m]`", where);
-    if (!(row >> m)) m = 1.0;
+    if (!at_end(row) && !(row >> m))
+      throw InputError("initial.file", to_text(line), "lines `x v [m]`", where);
+    if (!at_end(row))
+      throw InputError("initial.file", to_text(line), "lines `x v [m]`: two or three numbers", where);
     if (!std::isfinite(x) || !std::isfinite(v) || !std::isfinite(m) || m <= 0)
       throw InputError("initial.file", to_text(line), "finite x, v and mass m > 0", where);
     if (!b.x.empty() && x < b.x.back())
@@ -38,6 +48,8 @@ Bodies read_bodies_file(const std::string& path) {
     b.push_back(x, v, m);
   }
   if (b.size() < 2) throw InputError("initial.file", to_text(path), "a file with at least 2 bodies");
+  require(b.size() == N, "initial.N", N,
+          "the number of bodies in initial.file (" + std::to_string(b.size()) + " in " + path + ")");
   return b;
 }
 
@@ -58,7 +70,7 @@ const ParameterTable<InitialParams>& initial_parameters() {
           "initial velocities: uniform on [-amplitude, amplitude], Gaussian (sd amplitude), from file, or v0(x)");
     t.add(&P::amplitude, "amplitude", "length/time", "velocity scale", allowed(above(0)));
     t.add(&P::remove_mean, "remove_mean", "", "subtract the mean velocity");
-    t.add(&P::file, "file", "", "bodies `x v [m]` per line, sorted by x",
+    t.add(&P::file, "file", "", "bodies `x v [m]` per line, sorted by x; initial.N must count them",
           described("an existing text file (velocities = \"file\")"));
     t.add(&P::seed, "seed", "", "random seed (realization k uses a seed derived from it)", allowed(at_least(0)));
     t.add(&P::L, "L", "length", "ring length; 0 means L = N (unit spacing)", allowed(at_least(0)));
@@ -97,7 +109,7 @@ void validate(const InitialParams& p) {
 }
 
 Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization) {
-  if (p.velocities == Velocities::file) return read_bodies_file(p.file);
+  if (p.velocities == Velocities::file) return read_bodies_file(p.file, p.N);
   Bodies b;
   if (InitialStream::streamable(p)) {
     InitialStream stream(p, realization);

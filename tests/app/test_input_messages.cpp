@@ -72,6 +72,29 @@ TEST(InputMessages, ABadBodiesFileWritesNothing) {
   write_text(root / "bodies.txt", "0 1\n1 x\n2 0.5\n");
   expect_bad(run_text(root, "[initial]\nvelocities = \"file\"\nfile = \"bodies.txt\"\n[particles]\nt_end = 1\n"),
              "initial.file");
+  // A word or a fourth number after x v [m] was dropped without a word.
+  for (const char* line : {"0 1 junk\n", "0 1 2 3\n"}) {
+    write_text(root / "bodies.txt", std::string(line) + "1 0\n2 -1\n");
+    expect_bad(run_text(root,
+                        "[initial]\nvelocities = \"file\"\nfile = \"bodies.txt\"\nN = 3\n[particles]\n"
+                        "t_end = 1\ngeometry = \"line\"\n"),
+               "bodies.txt:1: initial.file");
+  }
+}
+
+// The file's bodies are the run's: initial.N must count them (finding: a
+// 3-body file ran 3 bodies with summary.json saying N = 2, and a ring's length
+// L = N came from the scene's N, not the file).
+TEST(InputMessages, ABodiesFileMustHoldInitialNBodies) {
+  const fs::path root = fresh_dir("input-bodies-count");
+  write_text(root / "bodies.txt", "0 1\n1 0\n2 -1\n");
+  const std::string scene =
+      "[initial]\nvelocities = \"file\"\nfile = \"bodies.txt\"\n[particles]\nt_end = 1\n"
+      "geometry = \"line\"\n[output]\nplots = false\n";
+  for (const char* N : {"initial.N=2", "initial.N=4"})
+    expect_bad(run_text(root, scene, {"--set", N}),
+               "is not allowed; allowed: the number of bodies in initial.file (3 in ");
+  EXPECT_EQ(run_text(root, scene, {"--set", "initial.N=3"}).first, 0);
 }
 
 TEST(InputMessages, ASpaceTimeRecordTooLargeWritesNothingAndNamesItsLine) {
