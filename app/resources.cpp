@@ -294,17 +294,20 @@ MemoryLimit memory_limit(const fs::path& root) {
   return limit;
 }
 
-void check_resources(const Scene& scene, const fs::path& out, bool plots) {
+void check_memory(const Scene& scene) {
   const ResourceEstimate memory = estimate_memory(scene);
   const MemoryLimit limit = memory_limit();
-  if (memory.total() > limit.bytes) {
-    const std::string key = blamed_key(scene, memory.largest());
-    const auto origin = scene.key_origin.find(key);
-    throw InputError(key.empty() ? "scene" : key, value_of(scene, key),
-                     "a scene that fits in the memory available: it needs " +
-                         estimate_text(memory, limit.bytes, "available (" + limit.source + ")"),
-                     origin != scene.key_origin.end() ? origin->second : scene.path);
-  }
+  if (memory.total() <= limit.bytes) return;
+  const std::string key = blamed_key(scene, memory.largest());
+  const auto origin = scene.key_origin.find(key);
+  throw InputError(key.empty() ? "scene" : key, value_of(scene, key),
+                   "a scene that fits in the memory available: it needs " +
+                       estimate_text(memory, limit.bytes, "available (" + limit.source + ")"),
+                   origin != scene.key_origin.end() ? origin->second : scene.path);
+}
+
+void check_resources(const Scene& scene, const fs::path& out, bool plots) {
+  check_memory(scene);
   const ResourceEstimate disk = estimate_disk(scene, plots);
   const double free = static_cast<double>(free_bytes(resolve_target(out)));
   if (disk.total() <= free) return;

@@ -54,4 +54,9 @@ MemoryLimit memory_limit(const std::filesystem::path& root = "/");
 // (memory) or naming --out (disk: the file system that will hold the results).
 void check_resources(const Scene& scene, const std::filesystem::path& out, bool plots);
 
+// The memory half of check_resources, for work that writes no directory (the
+// Python module's calls, which would otherwise end in the kernel's
+// out-of-memory killer).
+void check_memory(const Scene& scene);
+
 }  // namespace shockgas::app

@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "interruptible.hpp"
 #include "keywords.hpp"
+#include "memory_check.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/expression.hpp"
@@ -122,6 +123,7 @@ py::dict solve(const std::string& name, const py::handle& v0, const py::handle& 
   require(f.pieces == 0 || p.cells % f.pieces == 0, "continuum.cells", p.cells,
           "a multiple of the cells of v0 (" + std::to_string(f.pieces) + ")");
   continuum::validate(p);
+  check_memory_of(0, nullptr, &p);
   continuum::preflight(name, f, p, p.t_end);
   const std::string stage = "continuum/" + name;
   auto work = [&](ProgressRelay& relay) {

@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "interruptible.hpp"
 #include "keywords.hpp"
+#include "memory_check.hpp"
 #include "shockgas/compare/particle_analysis.hpp"
 #include "shockgas/core/sticky_hull.hpp"
 #include "shockgas/particles/simulate.hpp"
@@ -90,6 +91,7 @@ py::dict simulate(const py::handle& x, const py::handle& v, const py::handle& m,
   particles::validate(p);
   require(p.realizations == 1, "particles.realizations", p.realizations,
           "1: simulate runs the given bodies once (an ensemble: shockgas.particles.ensemble)");
+  check_memory_of(b.size(), &p, nullptr);
   auto work = [&](ProgressRelay& relay) {
     relay.report("particles", 0.0, 0.0);
     auto r = particles::simulate(b, L, p, [&](double f, double t) { relay.report("particles", f, t); });

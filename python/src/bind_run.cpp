@@ -13,6 +13,7 @@
 #include "captured_outputs.hpp"
 #include "interruptible.hpp"
 #include "keywords.hpp"
+#include "resources.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -131,6 +132,7 @@ py::dict run_scene(const std::function<app::Scene()>& parse, const py::object& o
     app::CapturedOutputs captured = run_interruptible<app::CapturedOutputs>(
         [&](ProgressRelay& relay) {
           const app::Scene scene = parse();
+          app::check_memory(scene);  // as `shockgas run` does, before any work
           return scene.has_sweep ? capture_sweep(scene, out_dir, plots, relay)
                                  : capture_single(scene, out_dir, plots, relay);
         },

@@ -95,3 +95,13 @@ def test_deposit_refuses_bodies_it_cannot_deposit():
                        "compare.bodies.v[0]")
     raises_input_error(lambda: shockgas.compare.deposit(np.array([0.1, 0.6]), np.ones(2), m=np.array([1.0, -1.0]),
                                                         length=1.0, cells=4), "compare.bodies.m[1]")
+
+
+def test_a_call_that_cannot_fit_in_memory_is_refused_before_any_work():
+    # found: the kernel's out-of-memory killer ended the Python process (the
+    # command refused the same scene); petabytes, beyond any machine
+    e = raises_input_error(lambda: shockgas.particles.simulate(X, V, t_end=1.0, histogram_bins=10**12),
+                           "particles.histogram_bins")
+    assert "a scene that fits in the memory available" in e.allowed
+    raises_input_error(lambda: shockgas.continuum.solve("godunov", V, dx=0.01, cells=10**13), "continuum.cells")
+    raises_input_error(lambda: shockgas.particles.ensemble(N=10**15, t_end=1.0), "initial.N")
