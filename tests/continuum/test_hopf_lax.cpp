@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "shockgas/continuum/hopf_lax.hpp"
+#include "shockgas/continuum/registry.hpp"
+#include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
 #include "shockgas/core/sticky_hull.hpp"
@@ -339,6 +341,28 @@ TEST(HopfLax, RefusesBadInput) {
   f = sine();
   f.rho0 = [](double) { return -1.0; };
   EXPECT_THROW(solve_hopf_lax(f, 10, 0.1), InputError);
+}
+
+// Data so large that x - t v0 rounds by more than 1e-3 of a cell (max |v0| t /
+// h > 4.5e12) are refused, naming initial.v0 (found: |v0| ~ 1e20 gave v in
+// [-3990, -3662] for a sine of mean 0, whose exact sawtooth lies in [-5, 5]);
+// 1e10, below the bound, is still the sawtooth.
+TEST(HopfLax, DataTooLargeForDoublesAreRefused) {
+  InitialField f;
+  f.length = 1.0;
+  ContinuumParams p;
+  p.cells = 64;
+  for (const double a : {1e10, 1e20}) {
+    f.v0 = [a](double x) { return a * std::sin(2 * std::numbers::pi * x); };
+    f.rho0 = [](double) { return 1.0; };
+    if (a * 0.1 * 64 <= 4.5e12) {
+      const auto r = solve("hopf_lax", f, p, 0.1);
+      for (const double v : r.v) EXPECT_LE(std::abs(v), 1 / (2 * 0.1)) << a;  // the sawtooth (x - x_s) / t
+    } else {
+      EXPECT_THROW(solve("hopf_lax", f, p, 0.1), InputError) << a;
+      EXPECT_THROW(preflight("hopf_lax", f, p, 0.1), InputError) << a;
+    }
+  }
 }
 
 }  // namespace
