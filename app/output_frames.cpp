@@ -165,7 +165,9 @@ std::vector<Declaration> evolution() {
                   "{evolution.breaking_time_theory}"),
       key(p, "evolution.shock_formation_frames", "1", "the smooth frames resolved well enough for that line",
           continuum, evolution_key([](const Evolution& e) { return Json(e.formation_frames); })),
-      key(p, "evolution.breaking_time_theory", "time", "theory: t* = 1 / max(-v0') of the initial velocity",
+      key(p, "evolution.breaking_time_theory", "time",
+          "theory: t* = 1 / max(-v0') of the initial velocity; 0 where it jumps down (a shock from the "
+          "start)",
           "for initial.velocities = \"expression\"", with_frames([](const Frames& f, Emitter& out) {
             if (std::isfinite(f.breaking_time_theory)) out.json(f.breaking_time_theory);
           })),
@@ -182,7 +184,7 @@ std::vector<Declaration> evolution() {
       with_theory(key(p, "evolution.lobe_area_change", "1",
                       "largest |A(t) / A(0) - 1| of the lobes above and below the mean over the frames",
                       continuum, evolution_key([](const Evolution& e) { return Json(e.lobe_area_change); })),
-                  "0 (isolated wave)"),
+                  "0 for an isolated wave whose lobes meet no other wave (not for data with jumps)"),
       key(p, "evolution.shocks_max", "1", "most shocks in one frame", continuum,
           evolution_key([](const Evolution& e) {
             double n = 0;
