@@ -88,6 +88,7 @@ void add_merge(CLI::App& app, Arguments& args) {
       ->required();
   merge->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)")
       ->check(kDirectoryName);
+  merge->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
   merge->add_flag("--quiet,-q", args.quiet, "no progress output");
   merge->add_flag("--no-plots", args.no_plots, "skip the PNG plots");
 }

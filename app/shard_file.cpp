@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "checkpoint.hpp"
 #include "durable_file.hpp"
 #include "manifest.hpp"
 #include "output_layout.hpp"
@@ -69,8 +70,16 @@ void write_shard(const fs::path& dir, const Scene& scene, const EnsemblePlan& pl
 ShardHeader read_shard_header(const std::string& dir) {
   const std::string allowed =
       "a shard directory, written by `shockgas run SCENE --realizations A:B --out DIR`";
-  if (!fs::is_regular_file(shard_file(dir)))
-    throw InputError("shard", to_text(dir), allowed + " (no result.h5 in it)");
+  std::error_code ec;
+  if (fs::is_regular_file(dir, ec))
+    throw InputError("shard", to_text(dir), allowed + " (this is a file: give the directory that holds it)");
+  if (!fs::is_regular_file(shard_file(dir))) {
+    const bool interrupted = fs::exists(checkpoint_path(dir), ec);
+    throw InputError(
+        "shard", to_text(dir),
+        allowed + (interrupted ? " (this one holds an interrupted shard's checkpoint" + resume_hint(dir) + ")"
+                               : " (no result.h5 in it)"));
+  }
   ShardHeader h;
   h.dir = dir;
   const Hdf5File h5 = Hdf5File::open(shard_file(dir).string());

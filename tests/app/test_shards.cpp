@@ -158,7 +158,16 @@ TEST_F(Shards, DirectoriesThatAreNoShardsAreRefused) {
   EXPECT_NE(said_.find("holds a whole run"), std::string::npos) << said_;
   EXPECT_EQ(merge({"nowhere"}, "merged"), 2);
   EXPECT_NE(said_.find("no result.h5"), std::string::npos) << said_;
+  EXPECT_EQ(merge({"whole/result.h5"}, "merged"), 2);  // said "no result.h5 in it"
+  EXPECT_NE(said_.find("this is a file: give the directory that holds it"), std::string::npos) << said_;
   EXPECT_FALSE(fs::exists(dir_ / "merged"));
+  // The refusal of another scene's results says to give --force: merge takes it.
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:10", "all"), 0);
+  std::ofstream(dir_ / "other.toml") << "[scene]\nname = \"other\"\n" << kSweep;
+  ASSERT_EQ(run({"run", path("other.toml"), "--out", path("theirs"), "-q"}), 0);
+  EXPECT_EQ(merge({"all"}, "theirs"), 2);
+  EXPECT_NE(said_.find("give --force"), std::string::npos) << said_;
+  EXPECT_EQ(run({"merge", path("all"), "--out", path("theirs"), "--force", "-q"}), 0);
 }
 
 TEST_F(Shards, SlicesOutsideTheRunAreRefusedBeforeAnyWork) {
