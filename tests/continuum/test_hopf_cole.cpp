@@ -212,3 +212,23 @@ TEST(HopfCole, AutoKeepsAnUsableFftResultWhenTheLogPathIsTooDear) {
   EXPECT_GT(r.stats.at("fft_velocity_error_bound"), p.rtol * 1.5);
   EXPECT_NE(r.method_note.find("above tolerance"), std::string::npos) << r.method_note;
 }
+
+// At large nu (exp(-Psi / 2 nu) within a factor e of 1) the log path has no
+// edge over the fft path and no bound of its own: auto keeps the usable fft
+// result, and where even that has lost its digits the solve fails (found:
+// nu = 1e7 and 1e10 on a sine of 64 cells gave |v| = 9e-5 and 0.02 by the log
+// path where the solution has decayed to 0).
+TEST(HopfCole, AtLargeViscosityAutoKeepsTheFftPathOrFails) {
+  InitialField f;
+  f.length = 1.0;
+  f.v0 = [](double x) { return std::sin(2 * pi * x); };
+  f.rho0 = [](double) { return 1.0; };
+  sc::ContinuumParams p;
+  p.cells = 64;
+  p.nu = 1e7;
+  const sc::ContinuumResult r = sc::solve_hopf_cole(f, p, 0.1);
+  EXPECT_EQ(r.stats.at("log_path"), 0.0);
+  for (const double v : r.v) EXPECT_LE(std::abs(v), r.stats.at("fft_velocity_error_bound"));  // exact: 0
+  p.nu = 1e10;  // the fft bound 4e-3 is above the 1e-3 max|v0| at which a result is never returned
+  EXPECT_THROW(sc::solve_hopf_cole(f, p, 0.1), shockgas::RunError);
+}
