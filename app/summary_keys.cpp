@@ -58,8 +58,12 @@ std::vector<Declaration> provenance_and_initial() {
           initial([](const InitialCondition& c) { return c.params().N; })),
       key(i, "initial.length", "length", "domain length (L, or N for unit spacing; domain for expressions)",
           "", initial([](const InitialCondition& c) { return c.length(); })),
-      key(i, "initial.positions", "", as_used("initial", "positions"), "",
-          initial([](const InitialCondition& c) { return name_of(c.params().positions); })),
+      key(i, "initial.positions", "",
+          as_used("initial", "positions") + "; \"file\" where initial.file gives them", "",
+          initial([](const InitialCondition& c) {
+            const bool from_file = c.params().velocities == Velocities::file;
+            return from_file ? std::string("file") : std::string(name_of(c.params().positions));
+          })),
       key(i, "initial.velocities", "", as_used("initial", "velocities"), "",
           initial([](const InitialCondition& c) { return name_of(c.params().velocities); })),
       key(i, "initial.seed", "", as_used("initial", "seed"), "",

@@ -95,6 +95,8 @@ TEST(InputMessages, ABodiesFileMustHoldInitialNBodies) {
     expect_bad(run_text(root, scene, {"--set", N}),
                "is not allowed; allowed: the number of bodies in initial.file (3 in ");
   EXPECT_EQ(run_text(root, scene, {"--set", "initial.N=3"}).first, 0);
+  // and the summary says where the positions came from (it said "lattice")
+  EXPECT_NE(read_text(root / "out" / "summary.json").find("\"positions\": \"file\""), std::string::npos);
 }
 
 TEST(InputMessages, ASpaceTimeRecordTooLargeWritesNothingAndNamesItsLine) {
