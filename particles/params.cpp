@@ -23,7 +23,9 @@ ParameterTable<ParticleParams> declare() {
         "merges "
         "or collapse), the global queue, or auto = windows where they apply");
   t.add(&P::t_end, "t_end", "time", "final time", allowed(above(0)));
-  t.add(&P::samples, "samples", "1", "log-spaced sample times in [1, t_end]", allowed(at_least(1)));
+  t.add(&P::samples, "samples", "1",
+        "log-spaced sample times in [1, t_end] (in [t_end / 1000, t_end] where t_end <= 1)",
+        allowed(at_least(1)));
   t.add(&P::realizations, "realizations", "1", "independent realizations (ensemble)", allowed(at_least(1)));
   t.add(&P::threads, "threads", "1", "worker threads; 0 = all cores", allowed(at_least(0)));
   t.add(&P::snapshots, "snapshots", "time", "times at which x, v, m are stored",
