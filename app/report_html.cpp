@@ -209,7 +209,8 @@ std::string variants_section(const fs::path& dir, const Json& summary) {
   return out;
 }
 
-std::string scene_section(const std::map<std::string, std::string>& p) {
+// build: summary.json's (the instruction set compiled for), not in result.h5.
+std::string scene_section(const std::map<std::string, std::string>& p, const std::string& build) {
   auto get = [&p](const char* name) {
     const auto it = p.find(name);
     return it == p.end() ? std::string() : it->second;
@@ -223,6 +224,7 @@ std::string scene_section(const std::map<std::string, std::string>& p) {
   out += "<h2 id=\"provenance\">Provenance</h2>\n<table>\n<tbody>\n";
   for (const char* name : {"shockgas_version", "git_commit", "created_utc", "scene_path"})
     out += "<tr><th>" + std::string(name) + "</th><td>" + html::escape(get(name)) + "</td></tr>\n";
+  if (!build.empty()) out += "<tr><th>build</th><td>" + html::escape(build) + "</td></tr>\n";
   return out + "</tbody>\n</table>\n";
 }
 
@@ -252,7 +254,7 @@ void write_report_html(const fs::path& dir) {
       "<h2 id=\"figures\">Figures of merit</h2>\n<p class=\"muted\">Each value with what it means and what "
       "theory says it should be (docs/output.md).</p>\n" +
       figures_table(summary) + reference_table(scene, summary) + variants_section(dir, summary);
-  body += plots + scene_section(p);
+  body += plots + scene_section(p, summary.value("build", std::string()));
   const fs::path tmp = dir / "report.html.partial";
   try {
     write_file(tmp, html::page("shockgas: " + name, body));  // a failure names the file and the reason

@@ -11,6 +11,7 @@
 #include "html_page.hpp"
 #include "output_layout.hpp"
 #include "run_command.hpp"
+#include "shockgas/version.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -51,6 +52,9 @@ TEST(ReportHtml, ShowsEverySummaryKeyWithItsMeaningAndTheory) {
   }
   // a theory that names another key shows that key's value: t_dissip ~ 1/eps = 20 at r = 0.9
   EXPECT_NE(page.find("~ 20 time"), std::string::npos);
+  // the provenance carries the build summary.json records (it was left out)
+  EXPECT_NE(page.find("<tr><th>build</th><td>" + html::escape(kBuildTarget) + "</td></tr>"),
+            std::string::npos);
   // nothing but what it carries: no address to fetch, and a policy refusing any
   EXPECT_EQ(page.find("://"), std::string::npos);
   EXPECT_EQ(page.find(" src=\"data:"), std::string::npos);  // --no-plots: no picture to embed
