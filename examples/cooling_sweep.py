@@ -36,13 +36,16 @@ def sweep():
 
 def plot(results, path):
     fig, (ax, ax_exp) = plt.subplots(1, 2, figsize=(11, 4.5), gridspec_kw={"width_ratios": [1.6, 1]})
-    for (r, res), colour in zip(results.items(), ("tab:blue", "tab:orange", "tab:green")):
+    # Fits that coincide (r = 0 and 0.5 cool alike) stay visible: wide solid
+    # under narrower dashed and dotted lines.
+    styles = (("tab:blue", "-", 4.0), ("tab:orange", (0, (6, 3)), 2.2), ("tab:green", (0, (1, 1.5)), 2.0))
+    for (r, res), (colour, style, width) in zip(results.items(), styles):
         d = res.datasets
         ax.errorbar(d["/particles/t"], d["/particles/T"], yerr=d["/particles/T_stderr"], fmt="o", ms=3,
                     capsize=2, color=colour, label=f"r = {r}: ensemble mean ± standard error")
         t_fit, T_fit = d["/particles/analysis/T_fit_t"], d["/particles/analysis/T_fit_T"]
-        ax.plot(t_fit, T_fit, "-", color=colour, lw=2,
-                label=f"fit: T ~ t^({res.figures['analysis.T_exponent']:.3f})")
+        ax.plot(t_fit, T_fit, ls=style, color=colour, lw=width,
+                label=f"r = {r}: fit T ~ t^({res.figures['analysis.T_exponent']:.3f})")
     # The theory's slope -2/3, anchored on the r = 0 fit at its window's start.
     t0, T0 = results[0.0].datasets["/particles/analysis/T_fit_t"][0], results[0.0].datasets[
         "/particles/analysis/T_fit_T"][0]
