@@ -51,18 +51,20 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
         spread + "; roundoff bound on v " + text(bound) + " vs rtol*max|v0| = " + text(tolerance);
     const bool usable = bound <= kFftDigitsLost * scale;
     const double terms = log_theta_kernel_terms(psi0, p.nu, t);
-    // The log path is for small nu, where exp(-Psi / 2 nu) spans more than
-    // doubles hold. Where it spans less than e (large nu) it meets the same
-    // roundoff as the fft path, 2 nu eps / h in v, and without a bound (found:
-    // nu = 1e10 gave |v| = 0.02 for a decayed sine): the fft path then stands.
-    const bool log_helps = r.stats["spread_over_2nu"] > 1;
-    if (!log_helps && !usable && p.hopf_cole_path == HopfColePath::automatic)
-      throw RunError(std::string(kName) + ": nu too large for doubles at t = " + text(t) + " (" + why +
-                     "): v = -2 nu d/dx log theta loses its digits on both paths");
     if (bound <= tolerance) {
       r.method_note = "Hopf-Cole, fft path (" + why + ")";
       return fft.values;
     }
+    // The log path is for small nu, where exp(-Psi / 2 nu) spans more than
+    // doubles hold. Where it spans less than e (large nu) it meets the same
+    // roundoff as the fft path, 2 nu eps / h in v, and without a bound (found:
+    // nu = 1e10 gave |v| = 0.02 for a decayed sine): the fft path then stands.
+    // A constant v0 (spread 0) the log path solves exactly.
+    const double spread_over_2nu = r.stats["spread_over_2nu"];
+    const bool log_helps = spread_over_2nu > 1 || spread_over_2nu == 0;
+    if (!log_helps && !usable && p.hopf_cole_path == HopfColePath::automatic)
+      throw RunError(std::string(kName) + ": nu too large for doubles at t = " + text(t) + " (" + why +
+                     "): v = -2 nu d/dx log theta loses its digits on both paths");
     if (p.hopf_cole_path == HopfColePath::fft && !usable)
       throw RunError(std::string(kName) + ": the forced fft path lost its digits at t = " + text(t) + " (" + why +
                      "); use continuum.hopf_cole_path = \"log\" or \"auto\"");

@@ -231,4 +231,6 @@ TEST(HopfCole, AtLargeViscosityAutoKeepsTheFftPathOrFails) {
   for (const double v : r.v) EXPECT_LE(std::abs(v), r.stats.at("fft_velocity_error_bound"));  // exact: 0
   p.nu = 1e10;  // the fft bound 4e-3 is above the 1e-3 max|v0| at which a result is never returned
   EXPECT_THROW(sc::solve_hopf_cole(f, p, 0.1), shockgas::RunError);
+  f.v0 = [](double) { return 0.0; };  // spread 0: solved exactly, at any nu
+  for (const double v : sc::solve_hopf_cole(f, p, 0.1).v) EXPECT_EQ(v, 0.0);
 }
