@@ -212,7 +212,9 @@ std::vector<std::string> clear_leftovers(const fs::path& target) {
 
 std::string with_staging_as_target(const std::string& message) {
   // "/." NAME ".tmp-" PID "-" and mkdtemp's six letters or digits (make_staging).
-  static const std::regex staging(R"(/\.([^/]+)\.tmp-[0-9]+-[A-Za-z0-9]{6}(?=/|$|[^A-Za-z0-9]))");
+  // Only paths into it ("/"): a message naming the staging directory itself
+  // (a failed exchange with the target) keeps both names.
+  static const std::regex staging(R"(/\.([^/]+)\.tmp-[0-9]+-[A-Za-z0-9]{6}(?=/))");
   return std::regex_replace(message, staging, "/$1");
 }
 

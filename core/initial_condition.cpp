@@ -34,8 +34,10 @@ Bodies read_bodies_file(const std::string& path, std::size_t N) {
     if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
     std::istringstream row(line);
     double x, v, m = 1.0;
-    if (!(row >> x)) continue;  // blank line
+    if (at_end(row)) continue;  // blank line
     const std::string where = path + ":" + std::to_string(lineno);
+    if (!(row >> x))
+      throw InputError("initial.file", to_text(line), "lines `x v [m]` ('#' starts a comment)", where);
     if (!(row >> v)) throw InputError("initial.file", to_text(line), "lines `x v [m]`", where);
     if (!at_end(row) && !(row >> m))
       throw InputError("initial.file", to_text(line), "lines `x v [m]`", where);

@@ -12,6 +12,7 @@ the line "cannot write PATH: REASON", when the system refuses a file (a full dis
 """
 import errno
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -315,12 +316,13 @@ def ffmpeg(args, partial, fmt, stdin=None):
 
 def finished(proc):
     """ffmpeg's end: EncoderFailed on a non-zero status, and also on an "Error ..."
-    line with status 0, which ffmpeg 5 returns when it cannot write the trailer
-    or close the file (a full disk): the file is then cut short."""
+    line with status 0, which ffmpeg returns when it cannot write the trailer or
+    close the file (a full disk): the file is then cut short. ffmpeg 5 starts the
+    line with "Error", later versions after the muxer's "[out#0/mp4 @ 0x...] "."""
     said = proc.stderr.read().decode(errors="replace")
     if proc.wait() != 0:
         raise EncoderFailed(f"ffmpeg failed (exit {proc.returncode})", said)
-    if any(line.startswith("Error") for line in said.splitlines()):
+    if any(re.match(r"(\[[^]]*\] )?Error\b", line) for line in said.splitlines()):
         raise EncoderFailed("ffmpeg failed (exit 0, with errors)", said)
     if said:
         sys.stderr.write(said)

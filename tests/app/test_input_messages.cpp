@@ -72,8 +72,9 @@ TEST(InputMessages, ABadBodiesFileWritesNothing) {
   write_text(root / "bodies.txt", "0 1\n1 x\n2 0.5\n");
   expect_bad(run_text(root, "[initial]\nvelocities = \"file\"\nfile = \"bodies.txt\"\n[particles]\nt_end = 1\n"),
              "initial.file");
-  // A word or a fourth number after x v [m] was dropped without a word.
-  for (const char* line : {"0 1 junk\n", "0 1 2 3\n"}) {
+  // A word or a fourth number after x v [m] was dropped without a word, and a
+  // line that did not start with a number (a header, nan, 1e500) was skipped.
+  for (const char* line : {"0 1 junk\n", "0 1 2 3\n", "x v m\n0 1\n", "nan 2\n", "1e500 0\n"}) {
     write_text(root / "bodies.txt", std::string(line) + "1 0\n2 -1\n");
     expect_bad(run_text(root,
                         "[initial]\nvelocities = \"file\"\nfile = \"bodies.txt\"\nN = 3\n[particles]\n"

@@ -205,6 +205,10 @@ TEST(RunDirectory, AFailureNamesTheFileInTheTargetNotInTheStagingDirectory) {
                                                  target + "/a.png");
   EXPECT_EQ(with_staging_as_target("cannot write /x/.run.tmp-12/result.h5"),
             "cannot write /x/.run.tmp-12/result.h5");
+  // the staging directory itself (a failed exchange) keeps its name
+  const std::string exchange =
+      "cannot exchange " + dir.staging().string() + " and " + target + ": Invalid argument";
+  EXPECT_EQ(with_staging_as_target(exchange), exchange);
 }
 
 TEST(RunDirectory, WhatKilledRunsLeftIsClearedByTheNextRun) {
