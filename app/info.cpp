@@ -136,8 +136,11 @@ RunFilesCheck check_run_files(const std::string& path, bool result_checked) {
   std::error_code ec;
   const fs::path file = fs::is_directory(path, ec) ? fs::path(path) / "result.h5" : fs::path(path);
   const fs::path dir = file.parent_path().empty() ? "." : file.parent_path();
-  // `info result.h5` in the run's own directory: named by its path, not as "."
-  const fs::path shown = file.parent_path().empty() ? fs::current_path(ec) : dir;
+  // `info result.h5`, `info .` or `info ..` name the directory by its path, not as "." or ".."
+  const std::string last = dir.filename().string();
+  fs::path shown =
+      last.empty() || last == "." || last == ".." ? fs::absolute(dir, ec).lexically_normal() : dir;
+  if (!shown.has_filename() && shown != shown.root_path()) shown = shown.parent_path();
   const auto manifest = read_manifest(dir);
   if (!manifest) return {};
   // The result file itself was checked before it was described, if listed.

@@ -107,8 +107,15 @@ Manifest write_manifest_of(const fs::path& dir, const std::string& scene,
   m.scene = scene;
   for (const std::string& f : files) m.files.push_back({f, fs::file_size(dir / f), sha256_of_file(dir / f)});
   const std::string temporary = std::string(kManifestFile) + ".partial-" + std::to_string(::getpid());
-  write_manifest_file(dir, m, temporary);
+  try {
+    write_manifest_file(dir, m, temporary);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(dir / temporary, ec);  // nothing half-written beside the files it would vouch for
+    throw;
+  }
   fs::rename(dir / temporary, dir / kManifestFile);
+  sync_directory(dir);
   return m;
 }
 

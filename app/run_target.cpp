@@ -63,25 +63,29 @@ bool legacy_run_file(const fs::path& relative) {
 // with no call that resolves a name (fs::relative would), so a name gone
 // between the listing and the check cannot fail the run.
 std::optional<std::string> foreign_entry(const fs::path& dir, const std::optional<Manifest>& manifest) {
-  std::error_code ec;
-  fs::recursive_directory_iterator it(dir, ec), end;
-  for (; !ec && it != end; it.increment(ec)) {
-    const auto type = it->symlink_status(ec).type();
-    if (ec || type == fs::file_type::not_found) {
-      ec.clear();
-      continue;
+  // A subdirectory removed while it is entered ends the listing with ENOENT:
+  // the listing starts again rather than pass what it did not see.
+  for (int attempt = 0;; ++attempt) {
+    std::error_code ec;
+    fs::recursive_directory_iterator it(dir, ec), end;
+    for (; !ec && it != end; it.increment(ec)) {
+      const auto type = it->symlink_status(ec).type();
+      if (ec || type == fs::file_type::not_found) {
+        ec.clear();
+        continue;
+      }
+      if (type == fs::file_type::directory) continue;
+      const fs::path relative = it->path().lexically_relative(dir);
+      const bool ours = type != fs::file_type::regular   ? false
+                        : run_in_progress_file(relative) ? true  // an interrupted run's, to resume
+                        : manifest ? relative == kManifestFile || manifest->find(relative.generic_string())
+                                   : legacy_run_file(relative);
+      if (!ours) return relative.generic_string();
     }
-    if (type == fs::file_type::directory) continue;
-    const fs::path relative = it->path().lexically_relative(dir);
-    const bool ours = type != fs::file_type::regular   ? false
-                      : run_in_progress_file(relative) ? true  // an interrupted run's, to resume
-                      : manifest ? relative == kManifestFile || manifest->find(relative.generic_string())
-                                 : legacy_run_file(relative);
-    if (!ours) return relative.generic_string();
+    if (!ec) return std::nullopt;
+    if (ec != std::errc::no_such_file_or_directory || attempt == 2)
+      throw fs::filesystem_error("cannot list the output directory", dir, ec);
   }
-  if (ec && ec != std::errc::no_such_file_or_directory)
-    throw fs::filesystem_error("cannot list the output directory", dir, ec);
-  return std::nullopt;
 }
 
 std::string read_text(const fs::path& file, std::uintmax_t limit) {

@@ -166,9 +166,10 @@ TEST(Integrity, InfoChecksEveryFileTheManifestLists) {
   {  // `info result.h5` in the run's own directory names it by its path, not "."
     const fs::path here = fs::current_path();
     fs::current_path(run);
-    const RunFilesCheck local = check_run_files("result.h5");
+    const RunFilesCheck local = check_run_files("result.h5"), dot = check_run_files(".");
     fs::current_path(here);
     EXPECT_EQ(local.directory, fs::canonical(run).string());
+    EXPECT_EQ(dot.directory, fs::canonical(run).string());
     EXPECT_EQ(local.listing.rfind("\nfiles of " + fs::canonical(run).string() + " (", 0), 0u)
         << local.listing;
   }
