@@ -86,6 +86,7 @@ void Checkpointer::find_states() {
                            resumed_sinks_[{h.ensemble, h.index}] = h.sink;
   }
   for (const auto& [key, time] : states_) check_run_state(run_state_path(dir_, key.first, key.second));
+  states_checked_ = true;
 }
 
 void Checkpointer::find_state(const Key& key) {
@@ -292,7 +293,8 @@ particles::RunCheckpoints RealizationSaves::checkpoints() {
     has_state = owner_.resumed_.count({item_.ensemble, item_.index}) > 0;
   }
   if (has_state && !resume_)
-    resume_ = open_run_state(run_state_path(owner_.dir_, item_.ensemble, item_.index));
+    resume_ =
+        open_run_state(run_state_path(owner_.dir_, item_.ensemble, item_.index), owner_.states_checked_);
   return {this, resume_.get()};
 }
 

@@ -180,6 +180,7 @@ class Checkpointer {
 
   mutable std::mutex mutex_;      // guards what follows and the records (the runs save from their threads)
   std::map<Key, double> states_;  // the realizations with a state on disk: its time
+  bool states_checked_ = false;   // their checksums checked (find_states): not read again to resume
   std::map<Key, std::pair<double, double>> resumed_;  // the states the resumed run continues: fraction, t
   std::map<Key, std::string> resumed_sinks_;          // and their states files' saves
   std::set<Key> running_;                             // realizations whose saves live

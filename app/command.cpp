@@ -155,7 +155,7 @@ int do_tail(Arguments args) {
   if (!args.tail_sizes.empty()) args.tail.sizes.clear();
   for (const double N : args.tail_sizes) {
     if (!(N >= 0 && N <= studies::kTailMaxN && N == std::floor(N)))
-      throw InputError("tail.N", to_text(N), studies::kTailSizesAllowed);
+      throw InputError("tail.N", to_text(N), studies::tail_sizes_allowed());
     args.tail.sizes.push_back(static_cast<std::size_t>(N));
   }
   const std::string out = run_tail(args.tail, args.force);  // nothing printed before it returns
@@ -236,9 +236,9 @@ int run_command(int argc, char** argv) {
   const std::string unchanged =
       app.got_subcommand("run") || app.got_subcommand("merge") || app.got_subcommand("bench")
           ? " (the results in the output directory are as they were)"
-      : app.got_subcommand("tail")
-          ? " (the output directory holds the sizes finished before, each file whole)"
-          : "";
+      : app.got_subcommand("tail") ? " (the output directory is as the last finished size left it, or as it "
+                                     "was before the first, each file whole)"
+                                   : "";
   try {
     // SIGINT, SIGTERM -> request_interrupt, restored on return; in an MPI job
     // its session owns them (app/mpi/mpi_job.cpp) and does the same.

@@ -116,7 +116,7 @@ std::string merge_shards(const std::vector<std::string>& shard_dirs, const RunOp
   ParallelRun parallel{1, 1, shards.size()};
   double shard_seconds = 0;
   for (const ShardHeader& h : shards) {
-    for (auto& r : read_shard_records(h.dir)) records.push_back(std::move(r));
+    for (auto& r : read_shard_records(h)) records.push_back(std::move(r));
     parallel.ranks = std::max(parallel.ranks, std::stoi(h.shard.at("ranks")));
     parallel.threads = std::max<std::size_t>(parallel.threads, std::stoull(h.shard.at("threads")));
     shard_seconds += std::stod(h.shard.at("wall_seconds"));

@@ -61,9 +61,10 @@ std::optional<RunStateHeader> read_run_state_header(const std::filesystem::path&
 // naming the file if it does not match or the file is cut short.
 void check_run_state(const std::filesystem::path& file);
 
-// A state file opened for resuming: checked (check_run_state), then read after
-// its header.
-std::unique_ptr<particles::RunStateReader> open_run_state(const std::filesystem::path& file);
+// A state file opened for resuming: checked (check_run_state) unless checked
+// already, then read after its header.
+std::unique_ptr<particles::RunStateReader> open_run_state(const std::filesystem::path& file,
+                                                          bool checked = false);
 
 // Removes every state file of dir (and temporaries of interrupted writes).
 void remove_run_states(const std::filesystem::path& dir);

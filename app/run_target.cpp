@@ -12,6 +12,7 @@
 #include "checkpoint.hpp"
 #include "manifest.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/studies/tail_study.hpp"
 #include "state_file.hpp"
 
 namespace shockgas::app {
@@ -43,9 +44,11 @@ std::vector<std::pair<std::string, fs::path>> protected_directories() {
 // Files an older shockgas (without manifest.json) wrote into a run directory,
 // or into the output directory of `shockgas tail`.
 bool legacy_run_file(const fs::path& relative) {
-  static const std::vector<std::string> names = {"result.h5",    "summary.json", "report.md",
-                                                 "report.html",  "tail_phi.csv", "tail_windows.csv",
-                                                 "tail_runs.csv"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = {"result.h5", "summary.json", "report.md", "report.html"};
+    n.insert(n.end(), studies::kTailFiles.begin(), studies::kTailFiles.end());
+    return n;
+  }();
   static const std::vector<std::string> extensions = {".png", ".gif", ".mp4", ".svg"};
   const std::string name = relative.filename().string();
   if (name.find(".partial-") != std::string::npos) return true;  // killed runs of older versions
@@ -156,7 +159,7 @@ std::optional<std::string> scene_of_results(const fs::path& dir) {
   if (summary.is_object() && summary.contains("scene") && summary["scene"].is_string())
     return summary["scene"].get<std::string>();
   std::error_code ec;
-  if (fs::exists(dir / "tail_runs.csv", ec)) return "tail";  // `shockgas tail` of an older version
+  if (fs::exists(dir / studies::kTailFiles.back(), ec)) return "tail";  // `shockgas tail` of an older version
   return std::nullopt;
 }
 

@@ -89,11 +89,12 @@ ShardHeader read_shard_header(const std::string& dir) {
   if (!is_shard) throw InputError("shard", to_text(dir), allowed + " (this one holds a whole run)");
   h.shard = attribute_map(h5, "/shard");
   h.overrides = nlohmann::json::parse(h.shard.at("overrides")).get<std::vector<std::string>>();
+  h.verified = h5.verified() ? Verification::manifest : Verification::no_manifest;
   return h;
 }
 
-std::vector<RealizationRecord> read_shard_records(const std::string& dir) {
-  const Hdf5File h5 = Hdf5File::open(shard_file(dir).string());
+std::vector<RealizationRecord> read_shard_records(const ShardHeader& shard) {
+  const Hdf5File h5 = Hdf5File::open(shard_file(shard.dir).string(), shard.verified);
   std::map<std::pair<std::size_t, std::uint64_t>, RecordFields> fields;
   for (const auto& d : h5.datasets()) {
     if (d.path.rfind("/shard/", 0) != 0) continue;

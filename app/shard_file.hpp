@@ -14,6 +14,7 @@
 
 #include "ensemble_plan.hpp"
 #include "job_ensembles.hpp"
+#include "result_check.hpp"
 
 namespace shockgas::app {
 
@@ -26,10 +27,13 @@ struct ShardHeader {
   std::map<std::string, std::string> provenance;  // the attributes of "/"
   std::map<std::string, std::string> shard;       // the attributes of "/shard"
   std::vector<std::string> overrides;
+  Verification verified =
+      Verification::no_manifest;  // how its result.h5 was checked when the header was read
 };
 // InputError naming the directory when it holds no shard.
 ShardHeader read_shard_header(const std::string& dir);
-// Every record of the shard (only /shard/..., never a whole run's datasets).
-std::vector<RealizationRecord> read_shard_records(const std::string& dir);
+// Every record of the shard (only /shard/..., never a whole run's datasets);
+// its result.h5 is not checked again (a shard's may be gigabytes).
+std::vector<RealizationRecord> read_shard_records(const ShardHeader& shard);
 
 }  // namespace shockgas::app

@@ -57,18 +57,19 @@ double breaking_time(const std::function<double(double)>& v0, double length) {
   const double h = length / kPoints;
   std::vector<double> v(kPoints);
   for (int i = 0; i < kPoints; ++i) v[i] = v0(i * h);
-  // max(-v0'), by differences centred on the midpoints, at spacing h and 2h
-  const auto steepest = [&](int step) {
-    double s = 0;
-    for (int i = 0; i < kPoints; i += step) s = std::max(s, (v[i] - v[(i + step) % kPoints]) / (step * h));
-    return s;
-  };
-  const double fine = steepest(1), coarse = std::max(steepest(2), 0.0);
-  // A downward jump: the steepest difference is J / h, and halves at twice
-  // the spacing (a smooth slope keeps its value); -v0' is unbounded there and
-  // the shock exists at t = 0.
-  if (fine > 1.5 * coarse && fine > 0) return 0.0;
-  return fine > 0 ? 1.0 / fine : std::numeric_limits<double>::infinity();
+  const auto at = [&](int i) { return v[(i + kPoints) % kPoints]; };
+  // max(-v0'), by differences centred on the midpoints
+  int steepest = 0;
+  for (int i = 1; i < kPoints; ++i)
+    if (at(i) - at(i + 1) > at(steepest) - at(steepest + 1)) steepest = i;
+  const double fine = (at(steepest) - at(steepest + 1)) / h;
+  if (!(fine > 0)) return std::numeric_limits<double>::infinity();
+  // A downward jump J there: the difference is J / h, and halves over the
+  // two spacings around it (a smooth slope keeps its value); -v0' is
+  // unbounded and the shock exists at t = 0.
+  const double coarse =
+      std::max(at(steepest - 1) - at(steepest + 1), at(steepest) - at(steepest + 2)) / (2 * h);
+  return fine > 1.5 * coarse ? 0.0 : 1.0 / fine;
 }
 
 }  // namespace shockgas::compare

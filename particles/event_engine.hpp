@@ -35,6 +35,7 @@
 #include "event_tree.hpp"
 #include "huge_page_allocator.hpp"
 #include "shockgas/particles/collision.hpp"
+#include "shockgas/particles/params.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -57,7 +58,7 @@ class EventEngine {
  public:
   static constexpr std::uint32_t none = 0xFFFFFFFFu;
   // Collisions between two looks at the watch and at inelastic collapse.
-  static constexpr std::uint64_t check_every = 1u << 14;
+  static constexpr std::uint64_t check_every = kGlobalQueueCheckEvery;
   // Consecutive collisions without time advancing that mean inelastic collapse.
   static constexpr int stall_limit = 256;
   // Consecutive collisions at exactly the same time that mean a rounding stall

@@ -10,7 +10,11 @@ namespace {
 ParameterTable<ParticleParams> declare() {
   using P = ParticleParams;
   ParameterTable<P> t("particles");
-  t.add(&P::r, "r", "1", "restitution coefficient; 0 = aggregation", allowed(between(0, 1)));
+  t.add(
+      &P::r, "r", "1",
+      "restitution coefficient; 0 = aggregation at or above delta (every collision merges with delta = 0 or "
+      "subthreshold = \"sticky\")",
+      allowed(between(0, 1)));
   t.add(&P::delta, "delta", "length/time",
         "velocity threshold below which collisions are sub-threshold; 0 = none", allowed(at_least(0)));
   t.add(&P::subthreshold, "subthreshold", "", "what a sub-threshold collision does");
@@ -40,8 +44,11 @@ ParameterTable<ParticleParams> declare() {
   t.add(&P::clusters, "clusters", "", "count clusters (default criteria) at the sample times");
   t.add(&P::max_collisions, "max_collisions", "1",
         "stop a realization at its first safe point with at least this many collisions (the end of a time "
-        "window, or every 16384 collisions on the global queue), stop = event_limit; one that reaches t_end "
-        "first has completed; 0 = no limit",
+        "window, or every " +
+            std::to_string(kGlobalQueueCheckEvery) +
+            " collisions on the global queue), stop = event_limit; one that reaches t_end first has "
+            "completed; 0 = "
+            "no limit",
         allowed(at_least(0)));
   t.add(&P::max_wall_seconds, "max_wall_seconds", "s",
         "stop a realization after this wall-clock time; 0 = no limit", allowed(at_least(0)));

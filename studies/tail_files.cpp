@@ -49,15 +49,14 @@ TailFiles::TailFiles(const TailStudyOptions& o) : options_(o) {
   exact_T_ = exact->temperature_amplitude;
   const std::string dir = o.out_dir + "/";
   phi_ = std::make_unique<CsvWriter>(
-      dir + "tail_phi.csv",
+      dir + kTailFiles[0],
       std::vector<std::string>{"N", "t", "r", "z", "clusters", "phi", "phi_error", "exact_phi",
                                "local_exponent", "local_exponent_error", "exact_local_bins", "exact_local"});
   windows_ = std::make_unique<CsvWriter>(
-      dir + "tail_windows.csv",
-      std::vector<std::string>{"N", "t", "r", "z_lo", "z_hi", "bins", "a", "a_error", "exact_a", "slope",
-                               "slope_error", "exact_slope"});
+      dir + kTailFiles[1], std::vector<std::string>{"N", "t", "r", "z_lo", "z_hi", "bins", "a", "a_error",
+                                                    "exact_a", "slope", "slope_error", "exact_slope"});
   runs_ = std::make_unique<CsvWriter>(
-      dir + "tail_runs.csv",
+      dir + kTailFiles[2],
       std::vector<std::string>{"N", "t", "r", "realizations", "particles", "clusters", "z_reach",
                                "chi_square", "dof", "p_value", "T_t23", "T_t23_error", "exact_T_t23",
                                "collisions", "cpu_seconds"});

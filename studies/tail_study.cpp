@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
@@ -110,6 +111,12 @@ TailRealization engine_realization(const InitialParams& ip, std::uint64_t k, con
 
 }  // namespace
 
+std::string tail_sizes_allowed() {
+  char most[32];
+  std::snprintf(most, sizeof most, "%.2g", kTailMaxN);
+  return "distinct whole numbers from " + std::to_string(kTailMinN) + " to " + most;
+}
+
 void validate_tail_study(const TailStudyOptions& o) {
   require(!o.out_dir.empty(), "tail.out", o.out_dir, "a directory name");
   require(!o.sizes.empty(), "tail.N", o.sizes.size(), "at least one size");
@@ -118,7 +125,7 @@ void validate_tail_study(const TailStudyOptions& o) {
     const bool repeated = std::find(o.sizes.begin(), o.sizes.begin() + static_cast<std::ptrdiff_t>(i), N) !=
                           o.sizes.begin() + static_cast<std::ptrdiff_t>(i);
     require(N >= kTailMinN && static_cast<double>(N) <= kTailMaxN && !repeated, "tail.N", N,
-            kTailSizesAllowed);
+            tail_sizes_allowed());
   }
   require(o.realizations >= 2, "tail.realizations", o.realizations,
           ">= 2 (the errors are a jackknife over them)");

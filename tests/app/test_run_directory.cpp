@@ -168,7 +168,8 @@ TEST(RunDirectory, ALockKeepsASecondRunOut) {
 // In an MPI job every rank checks the output directory while rank 0 may
 // already write its checkpoint through a temporary file and rename it (the
 // finding: rank 1 failed the job with "cannot make canonical path" for a
-// checkpoint.bin.partial-PID that was gone by the time it was resolved).
+// checkpoint.bin.partial-PID that was gone by the time it was resolved). A race:
+// without the fix it failed 2 runs in 3 at 3000 checks, more often at 10000.
 TEST(RunDirectory, AFileRenamedWhileTheDirectoryIsCheckedDoesNotFailTheCheck) {
   const Dirs d = setup("rundir-vanishing");
   fs::create_directories(d.out);

@@ -48,7 +48,7 @@ TEST(TailRun, AnInterruptKeepsTheSizesFinishedEachFileWhole) {
   kill(tail.pid(), SIGINT);
   kill(tail.pid(), SIGCONT);
   EXPECT_EQ(tail.wait(), 128 + SIGINT) << tail.err();
-  EXPECT_NE(tail.err().find("the output directory holds the sizes finished before"), std::string::npos)
+  EXPECT_NE(tail.err().find("the output directory is as the last finished size left it"), std::string::npos)
       << tail.err();
   EXPECT_EQ(differences(out), "");
   EXPECT_EQ(read_manifest(out)->scene, "tail");

@@ -84,9 +84,10 @@ double validity_time(double delta);
 // t* = 1 / max(-v0') of a velocity v0 on [0, length) (periodic), the slope taken
 // by centred differences on 2^16 points: relative error O((h / wavelength)^2),
 // 1.5e-9 for a sine of period 1 (its steepest point falls between samples).
-// +infinity where v0 nowhere decreases; 0 where v0 jumps down (the steepest
-// difference halves at twice the spacing, as J / h does and a slope does not):
-// the shock is there at t = 0 (it read h / J = 1e-5, a number of the sampling).
+// +infinity where v0 nowhere decreases; 0 where the steepest drop is a jump
+// (its difference halves over the two spacings around it, as J / h does and a
+// slope does not; a smooth feature narrower than about h counts as one): the
+// shock is there at t = 0 (it read h / J = 1e-5, a number of the sampling).
 double breaking_time(const std::function<double(double)>& v0, double length);
 
 }  // namespace shockgas::compare

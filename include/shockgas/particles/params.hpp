@@ -34,6 +34,11 @@ constexpr std::array<EnumName<Schedule>, 3> enum_names(Schedule) {
   return {{{Schedule::automatic, "auto"}, {Schedule::windows, "windows"}, {Schedule::global, "global"}}};
 }
 
+// Collisions between two safe points of the global queue, where the limits
+// (max_collisions, max_wall_seconds), the saves and inelastic collapse are
+// looked at (event_engine.hpp).
+inline constexpr std::uint64_t kGlobalQueueCheckEvery = 1u << 14;
+
 // Unit, allowed range and meaning of every member: parameters() (particles/params.cpp).
 struct ParticleParams {
   double r = 0.9;       // 0 = aggregation
@@ -52,7 +57,7 @@ struct ParticleParams {
   double histogram_zmax = 4.0;
   std::size_t spacetime_frames = 200;
   bool clusters = true;
-  std::uint64_t max_collisions = 0;  // 0 = no limit
+  std::uint64_t max_collisions = 0;  // 0 = no limit (checked at safe points: kGlobalQueueCheckEvery)
   double max_wall_seconds = 0.0;     // 0 = no limit
 };
 

@@ -18,6 +18,7 @@
 //                     ln(-ln Phi)) on windows [z_lo, z_hi], data and exact law;
 //   tail_runs.csv     per (N, t): particles, clusters, reach, chi-square of Phi
 //                     against the law, T t^(2/3), collisions and CPU seconds.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -44,10 +45,14 @@ struct TailStudyOptions {
   std::function<void()> size_written;
 };
 
-// The sizes a study takes (tail.N).
+// The sizes a study takes (tail.N), and what a refusal says of them.
 inline constexpr std::size_t kTailMinN = 100;
 inline constexpr double kTailMaxN = 4e9;
-inline constexpr const char* kTailSizesAllowed = "distinct whole numbers from 100 to 4e9";
+std::string tail_sizes_allowed();
+
+// The files a study writes into its output directory.
+inline constexpr std::array<const char*, 3> kTailFiles = {"tail_phi.csv", "tail_windows.csv",
+                                                          "tail_runs.csv"};
 
 // InputError naming the option for options the study cannot run.
 void validate_tail_study(const TailStudyOptions& options);
