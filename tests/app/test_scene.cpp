@@ -159,5 +159,28 @@ TEST(Scene, SweepReferenceKeyIsASummaryKey) {
   EXPECT_EQ(e.where(), "bad.toml:4");
 }
 
+// Found accepted: two variants with one label (their rows could not be told
+// apart), a variant setting scene.name (ignored without a word), and a
+// comparison with a solver that gives no density (0 shocks, reported as an
+// error of 0).
+TEST(Scene, SweepsAndComparisonsThatCannotBeReadAreRefused) {
+  const std::string sweep = "[particles]\n[sweep]\n";
+  EXPECT_EQ(
+      error_of(sweep + "variants = [\"particles.r=0.5\", \"particles.r=0.6\"]\nlabels = [\"a\", \"a\"]\n")
+          .key(),
+      "sweep.labels");
+  try {
+    expand_sweep(parse_scene(sweep + "variants = [\"scene.name=foo\"]\n", "s.toml"));
+    ADD_FAILURE() << "scene.name in a variant accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "sweep.variants");
+  }
+  const auto e = error_of(
+      "[initial]\nN = 100\n[particles]\n[continuum]\nsolvers = [\"hopf_lax\", \"hopf_cole\"]\n[compare]\n"
+      "solver = \"hopf_cole\"\n");
+  EXPECT_EQ(e.key(), "compare.solver");
+  EXPECT_NE(e.allowed().find("gives the density"), std::string::npos) << e.what();
+}
+
 }  // namespace
 }  // namespace shockgas::app
