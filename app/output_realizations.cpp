@@ -70,7 +70,11 @@ std::vector<Declaration> realization_error_keys() {
       key(p, "analysis.T_exponent_jackknife_error", "1",
           "error of analysis.T_exponent from the realizations (jackknife); the least-squares error "
           "treats correlated sample times as independent",
-          when, error_of([](const E& e) { return e.T_exponent; })),
+          "with analysis.T_exponent and 2 or more realizations",
+          [](const RunResults& r, Emitter& out) {  // not of a fit the summary does not carry
+            if (r.particles && r.particles->cooling.fit)
+              error_of([](const E& e) { return e.T_exponent; })(r, out);
+          }),
       key(p, "analysis.T_exponent_windows", "1",
           "the T exponent fitted on every window of one and two decades, each {t_min, t_max, exponent, "
           "jackknife_error}",

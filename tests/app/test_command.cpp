@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "run_command.hpp"
 #include "hdf5_file.hpp"
+#include "run_command.hpp"
+#include "run_comparison.hpp"
 #include "shockgas/app/info.hpp"
 
 namespace shockgas::app {
@@ -131,6 +132,26 @@ TEST(Command, RunWritesCompleteResultWithProvenance) {
 }
 
 TEST(Command, InfoOnMissingFileExitsTwo) { EXPECT_EQ(run({"info", "/nonexistent/result.h5"}), 2); }
+
+// The jackknife error of T_exponent stands beside the exponent it is the error
+// of (found: written, from a two-point slope, when the window held too few
+// samples for T_exponent itself).
+TEST(Command, TheExponentsJackknifeErrorComesWithTheExponent) {
+  const fs::path dir = temp_dir("jackknife");
+  const fs::path scene =
+      write_scene(dir,
+                  "[initial]\nN = 2000\n[particles]\nr = 0.5\nt_end = 1e3\nrealizations = 3\n[compare]\n"
+                  "[output]\nplots = false\n");
+  for (const int samples : {5, 40}) {  // 2 and 16 samples in [t_end / 10, t_end]
+    const fs::path out = dir / ("out" + std::to_string(samples));
+    ASSERT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set",
+                   "particles.samples=" + std::to_string(samples)}),
+              0);
+    const auto analysis = testing::read_json(out / "summary.json")["analysis"];
+    EXPECT_EQ(analysis.contains("T_exponent"), samples == 40);
+    EXPECT_EQ(analysis.contains("T_exponent_jackknife_error"), samples == 40);
+  }
+}
 
 }  // namespace
 }  // namespace shockgas::app
