@@ -134,14 +134,21 @@ def figure_fields(f, summary):
         a0.set_title("initial condition (t = 0): velocity, cell averages", fontsize=9)
     draw_initial(av, ar, f, beside)
     draw_solvers(av, ar, groups)
-    if cmp is not None:
+    some = groups[0][1]
+    t = attr(some, "t", 0)
+    # Particles stopped early are compared at their own time (the continuum run
+    # again there): not drawn over fields of another time.
+    t_compared = attr(cmp, "t", t) if cmp is not None else t
+    elsewhen = abs(t_compared - t) > 1e-9 * max(abs(t), 1.0)
+    if cmp is not None and not elsewhen:
         draw_particles(av, ar, cmp)
         draw_clusters_and_shocks(ar, cmp, summary.get("compare", {}).get("solver", "the compared solver"))
-    some = groups[0][1]
     if cmp is None:
-        draw_heaviest_cluster(av, ar, summary, attr(some, "t", 0))
+        draw_heaviest_cluster(av, ar, summary, t)
     av.set_ylabel(label("velocity $v$", unit(some["v"])))
-    title = f"fields at t = {attr(some, 't', 0):.4g}"
+    title = f"fields at t = {t:.4g}"
+    if elsewhen:
+        title += f"; particles stopped at t = {t_compared:.4g} (see clusters.png)"
     window = window_with_shocks(f, groups)
     if window is not None:
         av.set_xlim(0, window[0])
