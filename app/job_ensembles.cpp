@@ -39,21 +39,28 @@ ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::siz
                               const std::filesystem::path& states_dir) {
   ComputedRecords out;
   out.threads = threads;
-  RealizationPool pool(plan, checkpoints ? checkpoints->remaining(*plan) : plan->items(), threads, false,
-                       states_dir, checkpoints);
+  const std::vector<WorkItem> items = checkpoints ? checkpoints->remaining(*plan) : plan->items();
+  RealizationPool pool(plan, items, threads, false, states_dir, checkpoints);
+  // The share of the whole run done: a resumed run counts the realizations its
+  // checkpoint keeps (its percentage went back to 0 and ran over the rest).
+  const double total = static_cast<double>(plan->items().size()),
+               remaining = static_cast<double>(items.size());
+  const auto done = [&] {
+    return total > 0 ? (total - remaining + pool.fraction() * remaining) / total : 1.0;
+  };
   auto keep_finished = [&] {
     if (!checkpoints) return;
     checkpoints->add(pool.take_finished());
     checkpoints->poll();  // saves when due; on an interrupt request saves and throws
   };
   while (!pool.finished()) {
-    progress.update(pool.fraction(), pool.sim_time());
+    progress.update(done(), pool.sim_time());
     keep_finished();
     std::this_thread::sleep_for(kPoll);
   }
   keep_finished();
   if (auto failure = pool.failure()) std::rethrow_exception(failure->error);
-  progress.update(pool.fraction(), pool.sim_time());  // the end: 100 %, which the last poll may have missed
+  progress.update(done(), pool.sim_time());     // the end: 100 %, which the last poll may have missed
   if (checkpoints) checkpoints->save_at_end();  // an interrupt while the results are written keeps them all
   out.records = checkpoints ? checkpoints->take_records() : pool.take_finished();
   sort_in_plan_order(out.records);
