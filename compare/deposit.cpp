@@ -50,13 +50,7 @@ GridFields deposit_on_grid(const Bodies& b, double length, std::size_t cells, De
   require(cells >= 1, "compare.cells", cells, ">= 1");
   require(b.v.size() == b.size() && b.m.size() == b.size(), "compare.bodies", b.size(),
           "x, v and m of equal length");
-  for (std::size_t i = 0; i < b.size(); ++i) {  // a NaN would spread over cells, a negative mass empty them
-    if (std::isfinite(b.x[i]) && std::isfinite(b.v[i]) && std::isfinite(b.m[i]) && b.m[i] > 0) continue;
-    const std::string at = "[" + std::to_string(i) + "]";
-    require(std::isfinite(b.x[i]), "compare.bodies.x" + at, b.x[i], "a finite position");
-    require(std::isfinite(b.v[i]), "compare.bodies.v" + at, b.v[i], "a finite velocity");
-    require(false, "compare.bodies.m" + at, b.m[i], "a finite mass > 0");
-  }
+  require_finite_bodies(b, "compare.bodies");  // a NaN would spread over cells, a negative mass empty them
   GridFields g;
   g.length = length;
   g.x = continuum::cell_centres(length, cells);

@@ -1,6 +1,22 @@
 #include "shockgas/core/bodies.hpp"
 
+#include <cmath>
+
+#include "shockgas/core/error.hpp"
+
 namespace shockgas {
+
+void require_finite_body(BodiesView b, std::size_t i, const std::string& key) {
+  if (std::isfinite(b.x[i]) && std::isfinite(b.v[i]) && std::isfinite(b.m[i]) && b.m[i] > 0) return;
+  const std::string at = "[" + std::to_string(i) + "]";
+  require(std::isfinite(b.x[i]), key + ".x" + at, b.x[i], "a finite position");
+  require(std::isfinite(b.v[i]), key + ".v" + at, b.v[i], "a finite velocity");
+  require(false, key + ".m" + at, b.m[i], "a finite mass > 0");
+}
+
+void require_finite_bodies(BodiesView b, const std::string& key) {
+  for (std::size_t i = 0; i < b.size(); ++i) require_finite_body(b, i, key);
+}
 
 double total_mass(const Bodies& b) {
   double s = 0;

@@ -47,11 +47,7 @@ void check_bodies(const Bodies& b, double L, bool ring) {
     const bool sorted = i == 0 || b.x[i - 1] <= b.x[i];
     const bool inside = !ring || (b.x[i] >= 0 && b.x[i] < L);
     if (finite && mass && sorted && inside) continue;
-    require(std::isfinite(b.x[i]), "initial.bodies.x[" + std::to_string(i) + "]", b.x[i],
-            "a finite position");
-    require(std::isfinite(b.v[i]), "initial.bodies.v[" + std::to_string(i) + "]", b.v[i],
-            "a finite velocity");
-    require(mass, "initial.bodies.m[" + std::to_string(i) + "]", b.m[i], "a finite mass > 0");
+    require_finite_body(b, i, "initial.bodies");
     const std::string x = "initial.bodies.x[" + std::to_string(i) + "]";
     require(sorted, x, b.x[i], "positions sorted ascending");
     require(

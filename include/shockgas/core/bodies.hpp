@@ -3,6 +3,7 @@
 // what the particle engine and the exact sticky solver return.
 #include <cstddef>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace shockgas {
@@ -35,6 +36,12 @@ struct BodiesView {
       : x(x_), v(v_), m(m_) {}
   std::size_t size() const { return x.size(); }
 };
+
+// InputError naming body i by its index if it lacks a finite position, a
+// finite velocity or a finite mass > 0: KEY.x[i], KEY.v[i], KEY.m[i] (key:
+// "initial.bodies", "compare.bodies"); require_finite_bodies: the first such body.
+void require_finite_body(BodiesView b, std::size_t i, const std::string& key);
+void require_finite_bodies(BodiesView b, const std::string& key);
 
 // Total mass, momentum and kinetic energy (sum m v^2 / 2).
 double total_mass(const Bodies& b);
