@@ -90,15 +90,35 @@ std::string write_failure(const fs::path& path, const std::string& reason) {
   return "cannot write " + path.string() + ": " + reason + room_note(path.parent_path());
 }
 
-void write_file(const fs::path& path, const std::string& text) {
+namespace {
+
+// write_file, its fault point named after `name` (the file a temporary one becomes).
+void write_text(const fs::path& path, const std::string& text, const fs::path& name) {
   Fd fd(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
   if (fd.get() < 0) throw RunError(write_failure(path, std::strerror(errno)));
   const std::size_t half = text.size() / 2;
   write_all(fd.get(), text.data(), half, path);
-  fault_point("write:" + path.filename().string());
+  fault_point("write:" + name.filename().string());
   write_all(fd.get(), text.data() + half, text.size() - half, path);
   sync_fd(fd.get(), path);
   if (::close(fd.release()) != 0) throw RunError(write_failure(path, std::strerror(errno)));
+}
+
+}  // namespace
+
+void write_file(const fs::path& path, const std::string& text) { write_text(path, text, path); }
+
+void replace_file(const fs::path& path, const std::string& text) {
+  const fs::path temporary = path.string() + ".partial";
+  try {
+    write_text(temporary, text, path);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove(temporary, ec);  // nothing half-written beside the file it would replace
+    throw;
+  }
+  fs::rename(temporary, path);
+  sync_directory(path.parent_path());
 }
 
 void sync_directory(const fs::path& dir) { sync_path(dir, true); }

@@ -13,6 +13,12 @@ namespace shockgas::app {
 // the fault point "write:<file name>" half-way (fault.hpp).
 void write_file(const std::filesystem::path& path, const std::string& text);
 
+// A file in a directory that is not staged (a finished run's, a shard's)
+// replaced whole: text written to PATH.partial (removed again on a failure)
+// and renamed over path, the directory synced. RunError as write_file; its
+// fault point is that of path ("write:manifest.json").
+void replace_file(const std::filesystem::path& path, const std::string& text);
+
 // fsync of every file and directory under dir, then of dir itself.
 void sync_tree(const std::filesystem::path& dir);
 // fsync of one directory (its entries: after a rename into it).

@@ -1,7 +1,5 @@
 #include "manifest.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -79,7 +77,8 @@ void add_files(const fs::path& dir, std::vector<ManifestEntry>& files) {
   }
 }
 
-void write_manifest_file(const fs::path& dir, Manifest& m, const fs::path& as = kManifestFile) {
+// The text of m, its files sorted by path.
+std::string manifest_text(Manifest& m) {
   std::sort(m.files.begin(), m.files.end(), [](const auto& a, const auto& b) { return a.path < b.path; });
   ordered_json j;
   j["format"] = kFormat;
@@ -88,7 +87,7 @@ void write_manifest_file(const fs::path& dir, Manifest& m, const fs::path& as = 
   j["git_commit"] = kGitCommit;
   j["files"] = ordered_json::array();
   for (const auto& f : m.files) j["files"].push_back({{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
-  write_file(dir / as, j.dump(2) + "\n");
+  return j.dump(2) + "\n";
 }
 
 }  // namespace
@@ -97,7 +96,7 @@ Manifest write_manifest(const fs::path& dir, const std::string& scene) {
   Manifest m;
   m.scene = scene;
   add_files(dir, m.files);
-  write_manifest_file(dir, m);
+  replace_file(dir / kManifestFile, manifest_text(m));
   return m;
 }
 
@@ -106,16 +105,7 @@ Manifest write_manifest_of(const fs::path& dir, const std::string& scene,
   Manifest m;
   m.scene = scene;
   for (const std::string& f : files) m.files.push_back({f, fs::file_size(dir / f), sha256_of_file(dir / f)});
-  const std::string temporary = std::string(kManifestFile) + ".partial-" + std::to_string(::getpid());
-  try {
-    write_manifest_file(dir, m, temporary);
-  } catch (...) {
-    std::error_code ec;
-    fs::remove(dir / temporary, ec);  // nothing half-written beside the files it would vouch for
-    throw;
-  }
-  fs::rename(dir / temporary, dir / kManifestFile);
-  sync_directory(dir);
+  replace_file(dir / kManifestFile, manifest_text(m));
   return m;
 }
 
@@ -127,7 +117,7 @@ void update_manifest(const fs::path& dir, const std::string& sub, const Manifest
   for (const ManifestEntry& e : of_sub.files) m->files.push_back({prefix + e.path, e.bytes, e.sha256});
   const fs::path own = dir / sub / kManifestFile;  // the one file of sub its manifest does not list
   m->files.push_back({prefix + kManifestFile, fs::file_size(own), sha256_of_file(own)});
-  write_manifest_file(dir, *m);
+  replace_file(dir / kManifestFile, manifest_text(*m));
 }
 
 std::optional<Manifest> read_manifest(const fs::path& dir) {

@@ -29,13 +29,17 @@ struct Manifest {
   const ManifestEntry* find(const std::string& relative_path) const;
 };
 
+// Each writer below replaces dir/manifest.json whole (replace_file,
+// durable_file.hpp): a directory changed in place (`shockgas animate`, a
+// shard) never holds half a manifest.
+//
 // Hashes every regular file under dir (recursively, links not followed, the
 // manifest itself excepted) and writes dir/manifest.json; returns what it wrote.
 Manifest write_manifest(const std::filesystem::path& dir, const std::string& scene);
 
-// The manifest of the named files of dir only (relative paths), written under
-// a temporary name and renamed over dir/manifest.json: for a directory written
-// in place rather than staged (a shard's, which may hold its checkpoint too).
+// The manifest of the named files of dir only (relative paths): for a
+// directory written in place rather than staged (a shard's, which may hold its
+// checkpoint too).
 Manifest write_manifest_of(const std::filesystem::path& dir, const std::string& scene,
                            const std::vector<std::string>& files);
 

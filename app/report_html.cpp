@@ -255,15 +255,8 @@ void write_report_html(const fs::path& dir) {
       "theory says it should be (docs/output.md).</p>\n" +
       figures_table(summary) + reference_table(scene, summary) + variants_section(dir, summary);
   body += plots + scene_section(p, summary.value("build", std::string()));
-  const fs::path tmp = dir / "report.html.partial";
-  try {
-    write_file(tmp, html::page("shockgas: " + name, body));  // a failure names the file and the reason
-  } catch (...) {
-    std::error_code ec;
-    fs::remove(tmp, ec);  // in a finished run's directory (`shockgas animate`) nothing is left half-written
-    throw;
-  }
-  fs::rename(tmp, dir / "report.html");
+  // In place in a finished run's directory (`shockgas animate`): whole or not at all.
+  replace_file(dir / "report.html", html::page("shockgas: " + name, body));
 }
 
 }  // namespace shockgas::app
