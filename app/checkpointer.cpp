@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstdio>
 
 #include "fault.hpp"
 #include "shockgas/core/error.hpp"
@@ -12,13 +11,6 @@
 namespace shockgas::app {
 
 namespace {
-
-// A simulated time in a message: six digits ("t = 3035.43").
-std::string time_text(double t) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", t);
-  return buf;
-}
 
 using Clock = std::chrono::steady_clock;
 
@@ -138,7 +130,7 @@ std::string Checkpointer::resumed_states() const {
       break;
     }
     text += (shown > 1 ? ", " : "") + std::string("realization ") + std::to_string(key.second) +
-            " at t = " + time_text(t);
+            " at t = " + to_text(t, 6);
   }
   return text + ")";
 }
@@ -212,12 +204,12 @@ std::string Checkpointer::states_note() const {
   for (const auto& [key, t] : states_) {
     const std::string who = "realization " + std::to_string(key.second);
     if (saved_on_request_.count(key))
-      text += "; " + who + " saved at t = " + time_text(t);
+      text += "; " + who + " saved at t = " + to_text(t, 6);
     else if (running_.count(key))
       text += "; " + who + " did not reach a safe point within " + to_text(kStateGraceSeconds) +
-              " s: the last periodic checkpoint (t = " + time_text(t) + ") is kept";
+              " s: the last periodic checkpoint (t = " + to_text(t, 6) + ") is kept";
     else
-      text += "; " + who + " at t = " + time_text(t);
+      text += "; " + who + " at t = " + to_text(t, 6);
   }
   for (const Key& key : running_)
     if (!states_.count(key))

@@ -3,9 +3,7 @@
 // its registration as the exact reference solver.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
-#include <string>
 
 #include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/core/error.hpp"
@@ -48,12 +46,9 @@ void check_rounding(const InitialField& f, std::size_t cells, double t) {
   for (const double v : a.v) v_max = std::max(v_max, std::abs(v));
   const double h = f.length / static_cast<double>(cells);
   if (!(v_max * t / h > kMaxShiftInCells)) return;
-  char bound[32], shift[32];
-  std::snprintf(bound, sizeof bound, "%.2g", kMaxShiftInCells);
-  std::snprintf(shift, sizeof shift, "%.2g", v_max * t / h);
   throw InputError(
       "initial.v0", "max |v0| = " + to_text(v_max),
-      "max |v0| t / h <= " + std::string(bound) + " for hopf_lax (it is " + std::string(shift) +
+      "max |v0| t / h <= " + to_text(kMaxShiftInCells, 2) + " for hopf_lax (it is " + to_text(v_max * t / h, 2) +
           "): the feet of the characteristics, x - t v0, would round by more than 1e-3 of a cell");
 }
 

@@ -1,6 +1,7 @@
 #include "shockgas/core/error.hpp"
 
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 
 namespace shockgas {
@@ -37,6 +38,12 @@ std::string to_text(double value) {
   char buf[64];
   auto res = std::to_chars(buf, buf + sizeof buf, value);
   return std::string(buf, res.ptr);
+}
+
+std::string to_text(double value, int digits) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+  return buf;
 }
 
 void require_in_range(const std::string& key, double value, double lo, double hi) {

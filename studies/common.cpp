@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <iostream>
 
@@ -187,11 +186,7 @@ double shock_position_error(const std::vector<double>& v, const std::vector<doub
   return std::abs(crossing(v, length, x_s, v_mid, half_width) - crossing(exact, length, x_s, v_mid, half_width));
 }
 
-std::string fmt(double value, int digits) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, value);
-  return buf;
-}
+std::string fmt(double value, int digits) { return to_text(value, digits); }
 
 const SolverNames& solver_names() {
   static const SolverNames names{continuum::godunov_solver().name,      continuum::godunov2_solver().name,

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
@@ -112,9 +111,7 @@ TailRealization engine_realization(const InitialParams& ip, std::uint64_t k, con
 }  // namespace
 
 std::string tail_sizes_allowed() {
-  char most[32];
-  std::snprintf(most, sizeof most, "%.2g", kTailMaxN);
-  return "distinct whole numbers from " + std::to_string(kTailMinN) + " to " + most;
+  return "distinct whole numbers from " + std::to_string(kTailMinN) + " to " + fmt(kTailMaxN, 2);
 }
 
 void validate_tail_study(const TailStudyOptions& o) {

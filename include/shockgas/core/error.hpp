@@ -47,6 +47,8 @@ class RunError : public std::runtime_error {
 
 // Value as text for error messages (shortest round-trip form for doubles).
 std::string to_text(double value);
+// A double to `digits` significant digits ("%.*g": 4.5e+12, 3035.43).
+std::string to_text(double value, int digits);
 inline std::string to_text(const std::string& value) { return "\"" + value + "\""; }
 template <class Int>
   requires std::is_integral_v<Int>
