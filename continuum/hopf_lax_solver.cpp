@@ -48,7 +48,8 @@ void check_rounding(const InitialField& f, std::size_t cells, double t) {
   if (!(v_max * t / h > kMaxShiftInCells)) return;
   throw InputError(
       "initial.v0", "max |v0| = " + to_text(v_max),
-      "max |v0| t / h <= " + to_text(kMaxShiftInCells, 2) + " for hopf_lax (it is " + to_text(v_max * t / h, 2) +
+      "max |v0| t / h <= " + to_text(kMaxShiftInCells, 2) + " for hopf_lax (it is " +
+          to_text(v_max * t / h, 2) +
           "): the feet of the characteristics, x - t v0, would round by more than 1e-3 of a cell");
 }
 

@@ -1,8 +1,8 @@
 #include "shockgas/core/error.hpp"
 
 #include <charconv>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 
 namespace shockgas {
 
