@@ -26,12 +26,10 @@ bool has_frames(const std::string& result_path) {
 namespace {
 
 // The first variant directory of a sweep's output directory (its manifest
-// lists the variants' manifests), or "" where dir is not a sweep's.
-std::string first_variant(const std::string& dir) {
-  const auto manifest = read_manifest(dir);
-  if (!manifest) return "";
+// lists the variants' manifests), or "" where it is not a sweep's.
+std::string first_variant(const Manifest& manifest) {
   const std::string tail = std::string("/") + kManifestFile;
-  for (const ManifestEntry& e : manifest->files)
+  for (const ManifestEntry& e : manifest.files)
     if (e.path.size() > tail.size() && e.path.compare(e.path.size() - tail.size(), tail.size(), tail) == 0)
       return e.path.substr(0, e.path.size() - tail.size());
   return "";
@@ -43,7 +41,8 @@ void animate(const std::string& dir) {
   const std::string result = (std::filesystem::path(dir) / "result.h5").string();
   require(std::filesystem::is_regular_file(result), "DIR", dir,
           "a run's output directory, holding result.h5");
-  if (const std::string variant = first_variant(dir); !variant.empty())
+  const auto manifest = read_manifest(dir);  // read once: the manifests below are written anew
+  if (const std::string variant = manifest ? first_variant(*manifest) : ""; !variant.empty())
     throw InputError(
         "DIR", to_text(dir),
         "a run's output directory; this one is a sweep's, whose frames are its variants': give one of them, "
@@ -55,7 +54,6 @@ void animate(const std::string& dir) {
   write_report_html(dir);
   // The new files and the new report.html join the run's manifest, and a
   // sweep variant's files (its manifest among them) the sweep's.
-  const auto manifest = read_manifest(dir);
   if (!manifest) return;
   const Manifest written = write_manifest(dir, manifest->scene);
   const std::filesystem::path variant = resolve_target(dir);

@@ -147,9 +147,9 @@ void check_target_path(const fs::path& target, const std::string& out) {
 void check_target_spares(const fs::path& target, const std::string& out,
                          const std::vector<std::string>& inputs, const std::string& what) {
   for (const std::string& input : inputs)
-    if (contains(target, resolve_target(input)))
+    if (const fs::path resolved = resolve_target(input); contains(target, resolved))
       refuse(out, "a directory that neither is nor holds a " + what + " (" + input + " is " +
-                      (resolve_target(input) == target ? "this directory" : "in it") +
+                      (resolved == target ? "this directory" : "in it") +
                       "; the output directory is replaced as a whole)");
 }
 
