@@ -26,9 +26,12 @@ void particles_part(std::ostream& out, const Scene& scene, const particles::Ense
   const auto& stop = e.first.stop;
   const double rate = e.wall_seconds > 0 ? static_cast<double>(e.total_collisions) / e.wall_seconds : 0.0;
   out << "## Particles\n\n";
-  out << "- " << scene.initial.N << " particles, r = " << brief(p.r) << ", delta = " << brief(p.delta) << " ("
-      << name_of(p.subthreshold) << " below it), " << p.realizations << " realization(s), solver `"
-      << name_of(p.solver) << "`.\n";
+  out << "- " << scene.initial.N << " particles, r = " << brief(p.r);
+  if (particles::collision_rule(p).merges_only())
+    out << " (every collision merges)";
+  else
+    out << ", delta = " << brief(p.delta) << " (" << name_of(p.subthreshold) << " below it)";
+  out << ", " << p.realizations << " realization(s), solver `" << name_of(p.solver) << "`.\n";
   out << "- " << e.total_collisions << " collisions in " << brief(e.wall_seconds) << " s ("
       << brief(std::round(rate)) << " per second).\n";
   if (p.solver == particles::ParticleSolver::events) {

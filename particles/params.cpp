@@ -10,22 +10,21 @@ namespace {
 ParameterTable<ParticleParams> declare() {
   using P = ParticleParams;
   ParameterTable<P> t("particles");
-  t.add(
-      &P::r, "r", "1",
-      "restitution coefficient; 0 = aggregation at or above delta (every collision merges with delta = 0 or "
-      "subthreshold = \"sticky\")",
-      allowed(between(0, 1)));
+  t.add(&P::r, "r", "1",
+        "restitution coefficient; 0 = aggregation: every collision merges (the sticky gas; delta and "
+        "subthreshold do not apply)",
+        allowed(between(0, 1)));
   t.add(&P::delta, "delta", "length/time",
-        "velocity threshold below which collisions are sub-threshold; 0 = none", allowed(at_least(0)));
-  t.add(&P::subthreshold, "subthreshold", "", "what a sub-threshold collision does");
+        "velocity threshold below which collisions of r > 0 are sub-threshold; 0 = none",
+        allowed(at_least(0)));
+  t.add(&P::subthreshold, "subthreshold", "", "what a sub-threshold collision does (r > 0)");
   t.add(&P::geometry, "geometry", "", "periodic ring of length L, or open line");
   t.add(&P::solver, "solver", "", "event-driven simulation, or the exact sticky solution by the convex hull",
         described(choices_text(enum_choices<ParticleSolver>()) + " (" + name_of(ParticleSolver::hull) +
                   ": r = 0 only)"));
   t.add(&P::schedule, "schedule", "",
         "event order: time windows over stretches of the chain (the same collisions; equal masses without "
-        "merges "
-        "or collapse), the global queue, or auto = windows where they apply");
+        "merges, or r = 0; no collapse), the global queue, or auto = windows where they apply");
   t.add(&P::t_end, "t_end", "time", "final time", allowed(above(0)));
   t.add(&P::samples, "samples", "1",
         "log-spaced sample times in [1, t_end] (in [t_end / 1000, t_end] where t_end <= 1)",
@@ -68,6 +67,10 @@ void validate(const ParticleParams& p) {
           "\"" + name_of(ParticleSolver::hull) + "\" only with particles.r = 0 (the exact sticky solution)");
   for (double t : p.snapshots)
     require(t <= p.t_end, "particles.snapshots", t, "times in [0, particles.t_end]");
+}
+
+CollisionRule collision_rule(const ParticleParams& p) {
+  return {p.r, p.delta, p.subthreshold == Subthreshold::sticky};
 }
 
 }  // namespace shockgas::particles

@@ -40,9 +40,8 @@ Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, 
   samples_ = sample_times(p.t_end, p.samples);
   snapshots_ = sorted_copy(p.snapshots);
   if (p.spacetime) frames_ = frame_times(p.t_end, p.spacetime_frames);
-  criteria_ = p.r == 0 && (p.delta == 0 || p.subthreshold == Subthreshold::sticky)
-                  ? merged_bodies_criteria()
-                  : default_cluster_criteria(p.delta, L / static_cast<double>(n));
+  criteria_ = collision_rule(p).merges_only() ? merged_bodies_criteria()
+                                              : default_cluster_criteria(p.delta, L / static_cast<double>(n));
   out_.histogram.zmax = p.histogram_zmax;
   out_.histogram.bins = p.histogram_bins;
   out_.spacetime.n = p.spacetime ? n : 0;

@@ -72,23 +72,19 @@ detail::Counters counters(const detail::EventEngine<Linked>& e) {
           e.count(CollisionKind::merge), e.dissipated()};
 }
 
-CollisionRule rule_of(const ParticleParams& p) {
-  return {p.r, p.delta, p.subthreshold == Subthreshold::sticky};
-}
-
 // The engine's layout: links and masses for merges or unequal masses.
 bool linked(const CollisionRule& rule, bool equal_masses) { return rule.can_merge() || !equal_masses; }
 
 // Time windows over domains where they are exact (particles.schedule).
 bool windows_possible(std::size_t n, bool equal_masses, const ParticleParams& p) {
-  return detail::window_obstacle(n, equal_masses, rule_of(p)).empty();
+  return detail::window_obstacle(n, equal_masses, collision_rule(p)).empty();
 }
 
 void check_schedule(std::size_t n, bool equal_masses, const ParticleParams& p) {
   require(p.schedule != Schedule::windows || windows_possible(n, equal_masses, p), "particles.schedule",
           name_of(p.schedule),
           "\"windows\" only where every collision keeps the velocities in their range (equal masses "
-          "without merges, or merges only: r = 0 with delta = 0 or sticky sub-threshold), without "
+          "without merges, or merges only: r = 0), without "
           "inelastic collapse (delta > 0 or r = 0, 1), N >= 1024; else \"auto\" or \"global\"");
 }
 
@@ -118,8 +114,9 @@ RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_ma
     s.order = scheduler->on_global_queue() ? "windows, then global" : "windows";
     s.why_global = scheduler->why_global();
   } else {
-    s.why_global = p.schedule == Schedule::global ? "particles.schedule = \"global\""
-                                                  : detail::window_obstacle(n, equal_masses, rule_of(p));
+    s.why_global = p.schedule == Schedule::global
+                       ? "particles.schedule = \"global\""
+                       : detail::window_obstacle(n, equal_masses, collision_rule(p));
   }
   return s;
 }
@@ -153,7 +150,8 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
   const bool windows = p.schedule != Schedule::global && windows_possible(n, equal_masses, p);
   detail::Recorder recorder(p, n, L, ring, sink);
   RunStateReader* resume = checkpoints.resume;
-  Engine engine = resume ? Engine(n, L, ring, rule_of(p)) : Engine(n, L, ring, rule_of(p), fill);
+  Engine engine =
+      resume ? Engine(n, L, ring, collision_rule(p)) : Engine(n, L, ring, collision_rule(p), fill);
   std::optional<detail::WindowScheduler<Linked>> scheduler;
   if (windows)
     scheduler.emplace(engine, threads_of(p));
@@ -200,7 +198,7 @@ template <class Fill>
 RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
                      const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink,
                      const RunCheckpoints& checkpoints) {
-  if (linked(rule_of(p), equal_masses))
+  if (linked(collision_rule(p), equal_masses))
     return run_events<true>(n, fill, L, ring, equal_masses, p, progress, sink, checkpoints);
   return run_events<false>(n, fill, L, ring, equal_masses, p, progress, sink, checkpoints);
 }
@@ -253,7 +251,7 @@ void check_schedule(const Bodies& initial, const ParticleParams& p) {
 
 double bytes_per_body(const ParticleParams& p, bool equal_masses) {
   if (p.solver == ParticleSolver::hull) return 20;
-  return linked(rule_of(p), equal_masses) ? 52 : 40;
+  return linked(collision_rule(p), equal_masses) ? 52 : 40;
 }
 
 // Bodies drawn on the fly have unit masses.

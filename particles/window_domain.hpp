@@ -162,7 +162,7 @@ class DomainStepper<false> {
   std::array<double, 2> half_, loss_;  // by sub-threshold: (1 + r) / 2 and (1 - r^2) m / 4
 };
 
-// Merges only (r = 0 without elastic sub-threshold bounces).
+// Merges only (r = 0).
 template <>
 class DomainStepper<true> {
  public:

@@ -236,11 +236,6 @@ class WindowPlanner {
   std::vector<double> bound_;           // its bound
 };
 
-// Every collision of this rule is a merge: r = 0, and sub-threshold ones merge too.
-inline bool merges_only(const CollisionRule& rule) {
-  return rule.r == 0.0 && (rule.delta == 0.0 || rule.sticky_subthreshold);
-}
-
 // Why time windows are not exact for n bodies under this rule ("" when they are),
 // and what they would need. They are exact when every collision keeps the
 // velocities in their range (equal masses without merges, or merges only) and no
@@ -251,15 +246,10 @@ inline std::string window_obstacle(std::size_t n, bool equal_masses, const Colli
            "order; windows would need a collapse test per domain";
   if (n < WindowPlanner<false>::min_domains * WindowPlanner<false>::min_domain_bodies)
     return "fewer than 1024 bodies: too few to split";
-  if (merges_only(rule) || (equal_masses && !rule.can_merge())) return "";
+  if (rule.merges_only() || (equal_masses && !rule.can_merge())) return "";
   const char* need =
       "; windows would need a bound on how far a velocity can leave its range in a window (or cuts checked "
       "after each window, with a rollback)";
-  if (rule.r == 0.0)
-    return std::string(
-               "r = 0 with elastic sub-threshold bounces: a bounce between clusters of unequal mass can "
-               "throw the lighter one out of the velocity range, so the window bound does not hold") +
-           need;
   if (rule.can_merge())
     return std::string(
                "sticky sub-threshold with r > 0: merged bodies of unequal mass bounce inelastically, which "

@@ -75,10 +75,12 @@ TEST(Command, ScheduleIsCheckedBeforeAnyWork) {
   const fs::path dir = temp_dir("schedule");
   const fs::path scene = write_scene(dir, kSmallScene);
   const fs::path out = dir / "out";
-  // r = 0 merges bodies: the time windows do not apply (window_scheduler.hpp).
-  EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set",
-                 "particles.schedule=\"windows\"", "--set", "initial.N=2048", "--set", "particles.r=0"}),
-            2);
+  // Sticky sub-threshold merges with r > 0 bounce unequal masses: the time windows do not apply
+  // (window_plan.hpp, window_obstacle).
+  EXPECT_EQ(
+      run({"run", scene.string(), "--out", out.string(), "-q", "--set", "particles.schedule=\"windows\"",
+           "--set", "initial.N=2048", "--set", "particles.subthreshold=\"sticky\""}),
+      2);
   EXPECT_FALSE(fs::exists(out));
   // The same with r = 0.5 runs.
   EXPECT_EQ(run({"run", scene.string(), "--out", out.string(), "-q", "--set",

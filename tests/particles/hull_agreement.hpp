@@ -13,10 +13,13 @@
 
 namespace shockgas::particles::testing {
 
-// Compares the engine's snapshots with the hull at the same times.
+// Compares the engine's snapshots with the hull at the same times. At r = 0 the
+// threshold and the sub-threshold rule do not apply (collision.hpp): any delta
+// gives the hull's clusters.
 inline void expect_engine_matches_hull(std::size_t n, const std::string& positions,
                                        const std::string& geometry, const std::vector<double>& times,
-                                       std::uint64_t seed) {
+                                       std::uint64_t seed, double delta = 0.0,
+                                       Subthreshold subthreshold = Subthreshold::elastic) {
   InitialParams ip;
   ip.N = n;
   ip.positions = parse_enum<Positions>(positions, "initial.positions");
@@ -26,7 +29,8 @@ inline void expect_engine_matches_hull(std::size_t n, const std::string& positio
   const double L = static_cast<double>(n);
   ParticleParams p;
   p.r = 0.0;
-  p.delta = 0.0;
+  p.delta = delta;
+  p.subthreshold = subthreshold;
   p.geometry = parse_enum<Geometry>(geometry, "particles.geometry");
   p.t_end = times.back();
   p.samples = 1;

@@ -59,6 +59,15 @@ TEST(Collision, ClassifyByThresholdAndRestitution) {
   const CollisionRule aggregation{0.0, 0.0, false};
   EXPECT_EQ(aggregation.classify(1e-300), CollisionKind::merge);
   EXPECT_TRUE(aggregation.can_merge());
+
+  // r = 0 merges every collision: the threshold and its rule do not apply.
+  for (const bool sticky : {false, true}) {
+    const CollisionRule sticky_gas{0.0, 0.1, sticky};
+    EXPECT_TRUE(sticky_gas.merges_only());
+    EXPECT_EQ(sticky_gas.classify(0.05), CollisionKind::merge);
+    EXPECT_EQ(sticky_gas.classify(0.5), CollisionKind::merge);
+  }
+  EXPECT_FALSE(sticky_sub.merges_only());
 }
 
 }  // namespace

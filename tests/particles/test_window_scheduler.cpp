@@ -158,10 +158,11 @@ TEST(WindowScheduler, HaltsOnlyBetweenWindowsWithMomentumKept) {
 }
 
 TEST(WindowScheduler, RefusedWhereItIsNotExact) {
-  Case c{4096, "random", "uniform", "ring", 0.0, 1e-2, 10.0};  // r = 0 merges
+  Case c{4096, "random", "uniform", "ring", 0.5, 1e-2, 10.0};
   const Bodies b = start(c);
-  EXPECT_THROW(simulate(b, 4096.0, params(c, "windows")), InputError);
-  c.r = 0.5;
+  ParticleParams sticky = params(c, "windows");
+  sticky.subthreshold = Subthreshold::sticky;  // merged bodies of unequal mass bounce with r > 0
+  EXPECT_THROW(simulate(b, 4096.0, sticky), InputError);
   c.delta = 0.0;  // inelastic collapse possible
   EXPECT_THROW(simulate(b, 4096.0, params(c, "windows")), InputError);
   // A schedule is named through its declaration (particles/params.cpp): an unknown name is refused there.

@@ -168,6 +168,9 @@ TEST(WindowThreads, MergesOnTheWindowsEqualTheGlobalQueueOnARing) {
 TEST(WindowThreads, StickyMergesOnTheWindowsEqualTheGlobalQueueOnALine) {
   expect_windows_equal_global_for_merges(Geometry::line, 1e-2, Subthreshold::sticky);
 }
+TEST(WindowThreads, RZeroWithAThresholdRunsOnTheWindows) {
+  expect_windows_equal_global_for_merges(Geometry::ring, 1e-2, Subthreshold::elastic);  // the paper's scenes
+}
 
 TEST(WindowThreads, UnequalMassMergesOnTheWindowsEqualTheGlobalQueue) {
   // Masses rho0(x) dx: merges are mass-weighted means, convex for any masses.
@@ -191,7 +194,8 @@ TEST(WindowThreads, UnequalMassMergesOnTheWindowsEqualTheGlobalQueue) {
 }
 
 TEST(WindowThreads, SummarySaysWhyWindowsDoNotApply) {
-  ParticleParams p = params({Geometry::ring, 0.0, 1e-2, Subthreshold::elastic, 10.0}, 2);  // r = 0, elastic bounces below delta
+  ParticleParams p =
+      params({Geometry::ring, 0.5, 1e-2, Subthreshold::sticky, 10.0}, 2);  // merges, then bounces
   const RunResult out = simulate(gas(4096), 0, p);
   EXPECT_EQ(out.schedule.order, "global");
   EXPECT_NE(out.schedule.why_global.find("unequal mass"), std::string::npos) << out.schedule.why_global;

@@ -10,9 +10,12 @@
 // is (1 - r^2) mu g^2 / 2 with the reduced mass mu = mL mR / (mL + mR).
 //
 // Kinds (Ben-Naim, Chen, Doolen & Redner, PRL 83, 4069 (1999)):
-//  * g < delta: sub-threshold. Elastic (r = 1) by default, or, with
+//  * r = 0: a merge, whatever g. The completely inelastic gas is the sticky gas
+//    ("particles aggregate upon collision"); it has no inelastic collapse, so the
+//    threshold has nothing to bypass and delta does not apply.
+//  * r > 0, g < delta: sub-threshold. Elastic (r = 1) by default, or, with
 //    subthreshold = "sticky", a merge.
-//  * otherwise r = 0 is a merge, r > 0 an inelastic collision.
+//  * r > 0, g >= delta: an inelastic collision.
 // A merge is a true aggregation: one body of mass mL + mR at the centre-of-mass
 // velocity (mL v + mR u) / (mL + mR), losing mu g^2 / 2. Point particles with
 // r = 0 but no merge would collide infinitely often inside a cluster.
@@ -22,15 +25,15 @@ namespace shockgas::particles {
 
 enum class CollisionKind : std::uint8_t {
   inelastic = 0,  // g >= delta, 0 < r <= 1
-  elastic = 1,    // g < delta, sub-threshold elastic
-  merge = 2,      // r = 0, or g < delta with sticky sub-threshold
+  elastic = 1,    // r > 0, g < delta, sub-threshold elastic
+  merge = 2,      // r = 0, or r > 0 and g < delta with sticky sub-threshold
 };
 
 // The rule's parameters, fixed for a run.
 struct CollisionRule {
   double r = 0.9;                    // restitution [1], 0 <= r <= 1
-  double delta = 1e-2;               // sub-threshold velocity [length/time], >= 0
-  bool sticky_subthreshold = false;  // sub-threshold collisions merge instead of bouncing
+  double delta = 1e-2;               // sub-threshold velocity [length/time], >= 0; r > 0 only
+  bool sticky_subthreshold = false;  // sub-threshold collisions merge instead of bouncing (r > 0)
 
   // True when some collision of this rule can merge bodies.
   bool can_merge() const { return r == 0.0 || (sticky_subthreshold && delta > 0.0); }
@@ -39,10 +42,14 @@ struct CollisionRule {
   // speeds: delta = 0 and 0 < r < 1.
   bool collapse_possible() const { return delta == 0.0 && r > 0.0 && r < 1.0; }
 
+  // True when every collision of this rule is a merge: r = 0.
+  bool merges_only() const { return r == 0.0; }
+
   // Kind of a collision with approach speed g > 0.
   CollisionKind classify(double g) const {
+    if (merges_only()) return CollisionKind::merge;
     if (g < delta) return sticky_subthreshold ? CollisionKind::merge : CollisionKind::elastic;
-    return r == 0.0 ? CollisionKind::merge : CollisionKind::inelastic;
+    return CollisionKind::inelastic;
   }
 
   // Restitution of a non-merging collision of this kind.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "shockgas/core/parameters.hpp"
+#include "shockgas/particles/collision.hpp"
 
 namespace shockgas::particles {
 
@@ -41,7 +42,7 @@ inline constexpr std::uint64_t kGlobalQueueCheckEvery = 1u << 14;
 
 // Unit, allowed range and meaning of every member: parameters() (particles/params.cpp).
 struct ParticleParams {
-  double r = 0.9;       // 0 = aggregation
+  double r = 0.9;       // 0 = aggregation (every collision merges)
   double delta = 1e-2;  // 0 = no threshold
   Subthreshold subthreshold = Subthreshold::elastic;
   Geometry geometry = Geometry::ring;
@@ -67,5 +68,8 @@ const ParameterTable<ParticleParams>& parameters();
 // Throws InputError naming the first key out of range: the declared rules, then
 // the rules between keys (hull only with r = 0, snapshots within t_end).
 void validate(const ParticleParams& p);
+
+// The collision rule of these parameters: r, delta and the sub-threshold kind.
+CollisionRule collision_rule(const ParticleParams& p);
 
 }  // namespace shockgas::particles
