@@ -20,4 +20,9 @@ std::vector<double> to_vector(const py::handle& values, const std::string& key) 
   return std::vector<double>(data, data + a.size());
 }
 
+std::size_t to_count(long long value, const std::string& key, long long min, const std::string& allowed) {
+  require(value >= min, key, value, allowed);
+  return static_cast<std::size_t>(value);
+}
+
 }  // namespace shockgas::python

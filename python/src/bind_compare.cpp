@@ -121,10 +121,11 @@ SnapshotKeys snapshot_keys(py::dict& keys, const std::string& function) {
 }
 
 py::dict detect_shocks(const py::handle& v, const py::handle& rho, double length, double min_jump,
-                       std::size_t max_width_cells) {
+                       long long max_width_cells) {
   const std::vector<double> vv = to_vector(v, "v");
   const std::vector<double> rr = rho.is_none() ? std::vector<double>{} : to_vector(rho, "rho");
-  return shocks_dict(compare::detect_shocks(vv, rr, length, {min_jump, max_width_cells}));
+  const std::size_t width = to_count(max_width_cells, "compare.max_width_cells", 1, ">= 1");
+  return shocks_dict(compare::detect_shocks(vv, rr, length, {min_jump, width}));
 }
 
 py::dict find_clusters(const py::handle& x, const py::handle& v, const py::handle& m, double L, double t,
@@ -145,16 +146,19 @@ py::dict match(const py::handle& shocks, const py::handle& clusters, double L, d
 }
 
 py::dict deposit(const py::handle& x, const py::handle& v, const py::handle& m, double length,
-                 std::size_t cells, const std::string& scheme) {
+                 long long cells, const std::string& scheme) {
   const auto s = compare::parse_deposit_scheme(scheme, "compare.deposit");
-  return fields_dict(compare::deposit_on_grid(state_from(x, v, m), length, cells, s));
+  const std::size_t n = to_count(cells, "compare.cells", 1, ">= 1");
+  return fields_dict(compare::deposit_on_grid(state_from(x, v, m), length, n, s));
 }
 
 py::dict sawtooth(const py::handle& v, double length, double t, const py::handle& shock_x,
-                  const py::handle& weights, std::size_t skip_cells, std::size_t min_cells) {
+                  const py::handle& weights, long long skip_cells, long long min_cells) {
   const std::vector<double> w = weights.is_none() ? std::vector<double>{} : to_vector(weights, "weights");
-  return sawtooth_dict(compare::fit_sawtooth_slopes(
-      to_vector(v, "v"), length, t, to_vector(shock_x, "shock_x"), {skip_cells, min_cells}, w));
+  const compare::SawtoothParams fit{to_count(skip_cells, "compare.sawtooth.skip_cells", 0, ">= 0"),
+                                    to_count(min_cells, "compare.sawtooth.min_cells", 2, ">= 2")};
+  return sawtooth_dict(
+      compare::fit_sawtooth_slopes(to_vector(v, "v"), length, t, to_vector(shock_x, "shock_x"), fit, w));
 }
 
 continuum::ContinuumResult field_from(const py::handle& field) {
@@ -172,7 +176,8 @@ continuum::ContinuumResult field_from(const py::handle& field) {
 }
 
 py::dict snapshot(const py::handle& x, const py::handle& v, const py::handle& m, const py::handle& field,
-                  std::size_t N, const py::kwargs& kwargs) {
+                  long long N_given, const py::kwargs& kwargs) {
+  const std::size_t N = to_count(N_given, "initial.N", 1, ">= 1");
   py::dict keys(kwargs);
   const SnapshotKeys k = snapshot_keys(keys, "shockgas.compare.snapshot");
   const Bodies state = state_from(x, v, m);

@@ -164,13 +164,14 @@ py::dict hull(const py::handle& x, const py::handle& v, const py::handle& m, dou
 }
 
 // Realization k of the scene keys' initial condition ([initial]), as bodies.
-py::dict initial_bodies(std::uint64_t realization, const py::kwargs& kwargs) {
+py::dict initial_bodies(long long realization, const py::kwargs& kwargs) {
+  const std::size_t k = to_count(realization, "realization", 0, "an integer >= 0");
   py::dict keys(kwargs);
   InitialParams ip;
   take_keywords(ip, initial_parameters(), keys);
   refuse_leftover(keys, "shockgas.particles.initial_bodies", initial_parameters().keys_text());
   validate(ip);
-  py::dict d = bodies_dict(make_initial_bodies(ip, realization));
+  py::dict d = bodies_dict(make_initial_bodies(ip, k));
   d["L"] = domain_length(ip);
   return d;
 }

@@ -97,6 +97,21 @@ def test_deposit_refuses_bodies_it_cannot_deposit():
                                                         length=1.0, cells=4), "compare.bodies.m[1]")
 
 
+def test_a_negative_count_is_an_input_error_naming_it():
+    # found: a negative int failed pybind's conversion to an unsigned count with a raw TypeError
+    v = np.sin(2 * np.pi * (np.arange(64) + 0.5) / 64)
+    raises_input_error(lambda: shockgas.compare.deposit(X, V, length=100.0, cells=-3), "compare.cells")
+    raises_input_error(lambda: shockgas.compare.detect_shocks(v, 1.0, max_width_cells=-2),
+                       "compare.max_width_cells")
+    raises_input_error(lambda: shockgas.compare.sawtooth(v, 1.0, 0.5, [0.5], skip_cells=-1),
+                       "compare.sawtooth.skip_cells")
+    raises_input_error(lambda: shockgas.compare.sawtooth(v, 1.0, 0.5, [0.5], min_cells=-1),
+                       "compare.sawtooth.min_cells")
+    raises_input_error(lambda: shockgas.particles.initial_bodies(-1, N=100), "realization")
+    field = shockgas.continuum.solve("hopf_lax", v, dx=1 / 64, t_end=0.5)
+    raises_input_error(lambda: shockgas.compare.snapshot(X / 100, V, None, field, N=-5), "initial.N")
+
+
 def test_a_call_that_cannot_fit_in_memory_is_refused_before_any_work():
     # found: the kernel's out-of-memory killer ended the Python process (the
     # command refused the same scene); petabytes, beyond any machine
