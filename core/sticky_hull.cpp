@@ -162,7 +162,7 @@ template <bool Masses, class Block>
 StickyHull::Built StickyHull::build(Block&& block) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   bool valid = true;
-  double previous = -inf, first = 0;
+  double previous = -inf, first = 0, vmax = 0;
   Stack<Masses> stack{c0_.get(), v_.get(), m_.get(), count_.get(), t_, n_};
   constexpr std::size_t size = 4096;
   for (std::size_t begin = 0; begin < n_; begin += size) {
@@ -175,7 +175,9 @@ StickyHull::Built StickyHull::build(Block&& block) {
     stack.reserve(end - begin);
     for (std::size_t j = 0; j < end - begin; ++j) {
       if (!Masses && b.m[j] != m0_) return Built::unequal_masses;
-      valid &= (b.x[j] >= previous) & (std::abs(b.v[j]) < inf);
+      const double speed = std::abs(b.v[j]);
+      valid &= (b.x[j] >= previous) & (speed < inf);
+      vmax = speed > vmax ? speed : vmax;
       if constexpr (Masses) valid &= (b.m[j] > 0) & (b.m[j] < inf);
       previous = b.x[j];
       stack.push(b.x[j], b.v[j], Masses ? b.m[j] : 1.0, 1);
@@ -184,6 +186,8 @@ StickyHull::Built StickyHull::build(Block&& block) {
   if (n_ == 0) m0_ = 1.0;
   if (n_ > 0) valid &= first > -inf && previous < inf && (L_ == 0 || (first >= 0 && previous < L_));
   if (!valid) return Built::bad_input;
+  vmax_ = vmax;
+  reach_x_ = n_ > 0 ? std::max(std::abs(first), std::abs(previous)) + L_ : 0.0;
   end_ = stack.top;
   if (L_ > 0) close_ring();
   return Built::ok;
@@ -248,6 +252,7 @@ StickyHull StickyHull::make(BodiesView initial, double L, double t) {
     built = h.build<true>(block);
   }
   if (built == Built::bad_input) check_bodies(initial, L);
+  h.check_reach(t);
   return h;
 }
 
@@ -275,14 +280,27 @@ StickyHull StickyHull::make(std::size_t n, const Chunks& read, double L, double 
   if (built == Built::bad_input)
     throw InputError("bodies", std::to_string(n) + " bodies",
                      "positions sorted and finite (ring: in [0, L)), velocities finite, masses > 0");
+  h.check_reach(t);
   return h;
 }
 
 void StickyHull::advance(double t) {
   require(std::isfinite(t) && t >= t_, "t", t, "a finite time >= the hull's time " + to_text(t_));
+  check_reach(t);
   t_ = t;
   masses_ ? pool_runs<true>() : pool_runs<false>();
   if (L_ > 0) close_ring();
+}
+
+// |x + t v| <= max|x| + t max|v|; a margin of 2 covers the sums of the merges
+// (a centre and a velocity averaged separately) and the ring's shifts.
+void StickyHull::check_reach(double t) const {
+  const double limit = std::numeric_limits<double>::max() / 2;
+  if (reach_x_ + t * vmax_ < limit) return;
+  const double t_max = vmax_ > 0 ? (limit - reach_x_) / vmax_ : 0.0;
+  throw InputError("t", to_text(t),
+                   "at most " + to_text(std::max(t_max, 0.0)) +
+                       " for these bodies: x + t v must stay within the range of doubles");
 }
 
 // The ring's period is in cyclic order of x: x ascends from the lowest wrapped x.

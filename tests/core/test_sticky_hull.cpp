@@ -269,6 +269,24 @@ TEST(StickyHull, RefusesBadInput) {
   EXPECT_THROW(sticky_clusters_line(b, 1.0), InputError);
 }
 
+// x + t v beyond the doubles: found returning positions of -inf and +inf.
+TEST(StickyHull, ATimeThatOverflowsThePositionsIsRefused) {
+  Bodies b;
+  b.push_back(0.5, -1e200, 1.0);
+  b.push_back(1.5, 1e200, 1.0);
+  try {
+    sticky_clusters_line(b, 1e200);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "t");
+  }
+  EXPECT_THROW(sticky_clusters_ring(b, 2.0, 1e200), InputError);
+  // Below the bound (DBL_MAX / 2 - max|x| - L) / max|v| = 8.99e107 the run goes on.
+  EXPECT_EQ(sticky_clusters_line(b, 8e107).size(), 2u);
+  StickyHull h = StickyHull::line(b, 1.0);
+  EXPECT_THROW(h.advance(1e200), InputError);
+}
+
 TEST(StickyHull, ToBodiesSortsByPosition) {
   const std::vector<StickyCluster> c = {{2.0, 1.0, 3.0, 5, 2}, {1.0, -1.0, 1.0, 0, 5}};
   const Bodies b = to_bodies(c);

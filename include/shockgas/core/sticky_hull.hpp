@@ -105,6 +105,8 @@ class StickyHull {
   template <bool Masses>
   void pool_runs();
   void close_ring();
+  // InputError naming t when x + t v could leave the range of doubles.
+  void check_reach(double t) const;
   double mass(std::size_t k) const { return masses_ ? m_[k] : m0_ * count_[k]; }
   // x wrapped into [0, L) on a ring; unchanged on a line.
   double wrapped(double x) const {
@@ -124,6 +126,8 @@ class StickyHull {
   double t_;
   bool masses_;    // masses differ: m_ holds them
   double m0_ = 0;  // the mass of every body, if they are equal
+  double reach_x_ = 0;  // max |x| at t = 0, plus L on a ring (unrolled centres): check_reach
+  double vmax_ = 0;     // max |v|
   std::size_t origin_ = 0, begin_ = 0,
               end_ = 0;                     // index of the first body of run begin_; runs [begin_, end_)
   std::unique_ptr<double[]> c0_, v_, m_;    // centre of mass at t = 0 (unrolled), velocity, mass
