@@ -9,22 +9,48 @@
 
 namespace shockgas::python {
 
+namespace {
+
+// A value no reader accepts (Type::other): the key's reader refuses it, naming it.
+ParameterValue unreadable(const py::handle& value) {
+  ParameterValue other;
+  other.written = std::string(py::str(py::repr(value)));
+  return other;
+}
+
+}  // namespace
+
+// Python and numpy scalars by their type, in this order: a numpy array of one
+// dimension or more is a list (it has __index__ too, so it must not reach the
+// integer branch), a 0-d array its item; bool before int (bool is an int in
+// Python); an int beyond int64 cannot be read.
 ParameterValue to_parameter(const py::handle& value) {
-  if (py::isinstance<py::bool_>(value)) return ParameterValue::of(value.cast<bool>());
-  if (PyLong_Check(value.ptr()) || (!PyFloat_Check(value.ptr()) && PyIndex_Check(value.ptr())))
-    return ParameterValue::of(value.cast<std::int64_t>());  // int, numpy integers
-  if (PyFloat_Check(value.ptr()) || py::isinstance(value, py::module_::import("numpy").attr("floating")))
-    return ParameterValue::of(value.cast<double>());
-  if (py::isinstance<py::str>(value)) return ParameterValue::of(value.cast<std::string>());
-  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value) ||
-      py::isinstance<py::array>(value)) {
+  const py::module_ numpy = py::module_::import("numpy");
+  if (py::isinstance<py::array>(value)) {
+    const auto a = py::reinterpret_borrow<py::array>(value);
+    if (a.ndim() == 0) return to_parameter(a.attr("item")());
     std::vector<ParameterValue> items;
     for (const py::handle item : py::iter(value)) items.push_back(to_parameter(item));
     return ParameterValue::list(std::move(items));
   }
-  ParameterValue other;
-  other.written = std::string(py::str(py::repr(value)));
-  return other;  // Type::other: every reader refuses it, naming the key
+  if (py::isinstance<py::bool_>(value) || py::isinstance(value, numpy.attr("bool_")))
+    return ParameterValue::of(py::bool_(py::reinterpret_borrow<py::object>(value)).cast<bool>());
+  if (PyLong_Check(value.ptr()) || py::isinstance(value, numpy.attr("integer"))) {
+    int overflow = 0;
+    const py::int_ as_int(py::reinterpret_borrow<py::object>(value));
+    const long long i = PyLong_AsLongLongAndOverflow(as_int.ptr(), &overflow);
+    if (overflow != 0) return unreadable(value);
+    return ParameterValue::of(static_cast<std::int64_t>(i));
+  }
+  if (PyFloat_Check(value.ptr()) || py::isinstance(value, numpy.attr("floating")))
+    return ParameterValue::of(value.cast<double>());
+  if (py::isinstance<py::str>(value)) return ParameterValue::of(value.cast<std::string>());
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    std::vector<ParameterValue> items;
+    for (const py::handle item : py::iter(value)) items.push_back(to_parameter(item));
+    return ParameterValue::list(std::move(items));
+  }
+  return unreadable(value);
 }
 
 void refuse_leftover(const py::dict& kwargs, const std::string& function, const std::string& accepted) {

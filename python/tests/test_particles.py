@@ -97,3 +97,23 @@ def test_unit_masses_by_default_and_the_ring_length():
     # On a ring of length 10 the outer bodies are 8 apart across the seam and never meet there.
     ring = shockgas.hull(x, v, t=2.0, L=10.0)
     assert ring.m.tolist() == [3.0]
+
+
+def test_numpy_values_of_keywords_are_read_as_the_python_ones():
+    # found: a numpy array or numpy bool was read as an integer (r = [0.5] became 0: every collision
+    # merged), a float array of snapshots as integers, an int beyond int64 was a RuntimeError
+    x, v = np.array([0.5, 1.5]), np.array([1.0, -1.0])
+    plain = shockgas.particles.simulate(x, v, r=0.5, t_end=1.0, snapshots=[0.25, 0.5], spacetime=True)
+    numpy = shockgas.particles.simulate(x, v, r=np.float64(0.5), t_end=np.array(1.0),
+                                       snapshots=np.array([0.25, 0.5]), spacetime=np.bool_(True))
+    np.testing.assert_array_equal(numpy.final.v, plain.final.v)
+    np.testing.assert_array_equal(numpy.final.v, [-0.5, 0.5])  # r = 0.5 maps g = 2 to -1
+    assert [s.t for s in numpy.snapshots] == [0.25, 0.5]
+    assert numpy.spacetime is not None
+    for bad in (np.array([0.5]), np.array([[0.5]])):
+        with pytest.raises(shockgas.InputError, match="particles.r"):
+            shockgas.particles.simulate(x, v, r=bad)
+    with pytest.raises(shockgas.InputError, match="particles.samples"):
+        shockgas.particles.simulate(x, v, samples=2**63)
+    scene = {"initial": {"N": 64}, "particles": {"t_end": 10.0, "snapshots": np.array([2.5])}}
+    assert shockgas.run(scene).attributes["/particles/snapshots/0@t"] == 2.5
