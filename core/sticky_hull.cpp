@@ -119,10 +119,12 @@ struct Stack {
   double top_x = -std::numeric_limits<double>::infinity();  // -inf: empty
 
   // Pushes a cluster (centre of mass c at t = 0, velocity u, weight w, k
-  // bodies), merging while the run below would be to the right of it at t.
+  // bodies), merging while the run below has met it by t: it is to the right
+  // of it at t, or at the same point and approaching (a collision at exactly t,
+  // which the event engine has made by t too).
   void push(double c, double u, double w, std::uint32_t k) {
     double x = c + t * u;
-    while (top_x > x) {
+    while (top_x > x || (top_x == x && top > 0 && v[top - 1] > u)) {
       const std::size_t b = top - 1;
       const double total = (Masses ? m[b] : static_cast<double>(count[b])) + w;
       const double share = w / total;
@@ -213,8 +215,9 @@ void StickyHull::close_ring() {
     if (masses_) m_[left] = ml + mr;
     count_[left] += count_[right];
   };
-  auto overlaps = [&](std::size_t left, std::size_t right, double shift) {
-    return c0_[left] + t_ * v_[left] > (c0_[right] + shift) + t_ * v_[right];
+  auto overlaps = [&](std::size_t left, std::size_t right, double shift) {  // met by t, as push()
+    const double xl = c0_[left] + t_ * v_[left], xr = (c0_[right] + shift) + t_ * v_[right];
+    return xl > xr || (xl == xr && v_[left] > v_[right]);
   };
   std::size_t front = begin_;
   while (end_ - front >= 2) {

@@ -23,6 +23,38 @@ TEST(HullAgreement, AThresholdDoesNotApplyAtRZero) {
   testing::expect_engine_matches_hull(3000, "lattice", "ring", kTimes, 7, 0.3, Subthreshold::sticky);
 }
 
+// Bodies that meet exactly at an output time have collided by then in both:
+// x = i, v = +1, -1, +1, ... pairs meet at t = 1/2 (exact in doubles) and stop.
+TEST(HullAgreement, ACollisionExactlyAtTheOutputTimeIsMadeByBoth) {
+  for (const Geometry geometry : {Geometry::line, Geometry::ring}) {
+    Bodies b;
+    for (int i = 0; i < 2000; ++i) b.push_back(i + 0.25, i % 2 == 0 ? 1.0 : -1.0, 1.0);
+    const double L = 2000.0;
+    ParticleParams p;
+    p.r = 0.0;
+    p.geometry = geometry;
+    p.t_end = 0.5;
+    p.samples = 1;
+    p.clusters = false;
+    p.snapshots = {0.25, 0.5};
+    const RunResult run = simulate(b, L, p);
+    ASSERT_EQ(run.snapshots.size(), 2u);
+    for (const Snapshot& snap : run.snapshots) {
+      const Bodies exact = to_bodies(geometry == Geometry::ring ? sticky_clusters_ring(b, L, snap.t)
+                                                                : sticky_clusters_line(b, snap.t));
+      EXPECT_EQ(snap.bodies.size(), exact.size()) << "t = " << snap.t;
+    }
+    EXPECT_EQ(run.snapshots[1].bodies.size(), 1000u);  // every pair met at t = 1/2
+  }
+  // At t = 0: coincident bodies that approach have met, those that separate have not.
+  Bodies b;
+  b.push_back(1.0, 1.0, 1.0);
+  b.push_back(1.0, -1.0, 1.0);
+  b.push_back(2.0, -1.0, 1.0);
+  b.push_back(2.0, 1.0, 1.0);
+  EXPECT_EQ(sticky_clusters_line(b, 0.0).size(), 3u);
+}
+
 TEST(HullModel, SameObservablesAsTheEngine) {
   InitialParams ip;
   ip.N = 2000;

@@ -10,7 +10,9 @@
 // velocity the mass-weighted mean of its members (E, Rykov & Sinai 1996;
 // Brenier & Grenier 1998). Clusters only merge: the partition at a later time
 // coarsens the one at an earlier time, so the later state is the hull of the
-// earlier clusters taken as bodies (StickyHull::advance).
+// earlier clusters taken as bodies (StickyHull::advance). Clusters that meet at
+// exactly t (same position, the left one faster) are one at t, as the event
+// engine has collided them by then; coincident ones that separate are not.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
