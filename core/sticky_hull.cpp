@@ -61,8 +61,9 @@ void check_bodies(BodiesView b, double L) {
     if (i > 0 && !(b.x[i] >= b.x[i - 1]))
       throw InputError("bodies.x", to_text(b.x[i]), "positions sorted ascending");
   }
-  require(L == 0 || b.size() == 0 || (b.x.front() >= 0 && b.x.back() < L), "bodies.x", b.x.back(),
-          "positions in [0, L)");
+  if (L == 0 || b.size() == 0) return;
+  const double outside = b.x.front() < 0 ? b.x.front() : b.x.back();  // sorted: an end is out if any is
+  require(outside >= 0 && outside < L, "bodies.x", outside, "positions in [0, L)");
 }
 
 void check_arguments(BodiesView b, double t) {

@@ -269,6 +269,14 @@ TEST(StickyHull, RefusesBadInput) {
   EXPECT_THROW(sticky_clusters_ring(b, 1.0, 1.0), InputError);  // x = 1 not in [0, 1)
   b.m[0] = 0;
   EXPECT_THROW(sticky_clusters_line(b, 1.0), InputError);
+  b.m[0] = 1;
+  b.x = {-0.5, 1.0};  // the message names the body outside: it named the last one
+  try {
+    sticky_clusters_ring(b, 2.0, 1.0);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("-0.5"), std::string::npos) << e.what();
+  }
 }
 
 // x + t v beyond the doubles: found returning positions of -inf and +inf.

@@ -81,8 +81,8 @@ void expect_bodies_equal(const Bodies& a, const Bodies& b) {
 void expect_matches_reference(const Chain& s, const ParticleParams& p, bool ring) {
   const RunResult out = record(s, p, ring);
   const ClusterCriteria criteria =
-      p.r == 0 && p.delta == 0 ? merged_bodies_criteria()
-                               : default_cluster_criteria(p.delta, s.L / static_cast<double>(s.particles));
+      p.r == 0 ? merged_bodies_criteria()  // every collision merges (collision.hpp)
+               : default_cluster_criteria(p.delta, s.L / static_cast<double>(s.particles));
   const Bodies sorted = ref_sorted(s, ring);
   const auto [mean, T] = ref_mean_and_temperature(s);
   const double clusters = static_cast<double>(find_clusters(sorted, ring ? s.L : 0.0, criteria).size());
