@@ -47,10 +47,11 @@ ParameterTable<ParticleParams> declare() {
             std::to_string(kGlobalQueueCheckEvery) +
             " collisions on the global queue), stop = event_limit; one that reaches t_end first has "
             "completed; 0 = "
-            "no limit",
+            "no limit (event engine only)",
         allowed(at_least(0)));
   t.add(&P::max_wall_seconds, "max_wall_seconds", "s",
-        "stop a realization after this wall-clock time; 0 = no limit", allowed(at_least(0)));
+        "stop a realization after this wall-clock time; 0 = no limit (event engine only)",
+        allowed(at_least(0)));
   return t;
 }
 
@@ -67,6 +68,12 @@ void validate(const ParticleParams& p) {
           "\"" + name_of(ParticleSolver::hull) + "\" only with particles.r = 0 (the exact sticky solution)");
   for (double t : p.snapshots)
     require(t <= p.t_end, "particles.snapshots", t, "times in [0, particles.t_end]");
+  // The hull is exact at each sample time: it has no collisions to count and no safe points to stop at.
+  const bool hull = p.solver == ParticleSolver::hull;
+  require(!hull || p.max_collisions == 0, "particles.max_collisions", p.max_collisions,
+          "0 with particles.solver = \"hull\" (the limits stop the event engine only)");
+  require(!hull || p.max_wall_seconds == 0, "particles.max_wall_seconds", p.max_wall_seconds,
+          "0 with particles.solver = \"hull\" (the limits stop the event engine only)");
 }
 
 CollisionRule collision_rule(const ParticleParams& p) {

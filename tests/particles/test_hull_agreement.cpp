@@ -1,4 +1,6 @@
 #include "hull_agreement.hpp"
+#include "shockgas/core/error.hpp"
+#include "shockgas/particles/params.hpp"
 
 namespace shockgas::particles {
 namespace {
@@ -82,6 +84,25 @@ TEST(HullModel, SameObservablesAsTheEngine) {
   }
   ASSERT_EQ(hull.histogram.density.size(), events.histogram.density.size());
   EXPECT_EQ(hull.final_state.size(), events.final_state.size());
+}
+
+// The hull has no collisions to count nor safe points: the engine's limits are
+// refused with it (found: max_collisions = 5000 was ignored, stop = completed).
+TEST(HullModel, TheEnginesLimitsAreRefused) {
+  ParticleParams p;
+  p.r = 0.0;
+  p.solver = ParticleSolver::hull;
+  validate(p);
+  p.max_collisions = 5000;
+  try {
+    validate(p);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "particles.max_collisions");
+  }
+  p.max_collisions = 0;
+  p.max_wall_seconds = 10.0;
+  EXPECT_THROW(validate(p), InputError);
 }
 
 }  // namespace

@@ -66,7 +66,8 @@ struct ParticleParams {
 const ParameterTable<ParticleParams>& parameters();
 
 // Throws InputError naming the first key out of range: the declared rules, then
-// the rules between keys (hull only with r = 0, snapshots within t_end).
+// the rules between keys (hull only with r = 0 and without the engine's limits, snapshots
+// within t_end).
 void validate(const ParticleParams& p);
 
 // The collision rule of these parameters: r, delta and the sub-threshold kind.
