@@ -70,6 +70,28 @@ TEST(ShockDetection, SmoothCompressionIsNotAShock) {
   EXPECT_TRUE(detect_shocks(v, {}, L).empty());
 }
 
+// The Riemann problem v = 1 | 0 on the ring at t = 0.2, as the exact solver's
+// cell averages give it: a fan rising at slope 1/t to 1, a plateau, the shock at
+// 0.6. Where the fan meets the plateau the averages dropped by one rounding
+// (2.2e-16); extrapolating the fan's slope made that a jump of -0.09, a second
+// shock (found on hopf_lax's output).
+TEST(ShockDetection, ARoundingDropAtTheEdgeOfAFanIsNoShock) {
+  const std::size_t n = 64;
+  const double dx = 1.0 / n, t = 0.2;
+  // Cell averages of v(x) = x / t (x < t), 1 (t <= x < 0.6), 0 after: the
+  // integral of v from 0 to x, differenced.
+  auto integral = [t](double x) { return x < t ? x * x / (2 * t) : t / 2 + (std::min(x, 0.6) - t); };
+  std::vector<double> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = (integral((i + 1) * dx) - integral(i * dx)) / dx;
+  v[14] = 1.0 - 2.2e-16;  // the plateau's second cell, one rounding below the first
+  ASSERT_LT(v[14] - v[13], 0.0);
+  const auto shocks = detect_shocks(v, {}, 1.0, {});
+  ASSERT_EQ(shocks.size(), 1u);
+  // A step between flat states inside a cell: the conserving position is exact.
+  EXPECT_NEAR(shocks[0].x, 0.6, 1e-12);
+  EXPECT_NEAR(shocks[0].jump, -1.0, 1e-12);
+}
+
 TEST(ShockDetection, UsesTheSolversOwnListWhenItHasOne) {
   continuum::ContinuumResult r;
   r.length = 10;
