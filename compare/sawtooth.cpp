@@ -44,6 +44,8 @@ SawtoothFit fit_sawtooth_between(const std::vector<double>& v, double length, do
   require(!v.empty(), "compare.cells", v.size(), ">= 1");
   require(weights.empty() || weights.size() == v.size(), "compare.weights", weights.size(),
           "empty or one per cell");
+  for (double vi : v) require(std::isfinite(vi), "compare.v", vi, "finite velocities");
+  for (double w : weights) require(std::isfinite(w) && w >= 0, "compare.weights", w, "finite, >= 0");
   require(params.min_cells >= 2, "compare.sawtooth.min_cells", params.min_cells, ">= 2");
   for (std::size_t k = 0; k < extents.size(); ++k) {
     require(extents[k].left >= 0 && extents[k].left < length, "compare.extent.left", extents[k].left,
@@ -79,6 +81,8 @@ SawtoothFit fit_sawtooth_between(const std::vector<double>& v, double length, do
 SawtoothFit fit_sawtooth_slopes(const std::vector<double>& v, double length, double t,
                                 std::vector<double> shock_x, const SawtoothParams& params,
                                 const std::vector<double>& weights) {
+  require(std::isfinite(length) && length > 0, "compare.length", length,
+          "> 0");  // before shock_x, named by it
   for (double x : shock_x) require(x >= 0 && x < length, "compare.shock_x", x, "in [0, length)");
   std::sort(shock_x.begin(), shock_x.end());
   std::vector<Extent> points;

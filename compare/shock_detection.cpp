@@ -118,6 +118,7 @@ std::vector<continuum::Shock> detect_shocks(const std::vector<double>& v, const 
           ">= 0 (0 = automatic)");
   require(params.max_width_cells >= 1, "compare.max_width_cells", params.max_width_cells, ">= 1");
   for (double vi : v) require(std::isfinite(vi), "compare.v", vi, "finite velocities");
+  for (double r : rho) require(std::isfinite(r), "compare.rho", r, "finite densities");
 
   const Grid g{v, rho, length, length / static_cast<double>(v.size()), static_cast<Index>(v.size())};
   const double min_jump = params.min_jump > 0 ? params.min_jump : automatic_min_jump(v);

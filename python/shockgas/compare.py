@@ -63,8 +63,9 @@ def match(shocks, clusters, L, *, max_distance=0.0, min_mass=0.0):
 
 
 def deposit(x, v, m=None, *, length, cells, scheme="cic"):
-    """Point masses on len = cells equal cells of [0, length): "cic" (cloud in
-    cell) or "ngp" (nearest cell). Returns a Record: x (centres), rho = mass/dx,
+    """Point masses on len = cells equal cells of the ring [0, length): "cic"
+    (cloud in cell) or "ngp" (nearest cell); a position outside [0, length) is
+    taken modulo length. Returns a Record: x (centres), rho = mass/dx,
     v = momentum/mass (empty cells interpolated between occupied ones), mass
     (0 marks an empty cell), momentum."""
     return Record(_core._deposit(x, v, m, length, cells, scheme))

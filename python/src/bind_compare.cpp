@@ -6,6 +6,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "keywords.hpp"
+#include "memory_check.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
 #include "shockgas/particles/params.hpp"
 
@@ -19,8 +20,9 @@ using particles::Cluster;
 Bodies state_from(const py::handle& x, const py::handle& v, const py::handle& m) {
   Bodies b{to_vector(x, "x"), to_vector(v, "v"), {}};
   b.m = m.is_none() ? std::vector<double>(b.x.size(), 1.0) : to_vector(m, "m");
-  require(b.v.size() == b.x.size() && b.m.size() == b.x.size(), "v", b.v.size(),
-          "x, v and m of equal lengths (" + std::to_string(b.x.size()) + ")");
+  const std::string equal = "len(x) = " + std::to_string(b.x.size());
+  require(b.v.size() == b.x.size(), "len(v)", b.v.size(), equal);
+  require(b.m.size() == b.x.size(), "len(m)", b.m.size(), equal);
   return b;
 }
 
@@ -149,6 +151,8 @@ py::dict deposit(const py::handle& x, const py::handle& v, const py::handle& m, 
                  long long cells, const std::string& scheme) {
   const auto s = compare::parse_deposit_scheme(scheme, "compare.deposit");
   const std::size_t n = to_count(cells, "compare.cells", 1, ">= 1");
+  check_bytes(5.0 * sizeof(double) * static_cast<double>(n), "compare.cells",
+              static_cast<double>(n));  // 5 fields
   return fields_dict(compare::deposit_on_grid(state_from(x, v, m), length, n, s));
 }
 
@@ -170,6 +174,9 @@ continuum::ContinuumResult field_from(const py::handle& field) {
   f.x = to_vector(d["x"], "field.x");
   f.v = to_vector(d["v"], "field.v");
   if (!d["rho"].is_none()) f.rho = to_vector(d["rho"], "field.rho");
+  const std::string cells = "len(field.x) = " + std::to_string(f.x.size());
+  require(f.v.size() == f.x.size(), "len(field.v)", f.v.size(), cells);
+  require(f.rho.empty() || f.rho.size() == f.x.size(), "len(field.rho)", f.rho.size(), cells);
   f.has_shocks = !d["shocks"].is_none();
   if (f.has_shocks) f.shocks = shocks_from(d["shocks"]);
   return f;

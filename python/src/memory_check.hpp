@@ -4,8 +4,11 @@
 // cannot fit is an InputError naming the key that needs most, before any work,
 // not the kernel's out-of-memory killer ending the Python process.
 #include <cstddef>
+#include <string>
 
+#include "durable_file.hpp"
 #include "resources.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::python {
 
@@ -18,6 +21,16 @@ inline void check_memory_of(std::size_t N, const particles::ParticleParams* part
   if (particles) s.has_particles = true, s.particles = *particles;
   if (continuum) s.has_continuum = true, s.continuum = *continuum;
   app::check_memory(s);
+}
+
+// A call whose peak is `bytes`, set by `key` = value: an InputError naming it
+// when that is more than the process may still use.
+inline void check_bytes(double bytes, const std::string& key, double value) {
+  const app::MemoryLimit limit = app::memory_limit();
+  if (bytes <= limit.bytes) return;
+  throw InputError(key, to_text(value),
+                   "a size that fits in the memory available: it needs about " + app::size_text(bytes) +
+                       ", " + app::size_text(limit.bytes) + " available (" + limit.source + ")");
 }
 
 }  // namespace shockgas::python

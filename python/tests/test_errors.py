@@ -112,6 +112,21 @@ def test_a_negative_count_is_an_input_error_naming_it():
     raises_input_error(lambda: shockgas.compare.snapshot(X / 100, V, None, field, N=-5), "initial.N")
 
 
+def test_the_comparisons_refuse_values_they_cannot_use():
+    # found: NaN densities gave a shock of mass 0, a NaN velocity a NaN slope, negative weights no
+    # ramps, a field of 10 values on 256 cells was compared, and a short m was reported as v
+    v = np.sin(2 * np.pi * (np.arange(64) + 0.5) / 64)
+    raises_input_error(lambda: shockgas.compare.detect_shocks(v, 1.0, np.full(64, np.nan)), "compare.rho")
+    raises_input_error(lambda: shockgas.compare.sawtooth(np.r_[np.nan, v[1:]], 1.0, 0.5, [0.5]), "compare.v")
+    raises_input_error(lambda: shockgas.compare.sawtooth(v, 1.0, 0.5, [0.5], weights=-np.ones(64)),
+                       "compare.weights")
+    raises_input_error(lambda: shockgas.compare.sawtooth(v, 0.0, 0.5, [0.25]), "compare.length")
+    raises_input_error(lambda: shockgas.compare.deposit(X, V, V[:3], length=100.0, cells=4), "len(m)")
+    field = shockgas.continuum.solve("hopf_lax", v, dx=1 / 64, t_end=0.5)
+    field.v = field.v[:10]
+    raises_input_error(lambda: shockgas.compare.snapshot(X / 100, V, None, field, N=100), "len(field.v)")
+
+
 def test_a_call_that_cannot_fit_in_memory_is_refused_before_any_work():
     # found: the kernel's out-of-memory killer ended the Python process (the
     # command refused the same scene); petabytes, beyond any machine
@@ -120,3 +135,5 @@ def test_a_call_that_cannot_fit_in_memory_is_refused_before_any_work():
     assert "a scene that fits in the memory available" in e.allowed
     raises_input_error(lambda: shockgas.continuum.solve("godunov", V, dx=0.01, cells=10**13), "continuum.cells")
     raises_input_error(lambda: shockgas.particles.ensemble(N=10**15, t_end=1.0), "initial.N")
+    raises_input_error(lambda: shockgas.compare.deposit(X, V, length=100.0, cells=10**15), "compare.cells")
+    raises_input_error(lambda: shockgas.particles.initial_bodies(N=10**15), "initial.N")
