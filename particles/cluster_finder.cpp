@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cluster_sums.hpp"
+#include "shockgas/core/bodies.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::particles {
@@ -14,6 +15,7 @@ void validate_input(const Bodies& b, double L, const ClusterCriteria& c) {
   detail::require_cluster_inputs(L, c);
   require(b.v.size() == b.size() && b.m.size() == b.size(), "cluster.bodies", b.size(),
           "x, v and m of equal length");
+  require_finite_bodies(b, "cluster.bodies");  // a NaN x would fail the order below under another's name
   for (std::size_t i = 0; i + 1 < b.size(); ++i)
     require(b.x[i] <= b.x[i + 1], "cluster.bodies.x", b.x[i + 1], "positions sorted ascending");
   if (L > 0 && b.size() > 0)

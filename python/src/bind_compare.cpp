@@ -134,6 +134,8 @@ py::dict find_clusters(const py::handle& x, const py::handle& v, const py::handl
                        const py::kwargs& kwargs) {
   py::dict keys(kwargs);
   const SnapshotKeys k = snapshot_keys(keys, "shockgas.compare.find_clusters");
+  require(std::isfinite(L) && L > 0, "L", L, "> 0 (the ring's length)");
+  require(std::isfinite(t) && t >= 0, "t", t, ">= 0");
   const Bodies b = state_from(x, v, m);
   require(b.size() >= 1, "x", b.size(), "at least one body");
   const double spacing = L / static_cast<double>(b.size());

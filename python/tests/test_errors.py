@@ -122,6 +122,11 @@ def test_the_comparisons_refuse_values_they_cannot_use():
                        "compare.weights")
     raises_input_error(lambda: shockgas.compare.sawtooth(v, 0.0, 0.5, [0.25]), "compare.length")
     raises_input_error(lambda: shockgas.compare.deposit(X, V, V[:3], length=100.0, cells=4), "len(m)")
+    # found: a NaN position named another body as unsorted; L = 0 and t < 0 named internal keys
+    raises_input_error(lambda: shockgas.compare.find_clusters(np.r_[np.nan, X[1:]], V, L=100.0, t=1.0),
+                       "cluster.bodies.x[0]")
+    raises_input_error(lambda: shockgas.compare.find_clusters(X, V, L=0.0, t=1.0), "L")
+    raises_input_error(lambda: shockgas.compare.find_clusters(X, V, L=100.0, t=-1.0), "t")
     field = shockgas.continuum.solve("hopf_lax", v, dx=1 / 64, t_end=0.5)
     field.v = field.v[:10]
     raises_input_error(lambda: shockgas.compare.snapshot(X / 100, V, None, field, N=100), "len(field.v)")
