@@ -68,13 +68,20 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   const double initial = s.has_continuum || !drawn ? kBodyBytes : 0;
   items.push_back({"initial.N", "the particles: the initial condition and the engines at work",
                    N * (initial + d(concurrent_runs(p)) * particles::bytes_per_body(p, drawn))});
-  items.push_back({"particles.samples", "the time series of every realization", R * samples * kSeriesColumns * 8});
+  items.push_back({"particles.samples",
+                   "the time series of every realization",
+                   R * samples * kSeriesColumns * 8,
+                   {"particles.realizations"}});
   if (p.histogram_bins > 0)
-    items.push_back({"particles.histogram_bins", "the velocity histograms of every realization",
-                     (2 * R + kHistogramCopies) * samples * d(p.histogram_bins) * 8, "particles.samples"});
+    items.push_back({"particles.histogram_bins",
+                     "the velocity histograms of every realization",
+                     (2 * R + kHistogramCopies) * samples * d(p.histogram_bins) * 8,
+                     {"particles.samples", "particles.realizations"}});
   if (p.spacetime)
-    items.push_back({"particles.spacetime", "the space-time records of every realization",
-                     (R + kSpacetimeCopies) * d(p.spacetime_frames) * N * 8, "initial.N"});
+    items.push_back({"particles.spacetime",
+                     "the space-time records of every realization",
+                     (R + kSpacetimeCopies) * d(p.spacetime_frames) * N * 8,
+                     {"particles.spacetime_frames", "initial.N", "particles.realizations"}});
 }
 
 // A continuum solver at work, bytes per cell (its registration's measure); a
@@ -120,10 +127,15 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
     items.push_back({"initial.N", "the initial and final states", 2 * N * kBodyBytes});
     items.push_back({"particles.samples", "the time series", samples * 2 * kSeriesColumns * 8});
     if (p.histogram_bins > 0)
-      items.push_back({"particles.histogram_bins", "the velocity histogram", samples * d(p.histogram_bins) * 8,
-                       "particles.samples"});
+      items.push_back({"particles.histogram_bins",
+                       "the velocity histogram",
+                       samples * d(p.histogram_bins) * 8,
+                       {"particles.samples"}});
     if (p.spacetime)
-      items.push_back({"particles.spacetime", "the space-time record", d(p.spacetime_frames) * N * 8, "initial.N"});
+      items.push_back({"particles.spacetime",
+                       "the space-time record",
+                       d(p.spacetime_frames) * N * 8,
+                       {"particles.spacetime_frames", "initial.N"}});
     if (!p.snapshots.empty())
       items.push_back({"particles.snapshots", "the snapshots", d(p.snapshots.size()) * N * kBodyBytes});
     if (keeps_states_apart(s))
@@ -221,7 +233,10 @@ std::string blamed_key(const Scene& scene, const ResourceItem& item) {
     return !key.empty() && it != scene.key_origin.end() &&
            (it->second.rfind("--set ", 0) == 0 || it->second.find("(sweep variant") != std::string::npos);
   };
-  return !overridden(item.key) && overridden(item.factor) ? item.factor : item.key;
+  if (overridden(item.key)) return item.key;
+  for (const std::string& factor : item.factors)
+    if (overridden(factor)) return factor;
+  return item.key;
 }
 
 // "about NEED (KEY: what, BYTES), ROOM WHERE": the estimate against the room,
@@ -231,7 +246,8 @@ std::string estimate_text(const ResourceEstimate& e, double room, const std::str
   int digits = 3;
   while (digits < 12 && size_text(e.total(), digits) == size_text(room, digits)) ++digits;
   const ResourceItem& big = e.largest();
-  const std::string keys = big.key + (big.factor.empty() ? "" : " x " + big.factor);
+  std::string keys = big.key;
+  for (const std::string& factor : big.factors) keys += " x " + factor;
   return "about " + size_text(e.total(), digits) + " (" + (big.key.empty() ? "" : keys + ": ") + big.what +
          ", " + size_text(big.bytes) + "), " + size_text(room, digits) + " " + where;
 }

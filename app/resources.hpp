@@ -23,7 +23,7 @@ struct ResourceItem {
   std::string key;  // "initial.N", "particles.histogram_bins", ... ("" for the process base)
   std::string what;
   double bytes = 0;
-  std::string factor = "";  // a second key the size grows with ("particles.samples"), or ""
+  std::vector<std::string> factors = {};  // other keys the size grows with ("particles.samples")
 };
 
 struct ResourceEstimate {

@@ -37,6 +37,10 @@ TEST(Resources, SizesThatCannotFitAreRefusedNamingTheKeyBeforeAnyWork) {
       {"initial.N=1e12", "--set initial.N=1e12: initial.N = 1000000000000 is not allowed"},
       {"particles.histogram_bins=1e11", "particles.histogram_bins = 100000000000 is not allowed"},
       {"particles.samples=1e9", "particles.samples = 1000000000 is not allowed"},
+      // keys that multiply another's size are named when they are the ones given (they named
+      // particles.spacetime, which the default scene sets)
+      {"particles.realizations=1e12", "particles.realizations = 1000000000000 is not allowed"},
+      {"particles.spacetime_frames=1e8", "particles.spacetime_frames = 100000000 is not allowed"},
   };
   for (const auto& [set, says] : cases) {
     const auto [code, err] = run_child({"run", kDefault, "--set", set, "--out", (root / "out").string(), "-q"});
