@@ -124,10 +124,10 @@ std::vector<continuum::Shock> detect_shocks(const std::vector<double>& v, const 
   const double min_jump = params.min_jump > 0 ? params.min_jump : automatic_min_jump(v);
   std::vector<continuum::Shock> shocks;
   for (const Run& run : compressive_runs(g)) {
-    const Run region = steepest_window(g, run, static_cast<Index>(params.max_width_cells));
-    const double own_drop = g.v_at(region.first + region.count) - g.v_at(region.first);
+    const double own_drop = g.v_at(run.first + run.count) - g.v_at(run.first);  // the whole run's
     if (own_drop > -0.5 * min_jump) continue;  // a kink, not a compression (header, step 4)
-    const continuum::Shock s = shock_of_region(g, region);
+    const continuum::Shock s =
+        shock_of_region(g, steepest_window(g, run, static_cast<Index>(params.max_width_cells)));
     if (s.jump < 0 && -s.jump >= min_jump) shocks.push_back(s);
   }
   std::sort(shocks.begin(), shocks.end(), [](const auto& p, const auto& q) { return p.x < q.x; });

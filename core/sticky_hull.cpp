@@ -8,8 +8,8 @@
 //
 //     x_left(t) > x_right(t),   x(t) = c0 + t v,  c0 = centre of mass at 0, v = mean velocity,
 //
-// the two merge (mass and momentum add). x(t) is the slope of a hull edge, so
-// this is exactly the convexity test of the chain, but it compares positions of
+// (or x_left(t) = x_right(t) with v_left > v_right: see Ties) the two merge (mass and momentum add). x(t) is
+// the slope of a hull edge, so this is exactly the convexity test of the chain, but it compares positions of
 // neighbouring clusters instead of subtracting large cumulative sums S_k. O(N),
 // one pass; the stack is the runs' own arrays, 20 bytes a run (c0, v, count)
 // when the masses are equal (a run's mass is then m0 count), 28 with masses.
@@ -21,11 +21,12 @@
 // momentum and centre of mass, is therefore the hull at t' of the bodies. The
 // stack overwrites the runs it has read: in place.
 //
-// Ties. The merge test is strict: clusters that exactly touch at t (collinear
-// hull points) stay separate; they collide at t and are merged for any later
-// time. Hence at t = 0 every body is its own cluster, even bodies that share a
-// position. Because exact ties are decided by rounding anyway, this only fixes
-// which of two answers that agree in position to rounding is returned.
+// Ties. Clusters at the same point at t merge if they approach (v_left >
+// v_right): they collide at exactly t, and the event engine has made that
+// collision by t. Those that touch and separate (or move together) stay apart.
+// This is the hull at t + 0: positions compared first, then -v. Because exact
+// ties in doubles are decided by rounding anyway, it only fixes which of two
+// answers that agree in position to rounding is returned.
 //
 // Ring. The periodically unrolled chain (body i + N is body i moved by L) has a
 // periodic hull, and no cluster holds more than N bodies. One period, bodies
@@ -297,14 +298,18 @@ void StickyHull::advance(double t) {
 }
 
 // |x + t v| <= max|x| + t max|v|; a margin of 2 covers the sums of the merges
-// (a centre and a velocity averaged separately) and the ring's shifts.
+// (a centre and a velocity averaged separately) and the ring's shifts. Bodies
+// that do not move (t max|v| = 0) are where they were given.
 void StickyHull::check_reach(double t) const {
   const double limit = std::numeric_limits<double>::max() / 2;
-  if (reach_x_ + t * vmax_ < limit) return;
-  const double t_max = vmax_ > 0 ? (limit - reach_x_) / vmax_ : 0.0;
+  const double travel = t * vmax_;
+  if (travel == 0 || reach_x_ + travel < limit) return;
+  const std::string why = ": x + t v must stay within the range of doubles";
+  if (reach_x_ >= limit)
+    throw InputError("bodies.x", to_text(reach_x_),
+                     "max |x| (plus L on a ring) below " + to_text(limit) + why);
   throw InputError("t", to_text(t),
-                   "at most " + to_text(std::max(t_max, 0.0)) +
-                       " for these bodies: x + t v must stay within the range of doubles");
+                   "at most " + to_text((limit - reach_x_) / vmax_) + " for these bodies" + why);
 }
 
 // The ring's period is in cyclic order of x: x ascends from the lowest wrapped x.

@@ -21,7 +21,8 @@ def detect_shocks(v, length, rho=None, *, min_jump=0.0, max_width_cells=8):
     either side are extrapolated into it, the position is where a step between
     them conserves the integral of v, the jump J = v_R - v_L, the mass the excess
     of rho over the ramps' background, the velocity the Rankine-Hugoniot speed
-    (v_L + v_R) / 2. Exact for a sawtooth with ramps of equal slope.
+    (v_L + v_R) / 2. Exact for a sawtooth with ramps of equal slope. A run whose
+    own drop is less than min_jump / 2 is a kink between ramps, not a shock.
 
     min_jump         smallest |J| counted [length/time]; 0: 5% of max v - min v
     max_width_cells  widest compression region taken as one shock [cells]

@@ -20,19 +20,14 @@ ParameterValue unreadable(const py::handle& value) {
 
 }  // namespace
 
-// Python and numpy scalars by their type, in this order: a numpy array of one
-// dimension or more is a list (it has __index__ too, so it must not reach the
-// integer branch), a 0-d array its item; bool before int (bool is an int in
+// Python and numpy scalars by their type, in this order: a numpy array is read
+// as its tolist() (a list, or a 0-d array's item; it has __index__ too, so it
+// must not reach the integer branch); bool before int (bool is an int in
 // Python); an int beyond int64 cannot be read.
 ParameterValue to_parameter(const py::handle& value) {
   const py::module_ numpy = py::module_::import("numpy");
-  if (py::isinstance<py::array>(value)) {
-    const auto a = py::reinterpret_borrow<py::array>(value);
-    if (a.ndim() == 0) return to_parameter(a.attr("item")());
-    std::vector<ParameterValue> items;
-    for (const py::handle item : py::iter(value)) items.push_back(to_parameter(item));
-    return ParameterValue::list(std::move(items));
-  }
+  if (py::isinstance<py::array>(value))  // as Python scalars and nested lists: a subclass (np.matrix)
+    return to_parameter(value.attr("tolist")());  // iterates to itself, so it is not iterated
   if (py::isinstance<py::bool_>(value) || py::isinstance(value, numpy.attr("bool_")))
     return ParameterValue::of(py::bool_(py::reinterpret_borrow<py::object>(value)).cast<bool>());
   if (PyLong_Check(value.ptr()) || py::isinstance(value, numpy.attr("integer"))) {

@@ -110,7 +110,7 @@ def test_numpy_values_of_keywords_are_read_as_the_python_ones():
     np.testing.assert_array_equal(numpy.final.v, [-0.5, 0.5])  # r = 0.5 maps g = 2 to -1
     assert [s.t for s in numpy.snapshots] == [0.25, 0.5]
     assert numpy.spacetime is not None
-    for bad in (np.array([0.5]), np.array([[0.5]])):
+    for bad in (np.array([0.5]), np.array([[0.5]]), np.matrix([[0.5]])):  # np.matrix: a crash (review)
         with pytest.raises(shockgas.InputError, match="particles.r"):
             shockgas.particles.simulate(x, v, r=bad)
     with pytest.raises(shockgas.InputError, match="particles.samples"):

@@ -295,6 +295,13 @@ TEST(StickyHull, ATimeThatOverflowsThePositionsIsRefused) {
   EXPECT_EQ(sticky_clusters_line(b, 8e107).size(), 2u);
   StickyHull h = StickyHull::line(b, 1.0);
   EXPECT_THROW(h.advance(1e200), InputError);
+  // Bodies at rest, or any at t = 0, cannot overflow however far out they are (review: refused).
+  Bodies far;
+  far.push_back(-1e308, 0.0, 1.0);
+  far.push_back(1e308, 0.0, 1.0);
+  EXPECT_EQ(sticky_clusters_line(far, 10.0).size(), 2u);
+  far.v = {1.0, -1.0};
+  EXPECT_EQ(sticky_clusters_line(far, 0.0).size(), 2u);
 }
 
 TEST(StickyHull, ToBodiesSortsByPosition) {

@@ -23,10 +23,10 @@
 //         x_s = x_left_edge(C) + ( int_C v_R dx - dx sum_{i in C} v_i ) / J.
 //     For a piecewise-linear profile with ramps of equal slope (the exact
 //     sawtooth) and a shock anywhere in C this is exact.
-//  4. Kept if -J >= min_jump and the data themselves drop across the region by
-//     at least min_jump / 2: where two ramps of different slope meet (the edge
-//     of a rarefaction fan) the extrapolation alone makes a jump, and a drop of
-//     rounding size (1e-16) there is no shock. Mass = excess mass over the ramps' background,
+//  4. Kept if -J >= min_jump and the data themselves drop across the whole run
+//     of step 2 (before any cut to max_width_cells) by at least min_jump / 2: where two ramps of different
+//     slope meet (the edge of a rarefaction fan) the extrapolation alone makes a jump, and a drop of rounding
+//     size (1e-16) there is no shock. Mass = excess mass over the ramps' background,
 //         mass = dx sum_{i in C} (rho_i - (rho_a + rho_b) / 2)   (>= 0),
 //     exact for a delta shock on a constant background. Velocity = the
 //     Rankine-Hugoniot speed of Burgers, (v_L(x_s) + v_R(x_s)) / 2.

@@ -143,8 +143,8 @@ std::vector<StickyCluster> sticky_clusters_line(BodiesView initial, double t);
 // The same on a ring of length L (initial positions in [0, L), sorted). O(N).
 // Clusters are returned sorted by x; `first` + `count` may pass N - 1 (wrap).
 //
-// Both: clusters that exactly touch at t are not merged (they are from any later
-// time on), so at t = 0 every body is its own cluster. Throws InputError for
+// Both: clusters at the same point at t are one if they approach (they collide at
+// exactly t, as the engine has by then), two if they separate. Throws InputError for
 // t < 0, unsorted or non-finite positions, masses <= 0, and (ring) L <= 0 or
 // positions outside [0, L).
 std::vector<StickyCluster> sticky_clusters_ring(BodiesView initial, double L, double t);
