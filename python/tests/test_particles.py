@@ -99,6 +99,7 @@ def test_unit_masses_by_default_and_the_ring_length():
     assert ring.m.tolist() == [3.0]
 
 
+@pytest.mark.filterwarnings("ignore::PendingDeprecationWarning")  # np.matrix, on purpose
 def test_numpy_values_of_keywords_are_read_as_the_python_ones():
     # found: a numpy array or numpy bool was read as an integer (r = [0.5] became 0: every collision
     # merged), a float array of snapshots as integers, an int beyond int64 was a RuntimeError
