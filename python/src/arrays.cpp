@@ -1,5 +1,7 @@
 #include "arrays.hpp"
 
+#include <cmath>
+
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::python {
@@ -20,9 +22,28 @@ std::vector<double> to_vector(const py::handle& values, const std::string& key) 
   return std::vector<double>(data, data + a.size());
 }
 
-std::size_t to_count(long long value, const std::string& key, long long min, const std::string& allowed) {
-  require(value >= min, key, value, allowed);
-  return static_cast<std::size_t>(value);
+std::size_t to_count(const py::handle& value, const std::string& key, long long min) {
+  const std::string allowed = "an integer >= " + std::to_string(min);
+  const py::module_ numpy = py::module_::import("numpy");
+  const auto refuse = [&] {
+    return InputError(key, std::string(py::str(py::repr(value))).substr(0, 80), allowed);
+  };
+  if (py::isinstance<py::bool_>(value) || py::isinstance(value, numpy.attr("bool_"))) throw refuse();
+  long long count = 0;
+  if (PyLong_Check(value.ptr()) || py::isinstance(value, numpy.attr("integer"))) {
+    int overflow = 0;
+    const py::int_ as_int(py::reinterpret_borrow<py::object>(value));
+    count = PyLong_AsLongLongAndOverflow(as_int.ptr(), &overflow);
+    if (overflow != 0) throw refuse();
+  } else if (PyFloat_Check(value.ptr()) || py::isinstance(value, numpy.attr("floating"))) {
+    const double x = value.cast<double>();
+    if (!(std::isfinite(x) && x == std::floor(x) && std::abs(x) < 9.2e18)) throw refuse();
+    count = static_cast<long long>(x);
+  } else {
+    throw refuse();
+  }
+  if (count < min) throw refuse();
+  return static_cast<std::size_t>(count);
 }
 
 }  // namespace shockgas::python

@@ -19,10 +19,11 @@ namespace py = pybind11;
 // already is a contiguous float64 array). InputError naming `key` otherwise.
 std::vector<double> to_vector(const py::handle& values, const std::string& key);
 
-// A count given as a Python int (bound as long long, so that a negative one
-// reaches here instead of failing pybind's conversion): InputError naming `key`
-// when it is below `min`, with `allowed` as the library's own check says it.
-std::size_t to_count(long long value, const std::string& key, long long min, const std::string& allowed);
+// A count given as a Python or numpy integer (or a whole float, as the scene
+// keys take one), at least `min`: InputError naming `key` otherwise -- a bool,
+// a fraction, a negative number or one beyond int64 (pybind's own conversion to
+// an unsigned count raised a bare TypeError for these).
+std::size_t to_count(const py::handle& value, const std::string& key, long long min);
 
 // The vector's storage as a numpy array of shape {size} or {rows, cols}: no copy.
 template <class T>

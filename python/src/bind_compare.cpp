@@ -123,10 +123,10 @@ SnapshotKeys snapshot_keys(py::dict& keys, const std::string& function) {
 }
 
 py::dict detect_shocks(const py::handle& v, const py::handle& rho, double length, double min_jump,
-                       long long max_width_cells) {
+                       const py::handle& max_width_cells) {
   const std::vector<double> vv = to_vector(v, "v");
   const std::vector<double> rr = rho.is_none() ? std::vector<double>{} : to_vector(rho, "rho");
-  const std::size_t width = to_count(max_width_cells, "compare.max_width_cells", 1, ">= 1");
+  const std::size_t width = to_count(max_width_cells, "compare.max_width_cells", 1);
   return shocks_dict(compare::detect_shocks(vv, rr, length, {min_jump, width}));
 }
 
@@ -150,19 +150,19 @@ py::dict match(const py::handle& shocks, const py::handle& clusters, double L, d
 }
 
 py::dict deposit(const py::handle& x, const py::handle& v, const py::handle& m, double length,
-                 long long cells, const std::string& scheme) {
+                 const py::handle& cells, const std::string& scheme) {
   const auto s = compare::parse_deposit_scheme(scheme, "compare.deposit");
-  const std::size_t n = to_count(cells, "compare.cells", 1, ">= 1");
+  const std::size_t n = to_count(cells, "compare.cells", 1);
   check_bytes(5.0 * sizeof(double) * static_cast<double>(n), "compare.cells",
               static_cast<double>(n));  // 5 fields
   return fields_dict(compare::deposit_on_grid(state_from(x, v, m), length, n, s));
 }
 
 py::dict sawtooth(const py::handle& v, double length, double t, const py::handle& shock_x,
-                  const py::handle& weights, long long skip_cells, long long min_cells) {
+                  const py::handle& weights, const py::handle& skip_cells, const py::handle& min_cells) {
   const std::vector<double> w = weights.is_none() ? std::vector<double>{} : to_vector(weights, "weights");
-  const compare::SawtoothParams fit{to_count(skip_cells, "compare.sawtooth.skip_cells", 0, ">= 0"),
-                                    to_count(min_cells, "compare.sawtooth.min_cells", 2, ">= 2")};
+  const compare::SawtoothParams fit{to_count(skip_cells, "compare.sawtooth.skip_cells", 0),
+                                    to_count(min_cells, "compare.sawtooth.min_cells", 2)};
   return sawtooth_dict(
       compare::fit_sawtooth_slopes(to_vector(v, "v"), length, t, to_vector(shock_x, "shock_x"), fit, w));
 }
@@ -185,8 +185,8 @@ continuum::ContinuumResult field_from(const py::handle& field) {
 }
 
 py::dict snapshot(const py::handle& x, const py::handle& v, const py::handle& m, const py::handle& field,
-                  long long N_given, const py::kwargs& kwargs) {
-  const std::size_t N = to_count(N_given, "initial.N", 1, ">= 1");
+                  const py::handle& N_given, const py::kwargs& kwargs) {
+  const std::size_t N = to_count(N_given, "initial.N", 1);
   py::dict keys(kwargs);
   const SnapshotKeys k = snapshot_keys(keys, "shockgas.compare.snapshot");
   const Bodies state = state_from(x, v, m);

@@ -164,8 +164,8 @@ py::dict hull(const py::handle& x, const py::handle& v, const py::handle& m, dou
 }
 
 // Realization k of the scene keys' initial condition ([initial]), as bodies.
-py::dict initial_bodies(long long realization, const py::kwargs& kwargs) {
-  const std::size_t k = to_count(realization, "realization", 0, "an integer >= 0");
+py::dict initial_bodies(const py::handle& realization, const py::kwargs& kwargs) {
+  const std::size_t k = to_count(realization, "realization", 0);
   py::dict keys(kwargs);
   InitialParams ip;
   take_keywords(ip, initial_parameters(), keys);

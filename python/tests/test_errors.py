@@ -108,6 +108,11 @@ def test_a_negative_count_is_an_input_error_naming_it():
     raises_input_error(lambda: shockgas.compare.sawtooth(v, 1.0, 0.5, [0.5], min_cells=-1),
                        "compare.sawtooth.min_cells")
     raises_input_error(lambda: shockgas.particles.initial_bodies(-1, N=100), "realization")
+    # and so were a bool (taken as 1), a fraction and an int beyond int64; a whole float is a count
+    for bad in (True, 2.5, 2**64, "4"):
+        raises_input_error(lambda: shockgas.compare.deposit(X, V, length=100.0, cells=bad), "compare.cells")
+    raises_input_error(lambda: shockgas.particles.initial_bodies(2**64, N=100), "realization")
+    assert shockgas.compare.deposit(X, V, length=100.0, cells=4.0).rho.size == 4
     field = shockgas.continuum.solve("hopf_lax", v, dx=1 / 64, t_end=0.5)
     raises_input_error(lambda: shockgas.compare.snapshot(X / 100, V, None, field, N=-5), "initial.N")
 
