@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "arrays.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -25,20 +26,20 @@ ParameterValue unreadable(const py::handle& value) {
 // must not reach the integer branch); bool before int (bool is an int in
 // Python); an int beyond int64 cannot be read.
 ParameterValue to_parameter(const py::handle& value) {
-  const py::module_ numpy = py::module_::import("numpy");
   if (py::isinstance<py::array>(value))  // as Python scalars and nested lists: a subclass (np.matrix)
     return to_parameter(value.attr("tolist")());  // iterates to itself, so it is not iterated
-  if (py::isinstance<py::bool_>(value) || py::isinstance(value, numpy.attr("bool_")))
-    return ParameterValue::of(py::bool_(py::reinterpret_borrow<py::object>(value)).cast<bool>());
-  if (PyLong_Check(value.ptr()) || py::isinstance(value, numpy.attr("integer"))) {
-    int overflow = 0;
-    const py::int_ as_int(py::reinterpret_borrow<py::object>(value));
-    const long long i = PyLong_AsLongLongAndOverflow(as_int.ptr(), &overflow);
-    if (overflow != 0) return unreadable(value);
-    return ParameterValue::of(static_cast<std::int64_t>(i));
+  switch (scalar_kind(value)) {
+    case ScalarKind::boolean:
+      return ParameterValue::of(py::bool_(py::reinterpret_borrow<py::object>(value)).cast<bool>());
+    case ScalarKind::integer: {
+      std::int64_t i = 0;
+      return to_int64(value, i) ? ParameterValue::of(i) : unreadable(value);
+    }
+    case ScalarKind::real:
+      return ParameterValue::of(value.cast<double>());
+    case ScalarKind::other:
+      break;
   }
-  if (PyFloat_Check(value.ptr()) || py::isinstance(value, numpy.attr("floating")))
-    return ParameterValue::of(value.cast<double>());
   if (py::isinstance<py::str>(value)) return ParameterValue::of(value.cast<std::string>());
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     std::vector<ParameterValue> items;
