@@ -19,20 +19,6 @@ namespace py = pybind11;
 // already is a contiguous float64 array). InputError naming `key` otherwise.
 std::vector<double> to_vector(const py::handle& values, const std::string& key);
 
-// A Python or numpy scalar by what it is to a scene value. A bool is a boolean
-// first (it is an int in Python, and numpy's has __index__).
-enum class ScalarKind { boolean, integer, real, other };
-ScalarKind scalar_kind(const py::handle& value);
-
-// An integer (ScalarKind::integer) as int64; false beyond its range.
-bool to_int64(const py::handle& value, std::int64_t& out);
-
-// A count given as a Python or numpy integer (or a whole float, as the scene
-// keys take one), at least `min`: InputError naming `key` otherwise -- a bool,
-// a fraction, a negative number or one beyond int64 (pybind's own conversion to
-// an unsigned count raised a bare TypeError for these).
-std::size_t to_count(const py::handle& value, const std::string& key, long long min);
-
 // The vector's storage as a numpy array of shape {size} or {rows, cols}: no copy.
 template <class T>
 py::array_t<T> to_numpy(std::vector<T>&& values, std::vector<py::ssize_t> shape = {}) {

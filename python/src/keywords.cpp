@@ -4,7 +4,6 @@
 
 #include <vector>
 
-#include "arrays.hpp"
 #include "scene_schema.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -28,18 +27,17 @@ ParameterValue unreadable(const py::handle& value) {
 ParameterValue to_parameter(const py::handle& value) {
   if (py::isinstance<py::array>(value))  // as Python scalars and nested lists: a subclass (np.matrix)
     return to_parameter(value.attr("tolist")());  // iterates to itself, so it is not iterated
-  switch (scalar_kind(value)) {
-    case ScalarKind::boolean:
-      return ParameterValue::of(py::bool_(py::reinterpret_borrow<py::object>(value)).cast<bool>());
-    case ScalarKind::integer: {
-      std::int64_t i = 0;
-      return to_int64(value, i) ? ParameterValue::of(i) : unreadable(value);
-    }
-    case ScalarKind::real:
-      return ParameterValue::of(value.cast<double>());
-    case ScalarKind::other:
-      break;
+  const py::module_ numpy = py::module_::import("numpy");
+  if (py::isinstance<py::bool_>(value) || py::isinstance(value, numpy.attr("bool_")))
+    return ParameterValue::of(py::bool_(py::reinterpret_borrow<py::object>(value)).cast<bool>());
+  if (PyLong_Check(value.ptr()) || py::isinstance(value, numpy.attr("integer"))) {
+    int overflow = 0;
+    const py::int_ as_int(py::reinterpret_borrow<py::object>(value));
+    const long long i = PyLong_AsLongLongAndOverflow(as_int.ptr(), &overflow);
+    return overflow == 0 ? ParameterValue::of(static_cast<std::int64_t>(i)) : unreadable(value);
   }
+  if (PyFloat_Check(value.ptr()) || py::isinstance(value, numpy.attr("floating")))
+    return ParameterValue::of(value.cast<double>());
   if (py::isinstance<py::str>(value)) return ParameterValue::of(value.cast<std::string>());
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
     std::vector<ParameterValue> items;
@@ -47,6 +45,11 @@ ParameterValue to_parameter(const py::handle& value) {
     return ParameterValue::list(std::move(items));
   }
   return unreadable(value);
+}
+
+std::size_t to_count(const py::handle& value, const std::string& key, long long min) {
+  const auto n = ParameterType<std::uint64_t>::read(to_parameter(value), key, allowed(at_least(min)));
+  return static_cast<std::size_t>(n);
 }
 
 void refuse_leftover(const py::dict& kwargs, const std::string& function, const std::string& accepted) {

@@ -6,6 +6,7 @@
 // [0, 1]"). The keyword lists of the docstrings come from the same declarations.
 #include <pybind11/pybind11.h>
 
+#include <cstddef>
 #include <string>
 
 #include "shockgas/core/parameters.hpp"
@@ -17,6 +18,12 @@ namespace py = pybind11;
 // A Python value as a scene value: bool, int, float, str, or a list, tuple or
 // 1-D array of those. `written` is its TOML text, as a message shows it.
 ParameterValue to_parameter(const py::handle& value);
+
+// A count given as an argument (not a scene key), read as a scene's integer
+// key is (whole floats too), at least `min`: InputError naming `key` for a
+// bool, a fraction, a string, a negative number or one beyond int64 (pybind's
+// own conversion to an unsigned count raised a bare TypeError for these).
+std::size_t to_count(const py::handle& value, const std::string& key, long long min);
 
 // Sets every keyword of `kwargs` that `table` declares, and removes it from kwargs.
 template <class Params>
