@@ -28,7 +28,6 @@ namespace {
 // Measured costs (tests/app/test_resources.cpp holds the total against the peak
 // resident memory of real runs):
 constexpr double kProcessBase = 26e6;  // the program and its libraries, resident (measured 24.5 MB)
-constexpr double kBodyBytes = 24;      // x, v, m of one body
 // Copies of the records held at the peak (measured with threads = 1): a
 // histogram 2R + 3 times (each realization's, kept and written with the
 // ensemble's, scaled and written: 5.0 at R = 1), a space-time record R + 1
@@ -310,16 +309,22 @@ MemoryLimit memory_limit(const fs::path& root) {
   return limit;
 }
 
-void check_memory(const Scene& scene) {
-  const ResourceEstimate memory = estimate_memory(scene);
+void require_memory(const ResourceEstimate& memory, const std::string& what,
+                    const std::function<InputError(const std::string& allowed)>& refusal) {
   const MemoryLimit limit = memory_limit();
   if (memory.total() <= limit.bytes) return;
-  const std::string key = blamed_key(scene, memory.largest());
-  const auto origin = scene.key_origin.find(key);
-  throw InputError(key.empty() ? "scene" : key, value_of(scene, key),
-                   "a scene that fits in the memory available: it needs " +
-                       estimate_text(memory, limit.bytes, "available (" + limit.source + ")"),
-                   origin != scene.key_origin.end() ? origin->second : scene.path);
+  throw refusal(what + " that fits in the memory available: it needs " +
+                estimate_text(memory, limit.bytes, "available (" + limit.source + ")"));
+}
+
+void check_memory(const Scene& scene) {
+  const ResourceEstimate memory = estimate_memory(scene);
+  require_memory(memory, "a scene", [&](const std::string& allowed) {
+    const std::string key = blamed_key(scene, memory.largest());
+    const auto origin = scene.key_origin.find(key);
+    return InputError(key.empty() ? "scene" : key, value_of(scene, key), allowed,
+                      origin != scene.key_origin.end() ? origin->second : scene.path);
+  });
 }
 
 void check_resources(const Scene& scene, const fs::path& out, bool plots) {

@@ -10,11 +10,13 @@
 // holds it against the peak memory and the result sizes of real runs.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "shockgas/app/scene.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 
@@ -53,6 +55,15 @@ MemoryLimit memory_limit(const std::filesystem::path& root = "/");
 // Refuses a scene that does not fit: InputError located at the scene's key
 // (memory) or naming --out (disk: the file system that will hold the results).
 void check_resources(const Scene& scene, const std::filesystem::path& out, bool plots);
+
+// x, v, m of one body in memory.
+inline constexpr double kBodyBytes = 24;
+
+// Refuses work whose estimate exceeds the memory this process may still use:
+// throws refusal(allowed), allowed = "WHAT that fits in the memory available:
+// it needs about ... (its largest item), ... available (where the limit comes from)".
+void require_memory(const ResourceEstimate& memory, const std::string& what,
+                    const std::function<InputError(const std::string& allowed)>& refusal);
 
 // The memory half of check_resources, for work that writes no directory (the
 // Python module's calls, which would otherwise end in the kernel's

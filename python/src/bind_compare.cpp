@@ -153,8 +153,8 @@ py::dict deposit(const py::handle& x, const py::handle& v, const py::handle& m, 
                  const py::handle& cells, const std::string& scheme) {
   const auto s = compare::parse_deposit_scheme(scheme, "compare.deposit");
   const std::size_t n = to_count(cells, "compare.cells", 1);
-  check_bytes(5.0 * sizeof(double) * static_cast<double>(n), "compare.cells",
-              static_cast<double>(n));  // 5 fields
+  check_bytes(5.0 * sizeof(double) * static_cast<double>(n), "x, rho, v, mass and momentum of each cell",
+              "compare.cells", static_cast<double>(n));
   return fields_dict(compare::deposit_on_grid(state_from(x, v, m), length, n, s));
 }
 

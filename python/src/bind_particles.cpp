@@ -171,8 +171,8 @@ py::dict initial_bodies(const py::handle& realization, const py::kwargs& kwargs)
   take_keywords(ip, initial_parameters(), keys);
   refuse_leftover(keys, "shockgas.particles.initial_bodies", initial_parameters().keys_text());
   validate(ip);
-  check_bytes(3.0 * sizeof(double) * static_cast<double>(ip.N), "initial.N",
-              static_cast<double>(ip.N));  // x, v, m
+  check_bytes(app::kBodyBytes * static_cast<double>(ip.N), "the bodies", "initial.N",
+              static_cast<double>(ip.N));
   py::dict d = bodies_dict(make_initial_bodies(ip, k));
   d["L"] = domain_length(ip);
   return d;

@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <string>
 
-#include "durable_file.hpp"
 #include "resources.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -23,14 +22,13 @@ inline void check_memory_of(std::size_t N, const particles::ParticleParams* part
   app::check_memory(s);
 }
 
-// A call whose peak is `bytes`, set by `key` = value: an InputError naming it
-// when that is more than the process may still use.
-inline void check_bytes(double bytes, const std::string& key, double value) {
-  const app::MemoryLimit limit = app::memory_limit();
-  if (bytes <= limit.bytes) return;
-  throw InputError(key, to_text(value),
-                   "a size that fits in the memory available: it needs about " + app::size_text(bytes) +
-                       ", " + app::size_text(limit.bytes) + " available (" + limit.source + ")");
+// A call that holds `bytes` at its peak (`what` they are), set by `key` =
+// value: refused as the command refuses a scene that cannot fit.
+inline void check_bytes(double bytes, const std::string& what, const std::string& key, double value) {
+  app::ResourceEstimate e;
+  e.items.push_back({key, what, bytes});
+  app::require_memory(e, "a call",
+                      [&](const std::string& allowed) { return InputError(key, to_text(value), allowed); });
 }
 
 }  // namespace shockgas::python
