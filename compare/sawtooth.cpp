@@ -34,12 +34,16 @@ RampCells ramp_cells(const std::vector<double>& v, const std::vector<double>& we
   return out;
 }
 
+void require_length(double length) {
+  require(std::isfinite(length) && length > 0, "compare.length", length, "> 0");
+}
+
 }  // namespace
 
 SawtoothFit fit_sawtooth_between(const std::vector<double>& v, double length, double t,
                                  const std::vector<Extent>& extents, const SawtoothParams& params,
                                  const std::vector<double>& weights) {
-  require(std::isfinite(length) && length > 0, "compare.length", length, "> 0");
+  require_length(length);
   require(std::isfinite(t) && t > 0, "compare.t", t, "> 0");
   require(!v.empty(), "compare.cells", v.size(), ">= 1");
   require(weights.empty() || weights.size() == v.size(), "compare.weights", weights.size(),
@@ -81,8 +85,7 @@ SawtoothFit fit_sawtooth_between(const std::vector<double>& v, double length, do
 SawtoothFit fit_sawtooth_slopes(const std::vector<double>& v, double length, double t,
                                 std::vector<double> shock_x, const SawtoothParams& params,
                                 const std::vector<double>& weights) {
-  require(std::isfinite(length) && length > 0, "compare.length", length,
-          "> 0");  // before shock_x, named by it
+  require_length(length);  // before shock_x, whose range it sets
   for (double x : shock_x) require(x >= 0 && x < length, "compare.shock_x", x, "in [0, length)");
   std::sort(shock_x.begin(), shock_x.end());
   std::vector<Extent> points;
