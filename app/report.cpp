@@ -2,18 +2,14 @@
 #include "report.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "shockgas/compare/theory.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 
-std::string brief(double value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", value);
-  return buf;
-}
+std::string brief(double value) { return to_text(value, 4); }
 
 std::string percent(double fraction) {
   return std::isfinite(fraction) ? brief(100 * fraction) + " %" : "nan";

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "shockgas/core/error.hpp"
 
@@ -26,13 +25,6 @@ double max_abs(const std::vector<double>& v) {
   return m;
 }
 
-std::string text(double x) {
-  std::ostringstream s;
-  s.precision(3);
-  s << x;
-  return s.str();
-}
-
 constexpr double kFftDigitsLost = 1e-3;  // fft bound / scale above which it is never returned
 constexpr double kLogPathBudget = 2e8;   // kernel terms the log path may take unasked (~seconds)
 
@@ -41,14 +33,14 @@ constexpr double kLogPathBudget = 2e8;   // kernel terms the log path may take u
 std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const ContinuumParams& p, double t,
                                      double scale, ContinuumResult& r) {
   const double shift = psi0.mean_velocity * t;
-  const std::string spread = "DeltaPsi/2nu = " + text(r.stats["spread_over_2nu"]);
+  const std::string spread = "DeltaPsi/2nu = " + to_text(r.stats["spread_over_2nu"], 3);
   const double tolerance = p.rtol * scale;
   if (p.hopf_cole_path != HopfColePath::log) {
     LogTheta fft = log_theta_fft(psi0, p.nu, t, shift);
     const double bound = fft.velocity_error_bound;
     r.stats["fft_velocity_error_bound"] = bound;
     const std::string why =
-        spread + "; roundoff bound on v " + text(bound) + " vs rtol*max|v0| = " + text(tolerance);
+        spread + "; roundoff bound on v " + to_text(bound, 3) + " vs rtol*max|v0| = " + to_text(tolerance, 3);
     const bool usable = bound <= kFftDigitsLost * scale;
     const double terms = log_theta_kernel_terms(psi0, p.nu, t);
     if (bound <= tolerance) {
@@ -63,14 +55,14 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
     const double spread_over_2nu = r.stats["spread_over_2nu"];
     const bool log_helps = spread_over_2nu > 1 || spread_over_2nu == 0;
     if (!log_helps && !usable && p.hopf_cole_path == HopfColePath::automatic)
-      throw RunError(std::string(kName) + ": nu too large for doubles at t = " + text(t) + " (" + why +
+      throw RunError(std::string(kName) + ": nu too large for doubles at t = " + to_text(t, 3) + " (" + why +
                      "): v = -2 nu d/dx log theta loses its digits on both paths");
     if (p.hopf_cole_path == HopfColePath::fft && !usable)
-      throw RunError(std::string(kName) + ": the forced fft path lost its digits at t = " + text(t) + " (" + why +
-                     "); use continuum.hopf_cole_path = \"log\" or \"auto\"");
+      throw RunError(std::string(kName) + ": the forced fft path lost its digits at t = " + to_text(t, 3) +
+                     " (" + why + "); use continuum.hopf_cole_path = \"log\" or \"auto\"");
     if (p.hopf_cole_path == HopfColePath::fft || (usable && (terms > kLogPathBudget || !log_helps))) {
       r.method_note = "Hopf-Cole, fft path above tolerance (" + why + "; the log path would sum ~" +
-                      text(terms) + " kernel terms)";
+                      to_text(terms, 3) + " kernel terms)";
       return fft.values;
     }
     r.method_note = "Hopf-Cole, log-domain path: the fft path was rejected (" + why + ")";
@@ -87,8 +79,8 @@ std::vector<double> log_theta_chosen(const MovingFramePotential& psi0, const Con
 void require_finite(const std::vector<double>& v, const std::vector<double>& x, double t) {
   for (std::size_t i = 0; i < v.size(); ++i)
     if (!std::isfinite(v[i]))
-      throw RunError(std::string(kName) + ": non-finite velocity in cell " + std::to_string(i) + " (x = " + text(x[i]) +
-                     ") at t = " + text(t));
+      throw RunError(std::string(kName) + ": non-finite velocity in cell " + std::to_string(i) +
+                     " (x = " + to_text(x[i], 3) + ") at t = " + to_text(t, 3));
 }
 
 }  // namespace
