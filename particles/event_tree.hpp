@@ -21,7 +21,7 @@
 // the implicit heap of the bottom-up segment tree, leaves at nb..2nb-1 (nb
 // blocks), node k < nb the winner of nodes 2k and 2k+1, so node 1 is the winner
 // for any nb (no padding to a power of two, which would put every leaf at the
-// deepest level). A node stores the winner's time and slot (12 bytes), so a
+// deepest level; node 0 is a sink, see climb_leaf). A node stores the winner's time and slot (12 bytes), so a
 // comparison never leaves the path being refreshed. A collision changes at most
 // three adjacent slots, in one block but for one collision in eight: one block of
 // times, then one path to the root. (Blocks of 16 rather than one line of 8: a
@@ -66,7 +66,8 @@ class EventTree {
     times_ = other.times_, time_ = other.time_, first_ = other.first_, last_ = other.last_;
     b0_ = other.b0_, all_blocks_ = other.all_blocks_, nb_ = other.nb_;
     head_partial_ = other.head_partial_, tail_partial_ = other.tail_partial_;
-    hint_ = other.hint_, hinting_ = other.hinting_, key_ = other.key_, win_ = other.win_;
+    hint_ = other.hint_, hinting_ = other.hinting_, leaf_depth_ = other.leaf_depth_;
+    key_ = other.key_, win_ = other.win_;
     own_key_ = std::move(other.own_key_), own_win_ = std::move(other.own_win_);
     own_times_ = std::move(other.own_times_);
     if (own_times) times_ = &own_times_, time_ = own_times_.data();  // the storage moved, its owner did not
@@ -100,6 +101,7 @@ class EventTree {
     head_partial_ = first % block != 0;
     tail_partial_ = (last + 1) % block != 0 && last + 1 != times.size();
     hinting_ = nb_ * block >= hint_slots;
+    leaf_depth_ = static_cast<std::uint32_t>(std::bit_width(2 * nb_ - 1) - 1);
     hint_ = static_cast<std::uint32_t>(first);
     key_ = keys;
     win_ = wins;
@@ -113,6 +115,7 @@ class EventTree {
 
   // Recomputes every block and internal node, O(length): after many set() calls.
   void rebuild() {
+    put(0, Node{detail::key_of(never), 0});  // the sink of climb_leaf
     for (std::size_t p = 0; p < nb_; ++p) put(nb_ + p, block_winner(p, block_at(p)));
     for (std::size_t k = nb_ - 1; k >= 1; --k) pull(k);
   }
@@ -168,7 +171,7 @@ class EventTree {
         const auto rest = detail::lane_winner(three.cleared(low, 0), three.cleared(high, 1));
         const Node leaf = node_of(three.earliest_with(rest, detail::key_of(tp), detail::key_of(tj)), b);
         put(nb_ + pos, leaf);
-        return climb(nb_ + pos, leaf);
+        return climb_leaf(nb_ + pos, leaf);
       }
       const __m512d next = three.merged(_mm512_load_pd(line + 16), 2);
       _mm512_store_pd(line + 16, next);
@@ -241,7 +244,7 @@ class EventTree {
     const std::size_t p = position(b);
     const Node leaf = block_winner(p, b);
     put(nb_ + p, leaf);
-    climb(nb_ + p, leaf);
+    climb_leaf(nb_ + p, leaf);
   }
   // Adjacent leaves at positions a and b = a + 1 and their paths to the root. A
   // leaf whose winner did not change leaves its path as it was below the joint
@@ -287,9 +290,22 @@ class EventTree {
   [[gnu::always_inline]] void climb(std::size_t k, Node node) {
     hinting_ ? climb<true>(k, node) : climb_unrolled(k, node);
   }
+  // The climb from leaf k. Without the hint it climbs leaf_depth_ levels, the
+  // depth of the deepest leaves, whatever the leaf's own: a leaf one level higher
+  // (nb not a power of two) makes its last match against node 0 and writes it
+  // there, a sink no one reads. The unrolled climb is entered by an indirect jump
+  // on the number of levels: one number per tree is predicted, where the depth
+  // of a random leaf was not (N = 10^6 to t = 10^4, one thread: 0.983 of the time).
+  [[gnu::always_inline]] void climb_leaf(std::size_t k, Node node) {
+    hinting_ ? climb<true>(k, node) : climb_unrolled(k, node, leaf_depth_);
+  }
   // The climb without the hint (the trees of a window's domains), unrolled: one
   // case per level, entered at node k's depth, no loop counter.
   [[gnu::always_inline]] void climb_unrolled(std::size_t k, Node node) {
+    climb_unrolled(k, node, std::bit_width(k) - 1);
+  }
+  // The same for a given number of levels, those past the root into node 0.
+  [[gnu::always_inline]] void climb_unrolled(std::size_t k, Node node, std::size_t levels) {
     Key t = node.t;
     std::uint32_t slot = node.slot;
     auto level = [&]() __attribute__((always_inline)) {
@@ -301,7 +317,7 @@ class EventTree {
       win_[k] = slot;
     };
     static_assert(sizeof(std::size_t) == 8);
-    switch (std::bit_width(k) - 1) {  // levels above node k; the tree has fewer than 2^31 nodes
+    switch (levels) {  // the tree has fewer than 2^31 nodes
       // clang-format off
       case 30: level(); [[fallthrough]]; case 29: level(); [[fallthrough]]; case 28: level(); [[fallthrough]];
       case 27: level(); [[fallthrough]]; case 26: level(); [[fallthrough]]; case 25: level(); [[fallthrough]];
@@ -353,6 +369,7 @@ class EventTree {
   bool head_partial_ = false, tail_partial_ = false;
   std::uint32_t hint_ = 0;
   bool hinting_ = false;
+  std::uint32_t leaf_depth_ = 0;  // levels above the deepest leaves
   // Node k: its winner's key and slot, in two arrays (index arithmetic the
   // addressing modes do for free); siblings share cache lines.
   Key* key_ = nullptr;
