@@ -293,7 +293,10 @@ CellAverages HopfLaxSolution::cell_averages(std::size_t cells) const {
   };
   auto [psi_a, mass_a] = edge(0);
   for (std::size_t i = 0; i < cells; ++i) {
-    const auto [psi_b, mass_b] = edge(i + 1);
+    auto [psi_b, mass_b] = edge(i + 1);
+    // M0(q*(x)) does not decrease (q* does not, rho0 >= 0); across a vacuum its
+    // value is one, whose roundings may: kept, so rho >= 0 and the sum telescopes.
+    mass_b = std::max(mass_b, mass_a);
     a.v[i] = U_ + (psi_b - psi_a) / dx;
     a.rho[i] = (mass_b - mass_a) / dx;
     psi_a = psi_b, mass_a = mass_b;
