@@ -224,17 +224,27 @@ std::string value_of(const Scene& scene, const std::string& dotted) {
   return key ? key->get(scene).written : "(the scene)";
 }
 
-// The key a refusal names: of the keys an item grows with, the one the
-// command line or a sweep variant set (the user's change), else its own.
+// The key a refusal names: of the keys an item grows with (its own first), one
+// the command line or a sweep variant set (the user's change), else one the
+// scene gives (not a default), else its own.
 std::string blamed_key(const Scene& scene, const ResourceItem& item) {
+  auto given = [&](const std::string& key) {
+    return key.empty() ? scene.key_origin.end() : scene.key_origin.find(key);
+  };
   auto overridden = [&](const std::string& key) {
-    const auto it = scene.key_origin.find(key);
-    return !key.empty() && it != scene.key_origin.end() &&
+    const auto it = given(key);
+    return it != scene.key_origin.end() &&
            (it->second.rfind("--set ", 0) == 0 || it->second.find("(sweep variant") != std::string::npos);
   };
-  if (overridden(item.key)) return item.key;
-  for (const std::string& factor : item.factors)
-    if (overridden(factor)) return factor;
+  auto in_scene = [&](const std::string& key) { return given(key) != scene.key_origin.end(); };
+  auto first = [&](const auto& chosen) -> const std::string* {
+    if (chosen(item.key)) return &item.key;
+    for (const std::string& factor : item.factors)
+      if (chosen(factor)) return &factor;
+    return nullptr;
+  };
+  if (const std::string* key = first(overridden)) return *key;
+  if (const std::string* key = first(in_scene)) return *key;
   return item.key;
 }
 

@@ -53,6 +53,19 @@ TEST(Resources, SizesThatCannotFitAreRefusedNamingTheKeyBeforeAnyWork) {
   }
 }
 
+// Without an override the refusal names the key the scene gives, not one it
+// leaves at its default (particles.samples, which realizations multiplies).
+TEST(Resources, TheKeyTheSceneGivesIsNamed) {
+  const Scene scene =
+      parse_scene("[initial]\nN = 1000\n[particles]\nt_end = 1\nrealizations = 1e12\n", "given.toml");
+  try {
+    check_memory(scene);
+    FAIL() << "10^12 realizations were not refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "particles.realizations") << e.what();
+  }
+}
+
 TEST(Resources, IntegerKeysTakeWholeFloatsAndRefuseOthers) {
   EXPECT_EQ(load_scene(kDefault, {"initial.N=1e3"}).initial.N, 1000u);
   EXPECT_THROW(load_scene(kDefault, {"initial.N=2.5"}), InputError);
