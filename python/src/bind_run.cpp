@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "captured_outputs.hpp"
+#include "file_problem.hpp"
 #include "interruptible.hpp"
 #include "keywords.hpp"
 #include "resources.hpp"
@@ -65,6 +66,8 @@ InputError located_in_python(const InputError& e) {
     return e.located("overrides['" + assignment.substr(0, assignment.find('=')) + "']");
   }
   if (where.rfind(kDictOrigin, 0) != 0) return e;
+  if (const auto* file = dynamic_cast<const app::FileProblem*>(&e))  // the scene as a whole: "runs nothing"
+    return app::FileProblem("scene", "scene", file->problem(), file->detail());
   const auto dot = e.key().find('.');
   if (dot == std::string::npos) return e.located("scene['" + e.key() + "']");
   return e.located("scene['" + e.key().substr(0, dot) + "']['" + e.key().substr(dot + 1) + "']");
@@ -198,9 +201,16 @@ py::dict keywords_scene(const std::vector<std::string>& tables, const std::strin
     if (!scene.contains(t)) scene[t] = py::dict();
     scene[t][key] = value;
   }
+  // Each keyword once: a key declared by two of the tables (solver of [particles]
+  // and of [compare]) is the first's.
   std::string accepted;
+  std::vector<std::string> listed;
   for (const std::string& t : tables)
-    accepted += (accepted.empty() ? "" : ", ") + app::find_table(t)->keys_text();
+    for (const app::KeySpec& key : app::find_table(t)->keys)
+      if (std::find(listed.begin(), listed.end(), key.info.key) == listed.end()) {
+        accepted += (accepted.empty() ? "" : ", ") + key.info.key;
+        listed.push_back(key.info.key);
+      }
   refuse_leftover(leftover, function, accepted);
   return scene;
 }

@@ -36,6 +36,7 @@ def test_an_unknown_keyword_is_named_with_the_accepted_ones():
     assert "r, delta, subthreshold" in e.allowed
     e = raises_input_error(lambda: shockgas.particles.ensemble(NN=10), "NN")
     assert e.allowed.startswith("a keyword of shockgas.particles.ensemble: N, positions")
+    assert e.allowed.count("solver") == 1  # [particles] and [compare] both declare it: the first's
 
 
 def test_an_unknown_solver_lists_the_registered_ones():
@@ -68,6 +69,9 @@ def test_a_dict_scene_error_says_where_in_the_dict():
     raises_input_error(lambda: shockgas.run({"particles": 3}), "particles")
     e = raises_input_error(lambda: shockgas.run_toml("[particles]\nt_end = 10\nr = 7\n"), "particles.r")
     assert e.where == "<toml>:3"
+    with pytest.raises(shockgas.InputError) as empty:  # the scene as a whole, not a key of it
+        shockgas.run({})
+    assert str(empty.value) == "scene: runs nothing: a scene needs [particles] or [continuum]"
 
 
 def test_a_scene_file_error_says_file_and_line(tmp_path):
@@ -145,5 +149,8 @@ def test_a_call_that_cannot_fit_in_memory_is_refused_before_any_work():
     assert "a scene that fits in the memory available" in e.allowed
     raises_input_error(lambda: shockgas.continuum.solve("godunov", V, dx=0.01, cells=10**13), "continuum.cells")
     raises_input_error(lambda: shockgas.particles.ensemble(N=10**15, t_end=1.0), "initial.N")
+    # the keyword given, not the default it multiplies (particles.samples)
+    raises_input_error(lambda: shockgas.particles.ensemble(N=100, t_end=1.0, realizations=10**12),
+                       "particles.realizations")
     raises_input_error(lambda: shockgas.compare.deposit(X, V, length=100.0, cells=10**15), "compare.cells")
     raises_input_error(lambda: shockgas.particles.initial_bodies(N=10**15), "initial.N")
