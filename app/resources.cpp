@@ -65,8 +65,10 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   // bodies that are not drawn may have unequal masses.
   const bool drawn = InitialStream::streamable(s.initial);
   const double initial = s.has_continuum || !drawn ? kBodyBytes : 0;
-  items.push_back({"initial.N", "the particles: the initial condition and the engines at work",
-                   N * (initial + d(concurrent_runs(p)) * particles::bytes_per_body(p, drawn))});
+  items.push_back({"initial.N",
+                   "the particles: the initial condition and the engines at work",
+                   N * (initial + d(concurrent_runs(p)) * particles::bytes_per_body(p, drawn)),
+                   {"particles.realizations", "particles.threads"}});
   items.push_back({"particles.samples",
                    "the time series of every realization",
                    R * samples * kSeriesColumns * 8,
@@ -96,8 +98,10 @@ void continuum_memory(const Scene& s, std::vector<ResourceItem>& items) {
   const double cells = d(s.continuum.cells), solvers = d(s.continuum.solvers.size());
   double at_work = 0;  // the solvers run one after the other
   for (const auto& solver : s.continuum.solvers) at_work = std::max(at_work, solver_cell_bytes(solver));
-  items.push_back({"continuum.cells", "the continuum solvers: one at work, the fields of each kept",
-                   cells * (at_work + solvers * kCellResultBytes)});
+  items.push_back({"continuum.cells",
+                   "the continuum solvers: one at work, the fields of each kept",
+                   cells * (at_work + solvers * kCellResultBytes),
+                   {"continuum.solvers"}});
 }
 
 // The frames of an animation (app/frames.hpp): the particles (at most N
@@ -114,7 +118,10 @@ std::vector<ResourceItem> single_memory(const Scene& s) {
   if (s.has_particles) particle_memory(s, items);
   if (s.has_continuum) continuum_memory(s, items);
   if (s.output.animation)
-    items.push_back({"output.animation_frames", "the frames of the animation", frame_bytes(s)});
+    items.push_back({"output.animation_frames",
+                     "the frames of the animation",
+                     frame_bytes(s),
+                     {"initial.N", "continuum.cells", "continuum.solvers"}});
   return items;
 }
 

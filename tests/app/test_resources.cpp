@@ -64,6 +64,16 @@ TEST(Resources, TheKeyTheSceneGivesIsNamed) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "particles.realizations") << e.what();
   }
+  // The engines at work grow with N and with the realizations run at once: of
+  // those, the key the command line set.
+  const Scene wide = parse_scene("[initial]\nN = 1e9\n[particles]\nt_end = 1\n", "wide.toml",
+                                 {"particles.realizations=64", "particles.threads=64"});
+  try {
+    check_memory(wide);
+    FAIL() << "64 engines of 10^9 bodies were not refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "particles.realizations") << e.what();
+  }
 }
 
 TEST(Resources, IntegerKeysTakeWholeFloatsAndRefuseOthers) {
