@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <utility>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -27,15 +28,23 @@ std::function<double(double)> piecewise(std::vector<double> values, double lengt
   };
 }
 
-// The scene key of `key` in [initial] (domain, L), read through its declaration.
-InitialParams initial_keys(py::dict& keys) {
+// The scene keys domain and L of [initial], read through their declarations;
+// given: the values as passed (None where not).
+InitialParams initial_keys(py::dict& keys, py::object& domain, py::object& L) {
   InitialParams ip;
-  for (const char* key : {"domain", "L"}) {
+  for (auto [key, given] : {std::pair{"domain", &domain}, std::pair{"L", &L}}) {
+    *given = py::none();
     if (!keys.contains(key)) continue;
-    initial_parameters().entry(key).set(ip, to_parameter(keys[key]));
+    *given = keys[key];
+    initial_parameters().entry(key).set(ip, to_parameter(*given));
     PyDict_DelItem(keys.ptr(), py::str(key).ptr());
   }
   return ip;
+}
+
+// An argument that the form of the data does not use is refused, not ignored.
+void refuse_unused(const char* key, const py::handle& value, const std::string& why) {
+  if (!value.is_none()) throw InputError(key, std::string(py::str(py::repr(value))).substr(0, 80), why);
 }
 
 // The initial field from arrays of cell values (dx: the cells' width).
@@ -110,12 +119,26 @@ py::dict solve(const std::string& name, const py::handle& v0, const py::handle& 
   if (keys.contains("solvers"))
     throw InputError("solvers", to_parameter(keys["solvers"]).written,
                      "no keyword: the solver is the argument name");
-  const InitialParams ip = initial_keys(keys);
+  py::object domain, L;
+  const InitialParams ip = initial_keys(keys, domain, L);
   continuum::ContinuumParams p;
   continuum::parameters().set(p, "solvers", ParameterValue::of(name));
   const bool default_cells = !keys.contains("cells");
   take_keywords(p, continuum::parameters(), keys);
   refuse_leftover(keys, "shockgas.continuum.solve", continuum::parameters().keys_text() + ", domain, L");
+  if (!x.is_none()) {
+    refuse_unused("rho0", rho0, "None with point masses (x): their masses are m");
+    refuse_unused("dx", dx, "None with point masses (x): the cells are cells= cells of the ring [0, L)");
+    refuse_unused("domain", domain, "no keyword with point masses (x): the ring's length is L");
+  } else if (py::isinstance<py::str>(v0)) {
+    refuse_unused("m", m, "None without x: the density of expressions is rho0");
+    refuse_unused("dx", dx, "None with expressions: they are solved on cells= cells of [0, domain)");
+    refuse_unused("L", L, "no keyword with expressions: their period is domain");
+  } else {
+    refuse_unused("m", m, "None without x: the density of cell values is rho0");
+    refuse_unused("domain", domain, "no keyword with cell values: their length is len(v0) * dx");
+    refuse_unused("L", L, "no keyword with cell values: their length is len(v0) * dx");
+  }
   InitialField f = !x.is_none()                  ? from_bodies(x, v0, m, ip)
                    : py::isinstance<py::str>(v0) ? from_expressions(v0, rho0, ip)
                                                  : from_cells(v0, rho0, dx);

@@ -58,6 +58,21 @@ def test_bad_arrays_name_their_argument():
     raises_input_error(lambda: shockgas.continuum.solve("godunov", V, t_end=0.1), "dx")
 
 
+def test_an_argument_the_form_of_the_data_does_not_use_is_refused():
+    # found: domain and L with cell values, m without x, rho0 with x and dx with
+    # expressions were ignored without a word
+    solve = shockgas.continuum.solve
+    raises_input_error(lambda: solve("godunov", V, dx=0.01, domain=2.0), "domain")
+    raises_input_error(lambda: solve("godunov", V, dx=0.01, L=3.0), "L")
+    raises_input_error(lambda: solve("godunov", V, dx=0.01, m=np.ones(100)), "m")
+    raises_input_error(lambda: solve("godunov", "0.5 + sin(2*pi*x)", dx=0.01), "dx")
+    raises_input_error(lambda: solve("godunov", "0.5 + sin(2*pi*x)", L=2.0), "L")
+    raises_input_error(lambda: solve("godunov", V, rho0=np.ones(100), x=X), "rho0")
+    raises_input_error(lambda: solve("godunov", V, x=X, dx=1.0), "dx")
+    raises_input_error(lambda: solve("godunov", V, x=X, domain=100.0), "domain")
+    assert solve("godunov", V, x=X, L=100.0, t_end=0.1, cells=50).t == 0.1  # what each form uses still runs
+
+
 def test_a_dict_scene_error_says_where_in_the_dict():
     e = raises_input_error(lambda: shockgas.run({"particles": {"r": 2}}), "particles.r")
     assert e.where == "scene['particles']['r']"
