@@ -39,10 +39,11 @@ def solve(name, v0, rho0=None, dx=None, t_end=1.0, *, x=None, m=None, progress=N
 
     An argument that the form of v0 does not use (dx or L with expressions,
     domain or L with cell values, m without x, rho0 or dx or domain with x) is
-    refused, not ignored. Each key is checked as in a scene, and the solver's own limits (its CFL
-    bound, cells against nu, ...) before any work: shockgas.InputError (a
-    ValueError) naming the key. RuntimeError: the solver failed. KeyboardInterrupt:
-    Ctrl-C, the solver stops at its next progress point.
+    refused, not ignored. Each key is checked as in a scene, and the solver's
+    own limits (its CFL bound, cells against nu, ...) before any work:
+    shockgas.InputError (a ValueError) naming the key. RuntimeError: the solver
+    failed. KeyboardInterrupt: Ctrl-C, the solver stops at its next progress
+    point.
 
     Keys of [continuum]:
     """
