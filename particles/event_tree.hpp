@@ -21,14 +21,13 @@
 // the implicit heap of the bottom-up segment tree, leaves at nb..2nb-1 (nb
 // blocks), node k < nb the winner of nodes 2k and 2k+1, so node 1 is the winner
 // for any nb (no padding to a power of two, which would put every leaf at the
-// deepest level; node 0 is a sink, see climb_leaf). A node stores the winner's time and slot (12 bytes), so a
-// comparison never leaves the path being refreshed. A collision changes at most
-// three adjacent slots, in one block but for one collision in eight: one block of
-// times, then one path to the root. (Blocks of 16 rather than one line of 8: a
-// level less to climb, and half as many collisions that span two blocks.) The
-// tree is 1.5 bytes per slot (8 for the times), so at N = 10^6 its upper levels
-// stay in cache. A run's first and last blocks may be shared with the
-// neighbouring runs: their winners read only the run's own slots.
+// deepest level; node 0 is a sink, see climb_leaf). A node stores the winner's
+// time and slot (12 bytes), so a comparison never leaves the path being
+// refreshed. A collision changes at most three adjacent slots, in one block but
+// for one collision in eight: one block of times, then one path to the root. (Blocks of 16 rather than one
+// line of 8: a level less to climb, and half as many collisions that span two blocks.) The tree is 1.5 bytes
+// per slot (8 for the times), so at N = 10^6 its upper levels stay in cache. A run's first and last blocks
+// may be shared with the neighbouring runs: their winners read only the run's own slots.
 #include <algorithm>
 #include <bit>
 #include <cassert>
@@ -268,36 +267,28 @@ class EventTree {
     climb_leaf(kb, wb);
   }
 
-  // Refreshes the ancestors of node k (k itself up to date). The winner so far
-  // stays in registers; only the siblings are loaded, and their addresses do not
-  // depend on the comparisons, so the loads overlap. Selects by conditional
-  // moves: no branch to mispredict.
+  // Refreshes the ancestors of leaf k, whose new value is node (not reloaded from
+  // where it was just stored). The winner so far stays in registers; only the
+  // siblings are loaded, and their addresses do not depend on the comparisons,
+  // so the loads overlap. Selects by conditional moves: no branch to mispredict.
   //
-  // On the way it keeps the runner-up among node k and the siblings (the winners
-  // of the subtrees that partition the rest of the tree): the slot of the event
-  // after the next one whenever that lies outside the next one's subtree (for
-  // random positions, with probability 1 - sum_j 4^-j = 2/3). hint() serves it
-  // for prefetching.
-  [[gnu::always_inline]] void climb(std::size_t k) { climb(k, Node{key_[k], win_[k]}); }
-  // The same with node k's value at hand (not reloaded from where it was just stored).
-  [[gnu::always_inline]] void climb(std::size_t k, Node node) {
-    hinting_ ? climb<true>(k, node) : climb_unrolled(k, node);
-  }
-  // The climb from leaf k. Without the hint it climbs leaf_depth_ levels, the
-  // depth of the deepest leaves, whatever the leaf's own: a leaf one level higher
-  // (nb not a power of two) makes its last match against node 0 and writes it
-  // there, a sink no one reads. The unrolled climb is entered by an indirect jump
-  // on the number of levels: one number per tree is predicted, where the depth
-  // of a random leaf was not (N = 10^6 to t = 10^4, one thread: 0.983 of the time).
+  // Without the hint it climbs leaf_depth_ levels, the depth of the deepest
+  // leaves, whatever the leaf's own: a leaf one level higher (nb not a power of
+  // two) makes its last match against node 0 and writes it there, a sink no one
+  // reads. The unrolled climb is entered by an indirect jump on the number of
+  // levels: one number per tree is predicted, where the depth of a random leaf
+  // was not (N = 10^6 to t = 10^4, one thread: 0.983 of the time).
+  //
+  // With the hint (trees too large for the caches) it keeps on the way the
+  // runner-up among node k and the siblings (the winners of the subtrees that
+  // partition the rest of the tree): the slot of the event after the next one
+  // whenever that lies outside the next one's subtree (for random positions,
+  // with probability 1 - sum_j 4^-j = 2/3). hint() serves it for prefetching.
   [[gnu::always_inline]] void climb_leaf(std::size_t k, Node node) {
     hinting_ ? climb<true>(k, node) : climb_unrolled(k, node, leaf_depth_);
   }
   // The climb without the hint (the trees of a window's domains), unrolled: one
-  // case per level, entered at node k's depth, no loop counter.
-  [[gnu::always_inline]] void climb_unrolled(std::size_t k, Node node) {
-    climb_unrolled(k, node, std::bit_width(k) - 1);
-  }
-  // The same for a given number of levels, those past the root into node 0.
+  // case per level, no loop counter; the levels past the root go into node 0.
   [[gnu::always_inline]] void climb_unrolled(std::size_t k, Node node, std::size_t levels) {
     Key t = node.t;
     std::uint32_t slot = node.slot;
