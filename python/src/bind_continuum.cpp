@@ -126,22 +126,24 @@ py::dict solve(const std::string& name, const py::handle& v0, const py::handle& 
   const bool default_cells = !keys.contains("cells");
   take_keywords(p, continuum::parameters(), keys);
   refuse_leftover(keys, "shockgas.continuum.solve", continuum::parameters().keys_text() + ", domain, L");
+  // The form of the data, and the arguments it does not use refused.
+  InitialField f;
   if (!x.is_none()) {
     refuse_unused("rho0", rho0, "None with point masses (x): their masses are m");
     refuse_unused("dx", dx, "None with point masses (x): the cells are cells= cells of the ring [0, L)");
     refuse_unused("domain", domain, "no keyword with point masses (x): the ring's length is L");
+    f = from_bodies(x, v0, m, ip);
   } else if (py::isinstance<py::str>(v0)) {
     refuse_unused("m", m, "None without x: the density of expressions is rho0");
     refuse_unused("dx", dx, "None with expressions: they are solved on cells= cells of [0, domain)");
     refuse_unused("L", L, "no keyword with expressions: their period is domain");
+    f = from_expressions(v0, rho0, ip);
   } else {
     refuse_unused("m", m, "None without x: the density of cell values is rho0");
     refuse_unused("domain", domain, "no keyword with cell values: their length is len(v0) * dx");
     refuse_unused("L", L, "no keyword with cell values: their length is len(v0) * dx");
+    f = from_cells(v0, rho0, dx);
   }
-  InitialField f = !x.is_none()                  ? from_bodies(x, v0, m, ip)
-                   : py::isinstance<py::str>(v0) ? from_expressions(v0, rho0, ip)
-                                                 : from_cells(v0, rho0, dx);
   if (f.pieces > 0 && default_cells) p.cells = f.pieces;
   require(f.pieces == 0 || p.cells % f.pieces == 0, "continuum.cells", p.cells,
           "a multiple of the cells of v0 (" + std::to_string(f.pieces) + ")");
