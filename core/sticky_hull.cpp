@@ -103,6 +103,11 @@ void prefault(void* base, std::size_t from, std::size_t to, std::size_t size) {
 #endif
 }
 
+// Whether a cluster at xl (velocity vl) and its right neighbour at xr (vr),
+// positions at t, have met by t: overlapping, or at one point and approaching
+// (a collision at exactly t, which the event engine has made by t; see Ties).
+inline bool met_by_t(double xl, double vl, double xr, double vr) { return xl > xr || (xl == xr && vl > vr); }
+
 // The stack of runs [0, top) over the hull's arrays, with the top's position at
 // t kept in a register. Without masses, a run's weight is its count. Runs below
 // `ready` are resident; reserve() makes room for a block of pushes (each adds at
@@ -126,7 +131,7 @@ struct Stack {
   // which the event engine has made by t too).
   void push(double c, double u, double w, std::uint32_t k) {
     double x = c + t * u;
-    while (top_x > x || (top_x == x && top > 0 && v[top - 1] > u)) {
+    while (top > 0 && met_by_t(top_x, v[top - 1], x, u)) {
       const std::size_t b = top - 1;
       const double total = (Masses ? m[b] : static_cast<double>(count[b])) + w;
       const double share = w / total;
@@ -217,9 +222,8 @@ void StickyHull::close_ring() {
     if (masses_) m_[left] = ml + mr;
     count_[left] += count_[right];
   };
-  auto overlaps = [&](std::size_t left, std::size_t right, double shift) {  // met by t, as push()
-    const double xl = c0_[left] + t_ * v_[left], xr = (c0_[right] + shift) + t_ * v_[right];
-    return xl > xr || (xl == xr && v_[left] > v_[right]);
+  auto overlaps = [&](std::size_t left, std::size_t right, double shift) {
+    return met_by_t(c0_[left] + t_ * v_[left], v_[left], (c0_[right] + shift) + t_ * v_[right], v_[right]);
   };
   std::size_t front = begin_;
   while (end_ - front >= 2) {
