@@ -1,4 +1,4 @@
-// The cost of a checkpoint (app/checkpoint.hpp): write_checkpoint of a
+// The cost of a checkpoint (shockgas/app/records/checkpoint.hpp): write_checkpoint of a
 // finished study's records, fsync and rename included, into a directory under
 // the system's temporary directory. A run writes one at most every
 // output.checkpoint_minutes (default 10), so its cost is this time over 600 s.
@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <string>
 
-#include "checkpoint.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 
 namespace {
 

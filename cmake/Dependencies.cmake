@@ -37,7 +37,7 @@ if(NOT Eigen3_FOUND)
   shockgas_missing("Eigen3" "libeigen3-dev")
 endif()
 
-# Boost's header-only sorts (the random initial positions: core/initial_stream.cpp).
+# Boost's header-only sorts (the random initial positions: shockgas/core/initial_stream.cpp).
 find_package(Boost 1.71 QUIET)
 if(NOT Boost_FOUND)
   shockgas_missing("Boost headers" "libboost-dev")
@@ -73,7 +73,7 @@ add_library(shockgas_sundials INTERFACE)
 target_include_directories(shockgas_sundials SYSTEM INTERFACE ${SUNDIALS_INCLUDE_DIR})
 target_link_libraries(shockgas_sundials INTERFACE ${SUNDIALS_LIBRARIES})
 
-# SHA-256 of the result files (app/sha256.cpp): OpenSSL's libcrypto.
+# SHA-256 of the result files (shockgas/app/files/sha256.cpp): OpenSSL's libcrypto.
 find_package(OpenSSL QUIET COMPONENTS Crypto)
 if(NOT OpenSSL_FOUND)
   shockgas_missing("OpenSSL libcrypto" "libssl-dev")
@@ -99,5 +99,5 @@ endif()
 function(shockgas_library name dir)
   file(GLOB sources CONFIGURE_DEPENDS ${dir}/*.cpp)
   add_library(${name} STATIC ${sources})
-  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/include PRIVATE ${dir})
+  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/generated)
 endfunction()

@@ -9,7 +9,7 @@
 # paths: test EventTree.ReplaceThreeIsSetAndRefresh; whole runs compared in
 # docs/performance.md).
 #
-# Eigen sums in packets of the vector width, so its fits (compare/statistics.cpp)
+# Eigen sums in packets of the vector width, so its fits (shockgas/compare/statistics.cpp)
 # would change in the last bits with AVX: that file keeps the portable x86-64
 # target (it is the only one that includes Eigen), and SHOCKGAS_NATIVE defaults
 # to ON only on x86-64, where that target is known.
@@ -21,7 +21,7 @@ if(SHOCKGAS_COMPILER_HAS_MARCH_NATIVE AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_
 endif()
 option(SHOCKGAS_NATIVE "Compile for the build machine's processor (-march=native); OFF: portable"
        ${_native_default})
-# The options that put a file back on the portable target (compare/CMakeLists.txt).
+# The options that put a file back on the portable target (shockgas/compare/CMakeLists.txt).
 set(SHOCKGAS_PORTABLE_OPTIONS "")
 
 check_cxx_compiler_flag(-ffp-contract=off SHOCKGAS_COMPILER_HAS_FP_CONTRACT)

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Reference values for the tests of compare/airy.cpp and compare/chernoff.cpp.
+"""Reference values for the tests of shockgas/compare/airy.cpp and shockgas/compare/chernoff.cpp.
 
 Writes three tables into tests/compare/data/ (or the directory given):
 

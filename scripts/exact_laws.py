@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """The exact velocity laws of Burgers turbulence from white noise, with SciPy.
 
-A second implementation, independent of compare/airy.cpp, compare/chernoff.cpp and
-compare/cluster_velocity_law.cpp (which are the reference; the formulas and their
-derivations are in include/shockgas/compare/chernoff.hpp, eulerian_velocity_law.hpp
+A second implementation, independent of shockgas/compare/airy.cpp, shockgas/compare/chernoff.cpp and
+shockgas/compare/cluster_velocity_law.cpp (which are the reference; the formulas and their
+derivations are in shockgas/compare/chernoff.hpp, eulerian_velocity_law.hpp
 and cluster_velocity_law.hpp), for plots and cross-checks:
 
   g(x)   = 2^(2/3)/pi int_0^inf Re[exp(-2^(1/3) x u) / Ai(u)] dy,  u = c + i y

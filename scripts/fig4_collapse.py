@@ -11,7 +11,7 @@ realization's mass-weighted histogram of z = (v - <v>) t^(1/3)
 (particles/realizations/histogram_density). The distance of two distributions is
 the L1 distance D(a, b) = sum over bins |Phi_a - Phi_b| dz, and a group's distance
 the mean over its pairs, as `analysis.velocity_collapse_distance` (over the times
-of one run; compare/velocity_distribution.cpp) defines it. Groups, over the
+of one run; shockgas/compare/velocity_distribution.cpp) defines it. Groups, over the
 sample times t >= t_min:
 
   "over t"  one r, every t (the run's own analysis.velocity_collapse_distance);

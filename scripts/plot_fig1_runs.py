@@ -26,7 +26,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from shockplot import kept_runs  # noqa: E402
 from shockplot.common import label as axis_label, save  # noqa: E402
 
-EXACT_T_T23 = 0.2128531785  # compare/cluster_velocity_law.hpp, D = 1/3
+EXACT_T_T23 = 0.2128531785  # shockgas/compare/cluster_velocity_law.hpp, D = 1/3
 R0_RUNS = [  # directory, legend, colour
     ("hull-r0-R1000", "exact hull, 1000 x N = 10^6", "C0"),
     ("hull-r0-R10", "exact hull, 10 x N = 10^6 (realizations 0-9)", "C1"),

@@ -32,7 +32,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from shockplot import kept_runs  # noqa: E402
 from shockplot.common import label as axis_label, save  # noqa: E402
 
-EXACT_T_T23 = 0.2128531785  # compare/cluster_velocity_law.hpp, D = 1/3
+EXACT_T_T23 = 0.2128531785  # shockgas/compare/cluster_velocity_law.hpp, D = 1/3
 T_START = 100.0
 STYLE = {("elastic", 0.01): ("C0", "-"), ("sticky", 0.01): ("C1", "--"),
          ("elastic", 0.001): ("C2", "-"), ("sticky", 0.001): ("C3", "--")}

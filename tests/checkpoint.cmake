@@ -3,7 +3,7 @@
 # SIGTERM (which writes a checkpoint and exits with 143), each resumed and
 # compared with the uninterrupted run bit for bit (tools/compare_runs.cpp); a
 # sweep killed and resumed the same way; an ensemble whose realization 0 keeps
-# its states in a state file (app/state_file.hpp) stopped by SIGTERM; and a
+# its states in a state file (shockgas/app/records/state_file.hpp) stopped by SIGTERM; and a
 # shard (realizations 1:5) stopped by either signal, resumed, and compared with
 # the same shard run uninterrupted.
 # One realization stopped inside its run the same ways (single.toml: its first

@@ -8,7 +8,7 @@
 # protocol is tested without MPI in test_job_ensembles, which the sanitizers run.)
 add_executable(compare_runs tools/compare_runs.cpp)
 target_link_libraries(compare_runs PRIVATE shockgas_app)
-target_include_directories(compare_runs PRIVATE ${CMAKE_CURRENT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/app)
+target_include_directories(compare_runs PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 
 if(NOT SHOCKGAS_WITH_MPI OR NOT SHOCKGAS_MPIRUN)
   message(STATUS "shockgas: the MPI tests are skipped (shockgas built without MPI, or no mpirun)")

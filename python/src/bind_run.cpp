@@ -10,13 +10,15 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "captured_outputs.hpp"
-#include "file_problem.hpp"
+#include "shockgas/app/run/captured_outputs.hpp"
+#include "shockgas/app/files/file_problem.hpp"
 #include "interruptible.hpp"
 #include "keywords.hpp"
-#include "resources.hpp"
-#include "scene_schema.hpp"
+#include "shockgas/app/run/resources.hpp"
+#include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/jobs/run_scene.hpp"
 
 namespace shockgas::python {
 

@@ -7,7 +7,7 @@
 // (PyErr_CheckSignals) and hands the latest progress to the caller's callback.
 // When a handler raises (KeyboardInterrupt on Ctrl-C: Python's own handler), the
 // computation is asked to stop through the one signal design of shockgas,
-// request_interrupt(InterruptMode::abort) (core/interrupt.hpp): the engine and
+// request_interrupt(InterruptMode::abort) (shockgas/core/interrupt.hpp): the engine and
 // the solvers poll it at their safe points and throw Interrupted, which unwinds
 // everything (a result directory's temporary files are removed on the way). The
 // worker is joined and the Python exception raised. The last computation of the

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "scene_schema.hpp"
+#include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::python {

@@ -1,6 +1,6 @@
 #pragma once
 // Keyword arguments as scene keys: each keyword is set through the declaration
-// of the scene key of the same name (core/parameters.hpp), so it is read,
+// of the scene key of the same name (shockgas/core/parameters.hpp), so it is read,
 // range-checked and refused exactly as in a scene, with the same InputError
 // naming the key ("particles.r = 2 is not allowed; allowed: a finite number in
 // [0, 1]"). The keyword lists of the docstrings come from the same declarations.

@@ -1,12 +1,12 @@
 #pragma once
-// The command's memory preflight (app/resources.hpp) for the module's calls
+// The command's memory preflight (shockgas/app/run/resources.hpp) for the module's calls
 // that take their parameters as keywords rather than as a scene: a call that
 // cannot fit is an InputError naming the key that needs most, before any work,
 // not the kernel's out-of-memory killer ending the Python process.
 #include <cstddef>
 #include <string>
 
-#include "resources.hpp"
+#include "shockgas/app/run/resources.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::python {

@@ -47,7 +47,7 @@ def test_the_steps_of_a_snapshot_compose_to_it():
 
 def test_shocks_of_an_exact_sawtooth_are_found_where_they_are():
     # Ramps of slope 1/t between shocks at 0.3 and 0.7 on [0, 1), t = 2: the
-    # detection is exact for ramps of equal slope (compare/shock_detection.hpp).
+    # detection is exact for ramps of equal slope (shockgas/compare/shock_detection.hpp).
     n, t = 200, 2.0
     edges = np.linspace(0, 1, n + 1)
 

@@ -19,7 +19,7 @@ def shows_regimes(f, summary):
 
 
 def _homogeneous_cooling(summary, t):
-    """T(0) (1 + eps t)^-2, eps = (1 - r) / 2 (compare/theory.hpp, eq. 2 with A = 1)."""
+    """T(0) (1 + eps t)^-2, eps = (1 - r) / 2 (shockgas/compare/theory.hpp, eq. 2 with A = 1)."""
     r = summary.get("particles", {}).get("r")
     T0 = summary.get("initial", {}).get("temperature")
     if r is None or T0 is None or len(t) == 0:

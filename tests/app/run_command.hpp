@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "process_temp_path.hpp"
-#include "shockgas/app/command.hpp"
+#include "shockgas/app/cli/command.hpp"
 
 namespace shockgas::app::testing_support {
 

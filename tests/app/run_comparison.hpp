@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "hdf5_file.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
 
 namespace shockgas::app::testing {
 

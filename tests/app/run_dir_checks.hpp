@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint.hpp"
-#include "manifest.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
+#include "shockgas/app/files/manifest.hpp"
 #include "process_temp_path.hpp"
-#include "sha256.hpp"
+#include "shockgas/app/files/sha256.hpp"
 
 namespace shockgas::app::testing {
 

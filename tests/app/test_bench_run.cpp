@@ -1,4 +1,4 @@
-// `shockgas bench` as a whole (app/bench_run.cpp): its directory is staged and
+// `shockgas bench` as a whole (shockgas/app/cli/bench_run.cpp): its directory is staged and
 // committed with a manifest, as a run's is (the full disk:
 // test_full_disk.cpp), and a bench of some sections re-measures those without
 // losing the others' tables (finding: the staged directory held only the
@@ -12,7 +12,7 @@
 #include <string>
 
 #include "child_run.hpp"
-#include "manifest.hpp"
+#include "shockgas/app/files/manifest.hpp"
 #include "run_dir_checks.hpp"
 
 namespace shockgas::app {

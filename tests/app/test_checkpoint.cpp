@@ -1,4 +1,4 @@
-// Checkpoints (app/checkpoint.hpp): the file carries the finished
+// Checkpoints (shockgas/app/records/checkpoint.hpp): the file carries the finished
 // realizations' records exactly; a resumed run that keeps them equals the
 // uninterrupted run bit for bit; a damaged checkpoint, one of another build
 // and a scene that is not the checkpoint's are refused with exit 2, the
@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "app/checkpoint_fixture.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

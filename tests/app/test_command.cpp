@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "hdf5_file.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
 #include "run_command.hpp"
 #include "run_comparison.hpp"
-#include "shockgas/app/info.hpp"
+#include "shockgas/app/cli/info.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -1,7 +1,7 @@
 // The memory of `shockgas run` (docs/performance.md, "Memory of the command"):
 // the whole process's peak resident memory stays within 40 bytes per particle
 // of what it held before the run, plus a fixed 8 MiB. Realization 0's final
-// state goes to its state file in chunks (app/state_file.hpp) instead of a
+// state goes to its state file in chunks (shockgas/app/records/state_file.hpp) instead of a
 // whole copy beside the engine's (24 bytes per particle, 48 with the copy that
 // ordered it), which put the command at 81 bytes per particle.
 //

@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "frames.hpp"
-#include "hdf5_file.hpp"
+#include "shockgas/app/output/frames.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
 #include "run_command.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -15,8 +15,8 @@
 #include <string>
 
 #include "child_run.hpp"
-#include "manifest.hpp"
-#include "result_check.hpp"
+#include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/directory/result_check.hpp"
 #include "run_dir_checks.hpp"
 #include "two_runs.hpp"
 

@@ -12,7 +12,7 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
-#include "shockgas/app/command.hpp"
+#include "shockgas/app/cli/command.hpp"
 
 namespace shockgas::app {
 namespace {

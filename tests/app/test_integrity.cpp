@@ -12,9 +12,9 @@
 #include <string>
 
 #include "child_run.hpp"
-#include "file_problem.hpp"
+#include "shockgas/app/files/file_problem.hpp"
 #include "run_dir_checks.hpp"
-#include "shockgas/app/info.hpp"
+#include "shockgas/app/cli/info.hpp"
 
 namespace shockgas::app {
 namespace {

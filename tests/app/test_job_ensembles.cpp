@@ -10,14 +10,15 @@
 #include <deque>
 #include <mutex>
 
-#include "checkpointer.hpp"
-#include "job_ensembles.hpp"
+#include "shockgas/app/ensemble/checkpointer.hpp"
+#include "shockgas/app/jobs/job_ensembles.hpp"
 #include "process_temp_path.hpp"
-#include "progress_bar.hpp"
-#include "realization_pool.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
+#include "shockgas/app/ensemble/realization_pool.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/simulate.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "app/run_comparison.hpp"
-#include "checkpoint.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
 

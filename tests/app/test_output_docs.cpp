@@ -1,4 +1,4 @@
-// The output layout as declared (app/output_layout.hpp), as documented
+// The output layout as declared (shockgas/app/output/output_layout.hpp), as documented
 // (docs/output.md) and as written by a run: the three must agree.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "hdf5_file.hpp"
-#include "output_layout.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/output/output_layout.hpp"
 #include "run_command.hpp"
 #include "shockgas/core/initial_condition.hpp"
 

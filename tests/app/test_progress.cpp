@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "child_run.hpp"
-#include "progress_bar.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
 #include "run_dir_checks.hpp"
 
 namespace shockgas::app {

@@ -8,10 +8,11 @@
 #include <cstring>
 #include <random>
 
-#include "ensemble_plan.hpp"
-#include "realization_record.hpp"
+#include "shockgas/app/ensemble/ensemble_plan.hpp"
+#include "shockgas/app/records/realization_record.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/simulate.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

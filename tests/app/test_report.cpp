@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "hdf5_file.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
 #include "run_command.hpp"
 
 namespace shockgas::app {

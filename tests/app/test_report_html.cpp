@@ -1,6 +1,6 @@
-// report.html (app/report_html.hpp): every summary key with its declared
+// report.html (shockgas/app/report/report_html.hpp): every summary key with its declared
 // meaning and theory, nothing fetched from outside, a sweep's reference table;
-// and the pieces of the page (app/html_page.hpp).
+// and the pieces of the page (shockgas/app/report/html_page.hpp).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -8,8 +8,8 @@
 #include <sstream>
 #include <string>
 
-#include "html_page.hpp"
-#include "output_layout.hpp"
+#include "shockgas/app/report/html_page.hpp"
+#include "shockgas/app/output/output_layout.hpp"
 #include "run_command.hpp"
 #include "shockgas/version.hpp"
 

@@ -12,9 +12,10 @@
 #include <vector>
 
 #include "child_run.hpp"
-#include "resources.hpp"
+#include "shockgas/app/run/resources.hpp"
 #include "run_dir_checks.hpp"
-#include "shockgas/app/scene.hpp"
+#include "shockgas/app/scene/scene.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -125,7 +126,7 @@ TEST(Resources, ACgroupLimitIsRead) {
 // the estimate may fall short of the peak by no more than the spread of the
 // process base (4 MB), and must not refuse
 // what fits, so it may exceed the peak by at most a factor 2 (the copies of a
-// record held at the peak vary with the realizations, app/resources.cpp: the
+// record held at the peak vary with the realizations, shockgas/app/run/resources.cpp: the
 // model's largest excess, a space-time record at R = 1, is a factor 1.7).
 TEST(Resources, TheEstimateHoldsAgainstMeasuredPeakMemory) {
   if (kSanitized) GTEST_SKIP() << "an AddressSanitizer build's peak memory is not the program's";

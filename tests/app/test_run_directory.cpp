@@ -16,9 +16,9 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
-#include "run_directory.hpp"
-#include "run_target.hpp"
-#include "shockgas/app/command.hpp"
+#include "shockgas/app/directory/run_directory.hpp"
+#include "shockgas/app/directory/run_target.hpp"
+#include "shockgas/app/cli/command.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -2,7 +2,7 @@
 // results or the complete new ones, never a mix, and the next run clears what
 // it left (findings: a failed run mixed old and new files; SIGKILL left
 // result.h5.partial-PID, which no later run cleared). The points are named by
-// the fault-injection hook (SHOCKGAS_FAULT, app/fault.hpp); then a few seeded
+// the fault-injection hook (SHOCKGAS_FAULT, shockgas/app/files/fault.hpp); then a few seeded
 // random times.
 #include <gtest/gtest.h>
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "app/checkpoint_fixture.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

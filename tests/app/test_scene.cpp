@@ -2,8 +2,9 @@
 // key, value and the allowed range.
 #include <gtest/gtest.h>
 
-#include "shockgas/app/scene.hpp"
+#include "shockgas/app/scene/scene.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

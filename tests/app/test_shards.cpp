@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "hdf5_file.hpp"
-#include "manifest.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/files/manifest.hpp"
 #include "run_command.hpp"
 #include "run_comparison.hpp"
 

@@ -14,8 +14,9 @@
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
 #include "two_runs.hpp"
-#include "shockgas/app/run.hpp"
+#include "shockgas/app/jobs/run_scene.hpp"
 #include "shockgas/core/interrupt.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -1,4 +1,4 @@
-// Realization 0's state file (app/state_file.hpp): a state read back checks
+// Realization 0's state file (shockgas/app/records/state_file.hpp): a state read back checks
 // its columns against their checksums, whichever way it is read; the whole
 // file is checked before a resume (tests/app/test_checkpoint.cpp: a resumed
 // run then runs realization 0 again).
@@ -11,7 +11,7 @@
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/state_sink.hpp"
-#include "state_file.hpp"
+#include "shockgas/app/records/state_file.hpp"
 
 namespace shockgas::app {
 namespace {

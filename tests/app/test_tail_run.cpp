@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "child_run.hpp"
-#include "manifest.hpp"
-#include "result_check.hpp"
+#include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/directory/result_check.hpp"
 #include "run_dir_checks.hpp"
 
 namespace shockgas::app {

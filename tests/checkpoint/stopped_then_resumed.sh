@@ -18,7 +18,7 @@ mkdir -p "$out"
 every="output.checkpoint_minutes=0.001"
 "$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every "$@"
 
-# The stopped run: it stops itself (SIGSTOP, app/fault.hpp) right after its
+# The stopped run: it stops itself (SIGSTOP, shockgas/app/files/fault.hpp) right after its
 # first checkpoint is written, so the signal comes after that checkpoint and
 # before the run's end however loaded the machine; then it continues to meet it.
 SHOCKGAS_FAULT=checkpoint:stop "$shockgas" run "$scene" --out "$out/stopped" --quiet --no-plots --set $every "$@" \

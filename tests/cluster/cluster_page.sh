@@ -49,7 +49,7 @@ case $case in
     ;;
   preempt)
     script preemptible.sbatch
-    # The job's rank 0 stops itself (SIGSTOP, app/fault.hpp) right after its first
+    # The job's rank 0 stops itself (SIGSTOP, shockgas/app/files/fault.hpp) right after its first
     # checkpoint, so that the signal comes before the job's end however fast.
     SHOCKGAS_FAULT=checkpoint:stop sbatch preemptible.sbatch > first.out 2>&1 &
     job=$!

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <vector>
 
-#include "gauss_legendre.hpp"
+#include "shockgas/compare/gauss_legendre.hpp"
 #include "reference_table.hpp"
 #include "shockgas/compare/airy.hpp"
 #include "shockgas/compare/chernoff.hpp"

@@ -163,7 +163,7 @@ TEST(GodunovInput, OtherBadKeysAreNamed) {
   p.cells = 4;
   EXPECT_EQ(input_error_key(sine(), p, 0.1, 1), "continuum.cells");
   p.cells = 64;
-  // Names are read through the declarations (continuum/params.cpp): an unknown one is refused there.
+  // Names are read through the declarations (shockgas/continuum/params.cpp): an unknown one is refused there.
   EXPECT_EQ(set_error_key(p, "limiter", "superbee"), "continuum.limiter");
   EXPECT_EQ(set_error_key(p, "boundary", "reflecting"), "continuum.boundary");
   EXPECT_EQ(input_error_key(sine(), p, -1.0, 1), "continuum.t_end");

@@ -12,7 +12,7 @@
 #include "shockgas/continuum/hopf_cole.hpp"
 #include "shockgas/continuum/viscous_mol.hpp"
 #include "shockgas/core/error.hpp"
-#include "viscous_mol_setup.hpp"
+#include "shockgas/continuum/viscous_mol_setup.hpp"
 
 namespace sc = shockgas::continuum;
 using shockgas::InitialField;

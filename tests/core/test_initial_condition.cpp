@@ -1,4 +1,4 @@
-// The initial condition built once (core/initial_condition.hpp): realization 0
+// The initial condition built once (shockgas/core/initial_condition.hpp): realization 0
 // is what every model sees, other realizations are the seeded draws.
 #include <gtest/gtest.h>
 

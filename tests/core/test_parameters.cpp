@@ -1,4 +1,4 @@
-// Declared parameters (core/parameters.hpp): reading, checking and describing a
+// Declared parameters (shockgas/core/parameters.hpp): reading, checking and describing a
 // member through its one declaration.
 #include <gtest/gtest.h>
 

@@ -21,7 +21,7 @@ mkdir -p "$out"
 every="output.checkpoint_minutes=0.001"
 "$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every
 
-# Each rank stops itself (SIGSTOP, app/fault.hpp) right after its first state
+# Each rank stops itself (SIGSTOP, shockgas/app/files/fault.hpp) right after its first state
 # is written (fault point "checkpoint" on rank 0, "state" on rank 1), so the
 # signal comes after both ranks saved and before the end.
 args="run $scene --out $out/stopped --quiet --no-plots --set $every"

@@ -33,7 +33,7 @@ launch() {  # RANKS ARGS...: shockgas as one process or as a job of RANKS ranks 
 }
 "$shockgas" run "$scene" --out "$out/whole" --quiet --no-plots --set $every
 
-# The stopped job: rank 0 stops itself (SIGSTOP, app/fault.hpp) right after its
+# The stopped job: rank 0 stops itself (SIGSTOP, shockgas/app/files/fault.hpp) right after its
 # first checkpoint is written, so the signal comes after that checkpoint and
 # before the job's end however loaded the machine; then it continues to meet it.
 (export SHOCKGAS_FAULT=checkpoint:stop; launch "$stop_ranks" run "$scene" --out "$out/stopped" --quiet --no-plots \

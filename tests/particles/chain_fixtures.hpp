@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "chain_view.hpp"
+#include "shockgas/particles/chain_view.hpp"
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/random.hpp"
 

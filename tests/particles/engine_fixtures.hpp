@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "event_engine.hpp"
+#include "shockgas/particles/event_engine.hpp"
 #include "shockgas/core/bodies.hpp"
 
 namespace shockgas::particles::detail {

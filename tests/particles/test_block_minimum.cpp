@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "block_minimum.hpp"
+#include "shockgas/particles/block_minimum.hpp"
 #include "shockgas/core/random.hpp"
 
 namespace shockgas::particles::detail {

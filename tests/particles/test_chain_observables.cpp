@@ -10,12 +10,12 @@
 #include <numeric>
 
 #include "chain_fixtures.hpp"
-#include "chain_observables.hpp"
-#include "recorder.hpp"
+#include "shockgas/particles/chain_observables.hpp"
+#include "shockgas/particles/recorder.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/random.hpp"
 #include "shockgas/particles/simulate.hpp"
-#include "sorted_state.hpp"
+#include "shockgas/particles/sorted_state.hpp"
 
 namespace shockgas::particles::detail {
 namespace {

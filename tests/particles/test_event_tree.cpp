@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "event_tree.hpp"
+#include "shockgas/particles/event_tree.hpp"
 #include "shockgas/core/random.hpp"
 
 namespace shockgas::particles {

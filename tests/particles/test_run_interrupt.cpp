@@ -1,4 +1,4 @@
-// Interrupting a running realization (core/interrupt.hpp): an abort request
+// Interrupting a running realization (shockgas/core/interrupt.hpp): an abort request
 // throws Interrupted from inside the time windows, on every thread of the team,
 // and from the global queue; a checkpoint request ends the run at a safe point,
 // whose state is the uninterrupted run's at that time.

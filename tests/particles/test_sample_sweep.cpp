@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "sample_sweep.hpp"
+#include "shockgas/particles/sample_sweep.hpp"
 #include "shockgas/core/random.hpp"
 
 #if defined(__SSE2__)

@@ -12,9 +12,9 @@
 #include <string>
 
 #include "chain_fixtures.hpp"
-#include "chain_observables.hpp"
-#include "ring_wrap.hpp"
-#include "stretch_observables.hpp"
+#include "shockgas/particles/chain_observables.hpp"
+#include "shockgas/particles/ring_wrap.hpp"
+#include "shockgas/particles/stretch_observables.hpp"
 
 namespace shockgas::particles::detail {
 namespace {

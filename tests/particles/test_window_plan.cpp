@@ -1,4 +1,4 @@
-// The cuts of a window plan (particles/window_plan.hpp), refined: the candidates
+// The cuts of a window plan (shockgas/particles/window_plan.hpp), refined: the candidates
 // near every fine_bodies-th pair that surely stay open for the whole plan are
 // added. Every cut must hold until the plan's horizon, or a collision across it
 // would be missed: the windows with every plan refined give the global queue's
@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "engine_fixtures.hpp"
-#include "run_watch.hpp"
+#include "shockgas/particles/run_watch.hpp"
 #include "shockgas/core/initial_condition.hpp"
-#include "window_scheduler.hpp"
+#include "shockgas/particles/window_scheduler.hpp"
 
 namespace shockgas::particles::detail {
 namespace {

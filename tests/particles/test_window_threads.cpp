@@ -1,4 +1,4 @@
-// One realization on several threads (particles/window_scheduler.hpp): the
+// One realization on several threads (shockgas/particles/window_scheduler.hpp): the
 // domains of a window run on any number of threads with the same result, to the
 // last bit; and merges (r = 0) run on the windows too, with the global queue's
 // result.

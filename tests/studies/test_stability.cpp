@@ -7,9 +7,9 @@
 #include <fstream>
 #include <string>
 
-#include "common.hpp"
+#include "shockgas/studies/common.hpp"
 #include "process_temp_path.hpp"
-#include "stability.hpp"
+#include "shockgas/studies/stability.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/core/error.hpp"
 

@@ -1,4 +1,4 @@
-// `shockgas tail` (studies/tail_study.hpp): bad options refused by name, and the
+// `shockgas tail` (shockgas/studies/tail_study.hpp): bad options refused by name, and the
 // files of a small study consistent with themselves and with the exact law.
 #include <gtest/gtest.h>
 

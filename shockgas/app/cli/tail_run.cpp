@@ -1,0 +1,17 @@
+#include "shockgas/app/cli/tail_run.hpp"
+
+#include "shockgas/app/directory/run_directory.hpp"
+
+namespace shockgas::app {
+
+std::string run_tail(studies::TailStudyOptions options, bool force) {
+  studies::validate_tail_study(options);  // before the directory is touched
+  RunDirectory dir(options.out_dir, "tail", force);
+  studies::TailStudyOptions staged = options;
+  staged.out_dir = dir.staging().string();
+  staged.size_written = [&dir] { dir.publish_copy("tail"); };
+  studies::run_tail_study(staged);
+  return options.out_dir;
+}
+
+}  // namespace shockgas::app

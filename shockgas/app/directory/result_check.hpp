@@ -1,0 +1,60 @@
+#pragma once
+// What every reader in shockgas checks before the HDF5 library touches a
+// result file: the library cannot be trusted to reject a damaged file (it may
+// crash inside it), so a file is compared with the size and SHA-256 that the
+// run directory's manifest.json recorded when it was written (manifest.hpp).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shockgas/app/files/file_problem.hpp"
+#include "shockgas/app/files/manifest.hpp"
+
+namespace shockgas::app {
+
+// A result file a reader refuses: FileProblem with key "RESULT" and the problem
+// "no such file", "a directory", "not a regular file", "empty", "truncated",
+// "damaged", "not an HDF5 file" or "unreadable".
+inline FileProblem result_problem(const std::string& path, std::string problem, const std::string& detail) {
+  return FileProblem("RESULT", path, std::move(problem), detail);
+}
+
+enum class Verification {
+  manifest,     // size and SHA-256 equal to the manifest's record
+  no_manifest,  // no manifest.json beside it, or the file is not listed in it: not checked
+};
+
+// The result file a path names: the path itself, or the result.h5 inside a run
+// directory. FileProblem for a directory without one.
+std::filesystem::path result_file_of(const std::filesystem::path& path);
+
+// Checks a result file before it is opened: FileProblem when it is missing,
+// not a regular file, empty, shorter or other than its manifest's record, or
+// without the HDF5 signature.
+Verification check_result_file(const std::filesystem::path& file);
+
+// One file of a run directory checked against its manifest.json.
+struct FileState {
+  std::string path;  // relative to the directory, as listed
+  // Empty: intact. Else "missing", "truncated", "damaged", "not a regular
+  // file", "unreadable", or "not listed" (a file or link the manifest does not list).
+  std::string problem;
+  std::string detail;
+  bool intact() const { return problem.empty(); }
+};
+
+// Every file the manifest of dir lists, in its order, by size and SHA-256 (the
+// listed path `skip`, already checked, is taken as intact), then every regular
+// file and link under dir that it does not list (an interrupted run's
+// checkpoint named as one).
+std::vector<FileState> check_listed_files(const std::filesystem::path& dir, const Manifest& manifest,
+                                          const std::filesystem::path& skip);
+
+// "summary.json damaged, fields.png missing": the listed files that are not as
+// recorded ("" when all are; files not listed are no difference).
+std::string differences_of(const std::vector<FileState>& states);
+
+// The warning a reader gives for Verification::no_manifest.
+std::string unverified_warning(const std::filesystem::path& file);
+
+}  // namespace shockgas::app

@@ -1,0 +1,167 @@
+#include "shockgas/app/ensemble/realization_pool.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+#include "shockgas/app/ensemble/checkpointer.hpp"
+#include "shockgas/app/output/frames.hpp"
+#include "shockgas/core/cores.hpp"
+#include "shockgas/core/interrupt.hpp"
+#include "shockgas/particles/simulate.hpp"
+#include "shockgas/app/records/state_file.hpp"
+
+namespace shockgas::app {
+
+struct RealizationPool::State {
+  std::shared_ptr<const EnsemblePlan> plan;
+  Checkpointer* checkpoints = nullptr;
+  std::vector<WorkItem> items;
+  std::size_t threads_per_run = 1;
+  std::filesystem::path states_dir;
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+
+  mutable std::mutex mutex;      // guards what follows
+  std::vector<double> fraction;  // per item
+  std::vector<bool> active;      // per item
+  double sim_time = 0;
+  std::size_t ended = 0;  // items finished or failed
+  std::size_t workers = 0;
+  std::vector<RealizationRecord> finished;
+  std::optional<Failure> failure;
+
+  void run(std::size_t i) {
+    const WorkItem item = items[i];
+    const InitialCondition& ic = plan->initial(item.ensemble);
+    particles::ParticleParams p = particle_params(plan->scene(item.ensemble));
+    p.threads = threads_per_run;
+    auto progress = [this, i](double f, double t) {
+      std::lock_guard lock(mutex);
+      fraction[i] = f;
+      sim_time = std::max(sim_time, t);
+    };
+    // Not started on a pending request: a resumed run starts it.
+    if (interrupt_requested() != InterruptMode::none) throw Interrupted(interrupt_signal());
+    std::unique_ptr<RealizationSaves> saves = checkpoints ? checkpoints->saves_for(item) : nullptr;
+    if (const auto at = saves ? saves->resumed_at() : std::nullopt) progress(at->first, at->second);
+    // Its states file, from where its save left it if resumed (the snapshots
+    // taken before the save are there, not in the save).
+    std::optional<StateFileWriter> states;
+    if (item.index == 0 && !states_dir.empty() && keeps_states_apart(plan->scene(item.ensemble))) {
+      const std::optional<std::string> resumed = saves ? saves->resumed_sink() : std::nullopt;
+      if (resumed)
+        states.emplace(state_file_path(states_dir, item.ensemble), *resumed);
+      else
+        states.emplace(state_file_path(states_dir, item.ensemble));
+      if (saves) saves->attach_sink([&states] { return states->saved(); });
+    }
+    const particles::RunCheckpoints saved = saves ? saves->checkpoints() : particles::RunCheckpoints{};
+    RealizationRecord r{item.ensemble, item.index,
+                        states ? particles::simulate(ic, 0, p, progress, &states->sink(), saved)
+                               : particles::run_realization(ic, item.index, p, progress, saved),
+                        states.has_value()};
+    // Stopped at a safe point by a checkpoint request: not finished, so not a
+    // record; a resumed run computes it again from its start.
+    if (r.run.stop.reason == particles::StopReason::interrupted) throw Interrupted(interrupt_signal());
+    if (states) states->commit();  // on the disk before its record is kept
+    std::lock_guard lock(mutex);
+    fraction[i] = 1;
+    sim_time = std::max(sim_time, r.run.stop.time);
+    active[i] = false;
+    ++ended;
+    finished.push_back(std::move(r));
+  }
+
+  void work() {
+    for (std::size_t i = next++; i < items.size() && !stop; i = next++) {
+      {
+        std::lock_guard lock(mutex);
+        active[i] = true;
+      }
+      try {
+        run(i);
+      } catch (const InputError& e) {
+        fail(i, std::current_exception(), e.what(), true);
+      } catch (const std::exception& e) {
+        fail(i, std::current_exception(), e.what(), false);
+      } catch (...) {
+        fail(i, std::current_exception(), "unknown error", false);
+      }
+    }
+    std::lock_guard lock(mutex);
+    --workers;
+  }
+
+  void fail(std::size_t i, std::exception_ptr error, std::string message, bool bad_input) {
+    stop = true;
+    std::lock_guard lock(mutex);
+    active[i] = false;
+    ++ended;
+    if (!failure) failure = Failure{items[i], error, std::move(message), bad_input};
+  }
+};
+
+RealizationPool::RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::vector<WorkItem> items,
+                                 std::size_t threads, bool abandon_unfinished,
+                                 std::filesystem::path states_dir, Checkpointer* checkpoints)
+    : state_(std::make_shared<State>()), abandon_(abandon_unfinished) {
+  State& s = *state_;
+  s.plan = std::move(plan);
+  s.states_dir = std::move(states_dir);
+  s.checkpoints = checkpoints;
+  s.items = std::move(items);
+  s.fraction.assign(s.items.size(), 0.0);
+  s.active.assign(s.items.size(), false);
+  const particles::ThreadSplit split = particles::split_threads(threads, s.items.size());
+  s.threads_per_run = split.per_run;  // threads left over go to each run's windows
+  const std::size_t workers = s.items.empty() ? 0 : split.runs;
+  s.workers = workers;  // counted down by the threads as they end
+  for (std::size_t t = 0; t < workers; ++t) threads_.emplace_back([state = state_] { state->work(); });
+}
+
+RealizationPool::~RealizationPool() {
+  state_->stop = true;
+  const bool leave = abandon_ && !finished();
+  for (auto& t : threads_) leave ? t.detach() : t.join();
+}
+
+std::vector<RealizationRecord> RealizationPool::take_finished() {
+  std::lock_guard lock(state_->mutex);
+  return std::exchange(state_->finished, {});
+}
+
+std::optional<RealizationPool::Failure> RealizationPool::failure() const {
+  std::lock_guard lock(state_->mutex);
+  return state_->failure;
+}
+
+std::vector<WorkItem> RealizationPool::running() const {
+  std::lock_guard lock(state_->mutex);
+  std::vector<WorkItem> out;
+  for (std::size_t i = 0; i < state_->items.size(); ++i)
+    if (state_->active[i]) out.push_back(state_->items[i]);
+  return out;
+}
+
+double RealizationPool::fraction() const {
+  std::lock_guard lock(state_->mutex);
+  if (state_->items.empty()) return 1.0;
+  double sum = 0;
+  for (double f : state_->fraction) sum += f;
+  return sum / static_cast<double>(state_->items.size());
+}
+
+double RealizationPool::sim_time() const {
+  std::lock_guard lock(state_->mutex);
+  return state_->sim_time;
+}
+
+bool RealizationPool::finished() const {
+  std::lock_guard lock(state_->mutex);
+  return state_->workers == 0;
+}
+
+}  // namespace shockgas::app

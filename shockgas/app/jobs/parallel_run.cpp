@@ -1,0 +1,203 @@
+// A run on the processes of an MPI job, or of one shard: the plan's
+// realizations computed by every rank (job_ensembles.hpp), then written by
+// rank 0: a whole run, or the shard's records.
+#include "shockgas/app/jobs/parallel_run.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include "shockgas/app/records/checkpoint.hpp"
+#include "shockgas/app/ensemble/checkpointer.hpp"
+#include "shockgas/app/jobs/job.hpp"
+#include "shockgas/app/jobs/job_ensembles.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
+#include "shockgas/app/ensemble/realization_pool.hpp"
+#include "shockgas/core/cores.hpp"
+#include "shockgas/app/directory/run_directory.hpp"
+#include "shockgas/app/jobs/shard_file.hpp"
+#include "shockgas/core/error.hpp"
+#include "shockgas/app/records/state_file.hpp"
+
+namespace shockgas::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A rank with no realization to run is allowed, and said.
+void say_idle_ranks(const Job* job, const EnsemblePlan& plan) {
+  if (!job || plan.items().size() >= static_cast<std::size_t>(job->size())) return;
+  const std::size_t busy = plan.items().size(), last = static_cast<std::size_t>(job->size()) - 1;
+  std::cerr << "shockgas: note: " << job->size() << " ranks for " << busy << " realization"
+            << (busy == 1 ? "" : "s") << ": "
+            << (busy == last ? "rank " + std::to_string(last) + " has"
+                             : "ranks " + std::to_string(busy) + " to " + std::to_string(last) + " have")
+            << " none to run\n";
+}
+
+// The job's wall time shared among the ensembles in proportion to the time
+// their realizations took (a sweep's variants run side by side).
+std::vector<double> wall_shares(const EnsemblePlan& plan, const std::vector<RealizationRecord>& records,
+                                double wall_seconds) {
+  std::vector<double> own(plan.ensembles(), 0.0);
+  double all = 0;
+  for (const auto& r : records) own[r.ensemble] += r.run.wall_seconds, all += r.run.wall_seconds;
+  for (double& w : own) w = all > 0 ? wall_seconds * w / all : wall_seconds / static_cast<double>(own.size());
+  return own;
+}
+
+// The records of a checkpoint being resumed, less those of a realization 0
+// whose state file is not whole (a run killed between the two, or a damaged
+// file): it runs again, and the run says so.
+KeptWork resumable_work(const fs::path& dir) {
+  Checkpoint checkpoint = read_checkpoint(dir);
+  std::vector<RealizationRecord>& kept = checkpoint.records;
+  const auto lost = [&](const RealizationRecord& r) {
+    if (!r.states_apart) return false;
+    const auto problem = StoredStates::problem(state_file_path(dir, r.ensemble));
+    if (problem)
+      std::fprintf(stderr, "shockgas: realization 0 of ensemble %llu runs again: %s\n",
+                   static_cast<unsigned long long>(r.ensemble), problem->c_str());
+    return problem.has_value();
+  };
+  kept.erase(std::remove_if(kept.begin(), kept.end(), lost), kept.end());
+  return {std::move(kept), checkpoint.seconds};
+}
+
+// Realization 0's state files are kept after a failure only beside a
+// checkpoint, which a resumed run continues from.
+class StateFilesCleanup {
+ public:
+  explicit StateFilesCleanup(fs::path dir) : dir_(std::move(dir)) {}
+  ~StateFilesCleanup() {
+    std::error_code ec;
+    if (!fs::exists(checkpoint_path(dir_), ec)) remove_state_files(dir_);
+  }
+  StateFilesCleanup(const StateFilesCleanup&) = delete;
+  StateFilesCleanup& operator=(const StateFilesCleanup&) = delete;
+
+ private:
+  fs::path dir_;
+};
+
+// out/<name>.shard-A-B[-vC-D] for a shard without --out.
+std::string shard_name(const Scene& scene, const RunOptions& options) {
+  std::string name = scene.name + ".shard-" + options.realizations +
+                     (options.variants.empty() ? "" : "-v" + options.variants);
+  std::replace(name.begin(), name.end(), ':', '-');
+  return name;
+}
+
+}  // namespace
+
+bool runs_in_parallel(const RunOptions& options) {
+  return current_job() || !options.realizations.empty() || !options.variants.empty() ||
+         keeps_checkpoints(options);
+}
+
+bool keeps_checkpoints(const RunOptions& options) { return options.checkpoint || options.resume; }
+
+std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptions& options) {
+  std::optional<Slice> realizations, variants;
+  if (!options.realizations.empty()) realizations = parse_slice(options.realizations, "--realizations");
+  if (!options.variants.empty()) variants = parse_slice(options.variants, "--variants");
+  const bool shard = realizations || variants;
+  const auto plan = std::make_shared<const EnsemblePlan>(scene, realizations, variants);
+  Job* job = current_job();
+  if (speaks_for_job()) say_idle_ranks(job, *plan);
+  const std::size_t threads = resolved_threads(scene.particles.threads);
+  const fs::path where =
+      shard && options.out_dir.empty() ? fs::path("out") / shard_name(scene, options) : dir;
+  // Realization 0's states go to a file beside the checkpoint (state_file.hpp);
+  // a shard's records carry them.
+  const fs::path states_dir = shard || !speaks_for_job() ? fs::path() : where;
+  std::optional<CreatedDirectories> made;
+  std::optional<StateFilesCleanup> cleanup;
+  if (!states_dir.empty()) {
+    made.emplace(states_dir);  // removed again on a failure if nothing is left in it
+    cleanup.emplace(states_dir);
+    if (!options.resume) remove_state_files(states_dir);  // what a killed run left
+  }
+  ComputedRecords computed;
+  {
+    // Rank 0 keeps a job's checkpoint (job_ensembles.hpp); every rank saves
+    // the states of the realizations it runs.
+    std::unique_ptr<Checkpointer> checkpoints;
+    if (keeps_checkpoints(options) && speaks_for_job())
+      checkpoints = std::make_unique<Checkpointer>(where, scene, options.realizations, options.variants,
+                                                   options.resume ? resumable_work(where) : KeptWork{},
+                                                   options.resume, true);
+    else if (keeps_checkpoints(options))
+      checkpoints = std::make_unique<Checkpointer>(where, scene, options.realizations, options.variants,
+                                                   KeptWork{}, options.resume, true, true);
+    if (checkpoints && options.resume && speaks_for_job())
+      std::cerr << "shockgas: resuming " << where.string() << ": " << checkpoints->kept() << " of "
+                << plan->items().size() << " realizations kept from the checkpoint"
+                << checkpoints->resumed_states() << "\n";
+    ProgressBar progress(options.progress && speaks_for_job());
+    progress.stage(job ? "particles, " + std::to_string(job->size()) + " ranks" : "particles");
+    computed = compute_records(job, plan, threads, progress, checkpoints.get(), states_dir);
+  }
+  if (!speaks_for_job()) return dir.string();
+  if (shard) {
+    write_shard(where, scene, *plan, std::move(computed));
+  } else {
+    const ParallelRun parallel{computed.ranks, computed.threads, 0};
+    const std::size_t finished = computed.records.size();
+    try {
+      write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
+                         options, scene.has_sweep ? nullptr : &plan->initial(0), states_dir);
+    } catch (const CheckpointTaken&) {
+      throw;
+    } catch (const Interrupted& e) {  // after the particles: their checkpoint holds every realization
+      if (!keeps_checkpoints(options) || !fs::exists(checkpoint_path(where))) throw;
+      throw CheckpointTaken(e.signal_number(), "all " + std::to_string(finished) +
+                                                   " realizations are kept in " +
+                                                   checkpoint_path(where).string() + resume_hint(where));
+    }
+  }
+  if (keeps_checkpoints(options)) remove_checkpoint(where);  // the result holds it all now
+  if (made) made->keep();
+  return where.string();
+}
+
+std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
+                               std::vector<RealizationRecord> records, const ParallelRun& parallel,
+                               double wall_seconds, const fs::path& dir, const RunOptions& options,
+                               const InitialCondition* initial, const fs::path& states_dir) {
+  const std::vector<double> wall = wall_shares(plan, records, wall_seconds);
+  std::vector<std::vector<RealizationRecord>> by_ensemble(plan.ensembles());
+  for (auto& r : records) by_ensemble.at(r.ensemble).push_back(std::move(r));
+  std::size_t next = 0;  // run_sweep asks in variant order, skipping variants without particles
+  EnsembleSource source = [&](const Scene& asked) {
+    std::size_t e = next;
+    while (e < plan.ensembles() && plan.scene(e).name != asked.name) ++e;
+    if (e == plan.ensembles()) throw RunError("the ensemble of " + asked.name + " was not computed");
+    next = e + 1;
+    std::shared_ptr<const StoredStates> states;
+    for (const auto& r : by_ensemble[e])
+      if (r.states_apart) states = StoredStates::open(state_file_path(states_dir, e));
+    ComputedEnsemble c{reduce_ensemble_records(std::move(by_ensemble[e]), plan.realizations(e)), parallel,
+                       std::move(states)};
+    c.ensemble.wall_seconds = wall[e];
+    return c;
+  };
+  std::optional<SweepPlan> sweep;
+  std::optional<InitialCondition> built;
+  if (scene.has_sweep) {
+    sweep = plan_sweep(scene);
+  } else if (!initial) {
+    built.emplace(build_initial(scene));
+    preflight(scene, *built);
+    initial = &*built;
+  }
+  return into_run_directory(dir, scene, options, [&](const fs::path& staging) {
+    if (sweep)
+      run_sweep(scene, *sweep, staging, options, source);
+    else
+      run_single(scene, *initial, staging, options, {}, source);
+  });
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,34 @@
+#pragma once
+// Writing a run whose particle ensembles were computed elsewhere: gathered from
+// the ranks of an MPI job (parallel_run.cpp) or merged from shards (merge.cpp).
+// Each ensemble is reduced from its records in index order, then the run goes
+// on as a single process's would: the continuum, the comparison, the result
+// files, the report and the plots, through run_single and run_sweep.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shockgas/app/ensemble/ensemble_plan.hpp"
+#include "shockgas/app/run/run_internal.hpp"
+
+namespace shockgas::app {
+
+// A run on the processes of an MPI job, or of a slice of the realizations (a
+// shard). So does a run that keeps checkpoints (checkpointer.hpp): its records
+// are saved as they finish.
+bool runs_in_parallel(const RunOptions& options);
+bool keeps_checkpoints(const RunOptions& options);
+std::string run_parallel(const Scene& scene, const std::filesystem::path& dir, const RunOptions& options);
+
+// records: of every realization of every ensemble of `plan` (each ensemble
+// computed whole), in any order. wall_seconds: how long computing them took.
+// initial: realization 0 of a scene without sweep, if already built.
+// states_dir: where the records with states_apart have their state files
+// (state_file.hpp).
+std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
+                               std::vector<RealizationRecord> records, const ParallelRun& parallel,
+                               double wall_seconds, const std::filesystem::path& dir,
+                               const RunOptions& options, const InitialCondition* initial = nullptr,
+                               const std::filesystem::path& states_dir = {});
+
+}  // namespace shockgas::app

@@ -1,0 +1,139 @@
+// report.md of a single run, part by part.
+#include "shockgas/app/report/report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "shockgas/compare/theory.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+std::string brief(double value) { return to_text(value, 4); }
+
+std::string percent(double fraction) {
+  return std::isfinite(fraction) ? brief(100 * fraction) + " %" : "nan";
+}
+
+namespace {
+
+void particles_part(std::ostream& out, const Scene& scene, const particles::EnsembleResult& e) {
+  const auto& p = scene.particles;
+  const auto& stop = e.first.stop;
+  const double rate = e.wall_seconds > 0 ? static_cast<double>(e.total_collisions) / e.wall_seconds : 0.0;
+  out << "## Particles\n\n";
+  out << "- " << scene.initial.N << " particles, r = " << brief(p.r);
+  if (particles::collision_rule(p).merges_only())
+    out << " (every collision merges)";
+  else
+    out << ", delta = " << brief(p.delta) << " (" << name_of(p.subthreshold) << " below it)";
+  out << ", " << p.realizations << " realization(s), solver `" << name_of(p.solver) << "`.\n";
+  out << "- " << e.total_collisions << " collisions in " << brief(e.wall_seconds) << " s ("
+      << brief(std::round(rate)) << " per second).\n";
+  if (p.solver == particles::ParticleSolver::events) {
+    const particles::RunSchedule& s = e.first.schedule;
+    out << "- Event order: " << s.order << (s.why_global.empty() ? "" : " (" + s.why_global + ")") << ".\n";
+  }
+  out << "- Run ended: " << to_string(stop.reason) << " at t = " << brief(stop.time);
+  if (stop.reason == particles::StopReason::collapse)
+    out << " (inelastic collapse at x = " << brief(stop.position) << ")";
+  if (stop.reason == particles::StopReason::stall)
+    out << " (time stopped advancing at x = " << brief(stop.position)
+        << " through rounding: results up to this time are kept)";
+  out << ".\n\n";
+}
+
+void cooling_part(std::ostream& out, const compare::CoolingAnalysis& a) {
+  if (!a.not_determined.empty()) out << "- cooling_law: not determined (" << a.not_determined << ").\n\n";
+  if (!a.fit) return;
+  const auto& fit = *a.fit;
+  const auto& c = a.crossovers;
+  out << "## Cooling law\n\n";
+  out << "- T ~ t^a with a = " << brief(fit.exponent) << " +- " << brief(fit.exponent_error) << " on ["
+      << brief(fit.t_min) << ", " << brief(fit.t_max)
+      << "] (sticky-gas regime theory: " << compare::kStickyCoolingExponentText << ").\n";
+  out << "- Crossovers read off d ln T / d ln t: t_dissip = " << brief(c.t_dissip)
+      << " (theory ~ 1/eps = " << brief(c.t_dissip_theory) << "), t_stick = " << brief(c.t_stick)
+      << " (theory ~ eps^(-3/2) = " << brief(c.t_stick_theory)
+      << "); nan = the local exponent never reaches the t^-2 regime (none for moderately inelastic gases, "
+         "e.g. "
+         "r = 0.5) or the crossover is outside the sampled window.\n\n";
+}
+
+void distribution_part(std::ostream& out, const compare::DistributionAnalysis& a) {
+  if (a.collapse_distance)
+    out << "## Velocity distribution\n\n- Collapse of P(v,t) t^(-1/3) against z = (v - <v>) t^(1/3) over "
+        << a.late.size() << " times in [" << brief(a.late.front().t) << ", " << brief(a.late.back().t)
+        << "]: mean L1 distance " << brief(*a.collapse_distance)
+        << " (0 = perfect collapse, 2 = disjoint).\n";
+  if (!a.not_determined.empty()) {
+    out << "- velocity_distribution: not determined (" << a.not_determined << ").\n\n";
+    return;
+  }
+  if (!a.collapse_distance) return;
+  const std::string theory = "theory: " + brief(compare::kTailExponent);
+  out << "- Tail ln Phi ~ -c |z|^a for |z| >= " << brief(a.tail_z_min);
+  if (a.tail.at_bound)
+    out << ": not determined (the best a sits at the scan bound: too few or too noisy tail points; " << theory
+        << ").\n\n";
+  else
+    out << " (one standard deviation): a = " << brief(a.tail.exponent) << " +- "
+        << brief(a.tail.exponent_error) << " (" << theory << ").\n\n";
+}
+
+void continuum_part(std::ostream& out, const Scene& scene, const std::vector<ContinuumRun>& runs) {
+  out << "## Continuum at t = " << brief(scene.continuum_t_end()) << "\n\n";
+  for (const auto& run : runs) {
+    const auto& r = run.result;
+    out << "- `" << r.solver << "`: " << r.x.size() << " cells, " << brief(r.wall_seconds) << " s";
+    if (run.l1_v) {
+      out << "; L1 distance to the exact solution per unit length: v " << brief(run.l1_v->per_length) << " ("
+          << percent(run.l1_v->relative) << " of the exact v's variation about its mean)";
+      if (run.l1_rho)
+        out << ", rho " << brief(run.l1_rho->per_length) << " (" << percent(run.l1_rho->relative)
+            << " of the mass misplaced)";
+    }
+    if (!r.method_note.empty()) out << " (" << r.method_note << ")";
+    out << "\n";
+  }
+  out << "\n";
+}
+
+void comparison_part(std::ostream& out, const Scene& scene, const Comparison& cmp) {
+  const auto& c = cmp.snapshot;
+  if (!cmp.note.empty())
+    out << "- The particles stopped at t = " << brief(c.t) << " < t_end: `" << cmp.solver
+        << "` is compared at that time.\n\n";
+  out << "## Shocks and clusters at t = " << brief(c.t) << " (solver `" << cmp.solver << "`)\n\n";
+  out << "| figure of merit | value | theory / ideal |\n|---|---|---|\n";
+  out << "| shocks (mass >= " << brief(c.min_mass) << ") | " << c.n_shocks << " | N t^(-2/3) = "
+      << brief(std::round(compare::expected_shock_count(static_cast<double>(scene.initial.N), c.t)))
+      << " (ratio " << brief(c.shock_count_ratio) << ")";
+  if (cmp.n_shocks_exact) out << "; exact for this white noise: " << brief(*cmp.n_shocks_exact);
+  out << " |\n";
+  out << "| clusters (mass >= " << brief(c.min_mass) << ") | " << c.n_clusters << " | = shocks |\n";
+  out << "| matched cluster mass fraction | " << brief(c.match.matched_mass_fraction) << " | 1 |\n";
+  out << "| largest matched position error | " << brief(c.match.max_position_error) << " | 0 |\n";
+  out << "| median sawtooth slope x t (continuum) | " << brief(c.sawtooth.slope_times_t.median) << " | "
+      << brief(compare::kSawtoothSlopeTimesT) << " |\n";
+  out << "| median sawtooth slope x t (particles) | " << brief(c.particle_sawtooth.slope_times_t.median)
+      << " | " << brief(compare::kSawtoothSlopeTimesT) << " |\n\n";
+}
+
+}  // namespace
+
+std::string report_text(const RunResults& r) {
+  const Scene& scene = *r.scene;
+  std::ostringstream out;
+  out << report_header(scene);
+  if (r.particles) {
+    particles_part(out, scene, r.particles->ensemble);
+    cooling_part(out, r.particles->cooling);
+    distribution_part(out, r.particles->distribution);
+  }
+  if (!r.continuum.empty()) continuum_part(out, scene, r.continuum);
+  if (r.comparison) comparison_part(out, scene, *r.comparison);
+  return out.str();
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,170 @@
+#include "shockgas/app/run/progress_bar.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+
+#include "shockgas/app/files/fault.hpp"
+
+namespace shockgas::app {
+
+namespace {
+
+// Nothing is printed before the process has run this long (a bar: before its
+// stage has): a run of the command that ends sooner prints nothing.
+constexpr std::chrono::seconds kSilent{1};
+const std::chrono::steady_clock::time_point process_start = std::chrono::steady_clock::now();
+
+}  // namespace
+
+ProgressBar::ProgressBar(bool enabled, Listener listener)
+    : enabled_(enabled),
+      tty_(isatty(STDERR_FILENO) != 0),
+      listener_(std::move(listener)),
+      start_(Clock::now()),
+      last_draw_(start_),
+      unwinding_(std::uncaught_exceptions()) {}
+
+ProgressBar::~ProgressBar() {
+  end_phase(std::uncaught_exceptions() > unwinding_ ? "stopped" : nullptr);
+  finish();
+}
+
+void ProgressBar::stage(const std::string& name) {
+  finish();
+  stage_ = name;
+  start_ = last_draw_ = Clock::now();
+  last_decile_ = -1;
+  last_time_ = 0;
+  base_ = std::nullopt;
+  if (listener_) listener_(stage_, 0.0, 0.0);
+}
+
+void ProgressBar::update(double fraction, double sim_time) {
+  fault_point("compute");
+  if (!enabled_ && !listener_) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (listener_) listener_(stage_, fraction, sim_time);
+  if (!enabled_) return;
+  const auto now = Clock::now();
+  // The base is the first update that reports any progress: a resumed run's
+  // workers report where they took up only after the first poll, which says 0.
+  if (!base_ && (fraction > 0 || sim_time > 0)) base_ = Base{now, std::clamp(fraction, 0.0, 1.0), sim_time};
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  if (elapsed < 1.0) return;  // short runs print nothing
+  fraction = std::clamp(fraction, 0.0, 1.0);
+  if (tty_) {
+    if (std::chrono::duration<double>(now - last_draw_).count() < 0.1 && fraction < 1.0) return;
+    last_draw_ = now;
+    draw(fraction, sim_time);
+  } else {
+    const int decile = static_cast<int>(std::floor(10 * fraction));
+    if (decile <= last_decile_) return;
+    last_decile_ = decile;
+    draw(fraction, sim_time);
+  }
+}
+
+void ProgressBar::draw(double fraction, double sim_time) {
+  const auto now = Clock::now();
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  // Rate and remaining time from the work done since the first update: a
+  // resumed run starts where its checkpoint was, not at 0.
+  const Base base = base_.value_or(Base{now, fraction, sim_time});
+  const double since = std::chrono::duration<double>(now - base.clock).count();
+  const double rate = since > 0 ? (sim_time - base.time) / since : 0;
+  const double done = fraction - base.fraction;
+  char eta[24] = "?";  // unknown until this process has done some of the work
+  if (done > 0) std::snprintf(eta, sizeof eta, "%.0f", since * (1 - fraction) / done);
+  char line[200];
+  if (tty_) {
+    constexpr int width = 30;
+    const int filled = static_cast<int>(width * fraction);
+    std::string bar(filled, '#');
+    bar.resize(width, '.');
+    std::snprintf(line, sizeof line, "\r%-18s [%s] %3.0f%%  t = %-10.4g  %.3g time units/s  eta %s s  ",
+                  stage_.c_str(), bar.c_str(), 100 * fraction, sim_time, rate, eta);
+  } else {
+    std::snprintf(line, sizeof line, "%s: %3.0f%%  t = %.4g  %.3g time units/s  elapsed %.1f s\n", stage_.c_str(),
+                  100 * fraction, sim_time, rate, elapsed);
+  }
+  if (line_open_) std::fputs("\n", stderr);  // the phase's time follows on a line of its own
+  line_open_ = false;
+  std::fputs(line, stderr);
+  std::fflush(stderr);
+  drawn_ = tty_;
+}
+
+void ProgressBar::finish() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (drawn_) std::fputs("\n", stderr);
+  drawn_ = false;
+}
+
+void ProgressBar::end_line() {
+  if (drawn_ || line_open_) std::fputs("\n", stderr);
+  drawn_ = line_open_ = false;
+}
+
+void ProgressBar::phase(const std::string& name) {
+  end_phase(nullptr);
+  if (!enabled_) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  phase_ = name + about_;
+  phase_start_ = Clock::now();
+  in_phase_ = true;
+  if (phase_start_ - process_start >= kSilent) {
+    announce();
+    return;
+  }
+  announcer_ = std::thread([this] {
+    std::unique_lock<std::mutex> held(mutex_);
+    if (!phase_ended_.wait_until(held, process_start + kSilent, [this] { return !in_phase_; })) announce();
+  });
+}
+
+void ProgressBar::announce() {
+  end_line();
+  std::fprintf(stderr, "%s ... ", phase_.c_str());
+  std::fflush(stderr);
+  announced_ = line_open_ = true;
+}
+
+void ProgressBar::end_phase() { end_phase(nullptr); }
+
+void ProgressBar::end_phase(const char* outcome) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (in_phase_ && announced_) {
+      char done[32];
+      std::snprintf(done, sizeof done, "%.1f s",
+                    std::chrono::duration<double>(Clock::now() - phase_start_).count());
+      if (!line_open_) {
+        end_line();
+        std::fprintf(stderr, "%s: ", phase_.c_str());
+      }
+      std::fprintf(stderr, "%s\n", outcome ? outcome : done);
+      std::fflush(stderr);
+    }
+    in_phase_ = announced_ = line_open_ = false;
+  }
+  phase_ended_.notify_all();
+  if (announcer_.joinable()) announcer_.join();
+}
+
+void ProgressBar::say(const std::string& line) {
+  if (line.empty()) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  end_line();
+  std::fputs(line.c_str(), stderr);
+  std::fflush(stderr);
+}
+
+ProgressCallback ProgressBar::callback() {
+  return [this](double fraction, double sim_time) { update(fraction, sim_time); };
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,73 @@
+#pragma once
+// The resource preflight: the memory and the disk a scene needs, estimated
+// from its keys before any work, against what the process may use. A scene
+// that cannot fit is refused (InputError, exit 2) naming the key that needs
+// most, the estimate and the limit.
+//
+// The estimate adds, per item, a measured cost per element (bytes per particle
+// of the engine, per cell of the continuum solvers, per sample, bin and frame
+// of the records) to the process's own base; tests/app/test_resources.cpp
+// holds it against the peak memory and the result sizes of real runs.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "shockgas/app/scene/scene.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::app {
+
+// One item of an estimate: the scene key that sets its size, and its bytes.
+struct ResourceItem {
+  std::string key;  // "initial.N", "particles.histogram_bins", ... ("" for the process base)
+  std::string what;
+  double bytes = 0;
+  std::vector<std::string> factors = {};  // other keys the size grows with ("particles.samples")
+};
+
+struct ResourceEstimate {
+  std::vector<ResourceItem> items;
+  double total() const;
+  const ResourceItem& largest() const;
+};
+
+// Peak memory of a run of scene (a sweep: its largest variant, with every
+// variant's initial condition, which a sweep builds up front).
+ResourceEstimate estimate_memory(const Scene& scene);
+// Bytes the run directory will hold (a sweep: every variant and its own files);
+// plots: whether the run draws them (--no-plots).
+ResourceEstimate estimate_disk(const Scene& scene, bool plots);
+
+// The memory this process may still use, and where that limit comes from.
+struct MemoryLimit {
+  double bytes = 0;
+  std::string source;  // "MemAvailable in /proc/meminfo", "the cgroup's memory.max", "ulimit -v", ...
+};
+// The smallest of: the system's available memory, the limit of the process's
+// cgroup (v2 memory.max, v1 memory.limit_in_bytes) less its usage, and the
+// address-space and data limits (ulimit) less what is in use. root: where /proc
+// and /sys are found (tests give a tree of their own).
+MemoryLimit memory_limit(const std::filesystem::path& root = "/");
+
+// Refuses a scene that does not fit: InputError located at the scene's key
+// (memory) or naming --out (disk: the file system that will hold the results).
+void check_resources(const Scene& scene, const std::filesystem::path& out, bool plots);
+
+// x, v, m of one body in memory.
+inline constexpr double kBodyBytes = 24;
+
+// Refuses work whose estimate exceeds the memory this process may still use:
+// throws refusal(allowed), allowed = "WHAT that fits in the memory available:
+// it needs about ... (its largest item), ... available (where the limit comes from)".
+void require_memory(const ResourceEstimate& memory, const std::string& what,
+                    const std::function<InputError(const std::string& allowed)>& refusal);
+
+// The memory half of check_resources, for work that writes no directory (the
+// Python module's calls, which would otherwise end in the kernel's
+// out-of-memory killer).
+void check_memory(const Scene& scene);
+
+}  // namespace shockgas::app

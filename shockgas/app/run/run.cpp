@@ -1,0 +1,182 @@
+// Running a scene: the initial condition built once, every part the scene asks
+// for in order (particles, continuum, comparison), each written as soon as it is
+// done, then summary.json, report.md, the plots and the manifest, all into the
+// staging directory that replaces the output directory at the end.
+#include "shockgas/app/run/run_internal.hpp"
+
+#include <filesystem>
+
+#include "shockgas/app/files/durable_file.hpp"
+#include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/report/plots.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
+#include "shockgas/app/report/report.hpp"
+#include "shockgas/app/report/report_html.hpp"
+#include "shockgas/app/run/resources.hpp"
+#include "shockgas/app/directory/run_directory.hpp"
+#include "shockgas/app/directory/run_target.hpp"
+#include "shockgas/continuum/registry.hpp"
+#include "shockgas/core/error.hpp"
+#include "shockgas/core/interrupt.hpp"
+
+namespace shockgas::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The records written with the particles' part (snapshots, space-time) are not
+// needed later: only the final state (for the comparison) and the series stay.
+void release_records(ParticleResults& p) {
+  p.ensemble.first.snapshots = {};
+  p.ensemble.first.spacetime = {};
+  p.states = nullptr;
+}
+
+VariantResult reduce(const RunResults& r, nlohmann::ordered_json summary) {
+  VariantResult v;
+  v.summary = std::move(summary);
+  if (r.particles) {
+    v.t = r.particles->ensemble.t;
+    v.T = r.particles->ensemble.T.mean;
+    v.T_stderr = r.particles->ensemble.T.stderr_;
+    v.histogram = r.particles->histogram;
+    v.histogram_exact = r.particles->histogram_exact;
+    if (r.particles->exact) v.temperature_amplitude_exact = r.particles->exact->temperature_amplitude;
+  }
+  return v;
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text;
+}
+
+}  // namespace
+
+// An input error located where the scene set its key (a file line or a --set);
+// errors that carry their own place (a line of a bodies file) keep it.
+InputError located(const InputError& e, const Scene& scene) {
+  if (!e.where().empty()) return e;
+  const auto it = scene.key_origin.find(e.key());
+  return e.located(it != scene.key_origin.end() ? it->second : scene.path);
+}
+
+void draw_plots(const fs::path& dir, bool animation, ProgressBar& progress, const std::string& within) {
+  const auto draw = [&](const char* what, std::string (*script)(const std::string&, const std::string&)) {
+    progress.phase(what);
+    const std::string said = script(dir.string(), within);
+    progress.end_phase();
+    progress.say(said);
+  };
+  draw("plots", make_plots);
+  if (animation) draw("animation", make_animation);
+}
+
+// Only the continuum needs realization 0's bodies whole (its deposit); the
+// particles and the writers draw them in chunks.
+InitialCondition build_initial(const Scene& scene) {
+  using Keep = InitialCondition::Keep;
+  try {
+    return InitialCondition(scene.initial, scene.has_continuum ? Keep::bodies : Keep::stream);
+  } catch (const InputError& e) {
+    throw located(e, scene);
+  }
+}
+
+// Every solver's own limits (CFL bound, cells against nu, ...) are checked by its
+// registered preflight, without solving, and the particle engine checks a
+// requested schedule against the initial bodies, so that bad input stops the
+// run before any work and before anything is written.
+void preflight(const Scene& scene, const InitialCondition& initial) {
+  try {
+    if (scene.has_particles && scene.particles.solver == particles::ParticleSolver::events &&
+        scene.particles.schedule == particles::Schedule::windows)
+      particles::check_schedule(initial, scene.particles);
+    if (!scene.has_continuum) return;
+    for (const auto& name : scene.continuum.solvers)
+      continuum::preflight(name, initial.field(), scene.continuum, scene.continuum_t_end());
+  } catch (const InputError& e) {
+    throw located(e, scene);
+  }
+}
+
+RunResults compute_parts(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+                         const PartSink& sink, const EnsembleSource& source) {
+  RunResults r;
+  r.scene = &scene;
+  r.initial = &initial;
+  sink(r, Part::provenance);
+  sink(r, Part::initial);
+  if (scene.has_particles) {
+    r.particles = run_particles(scene, initial, progress, source);
+    sink(r, Part::particles);
+    sink(r, Part::analysis);
+    release_records(*r.particles);
+  }
+  if (scene.has_continuum) {
+    progress.phase("continuum: solving " + listed(scene.continuum.solvers));
+    r.continuum = run_continuum(scene, initial, progress);
+    sink(r, Part::continuum);
+  }
+  if (scene.has_compare && scene.has_continuum) {
+    progress.phase("comparison: clusters against the shocks of " + scene.compare.solver);
+    r.comparison = run_comparison(scene, initial, *r.particles, r.continuum);
+    sink(r, Part::compare);
+  }
+  if (scene.output.animation) {
+    progress.phase("frames: " + std::to_string(scene.output.animation_frames) + " for the animation");
+    r.frames = run_frames(scene, initial, r.particles ? r.particles->frames : std::vector<particles::Snapshot>{},
+                          progress);
+    sink(r, Part::animation);
+  }
+  progress.finish();
+  return r;
+}
+
+VariantResult run_single(const Scene& scene, const InitialCondition& initial, const fs::path& dir,
+                         const RunOptions& options, const PartSink& also, const EnsembleSource& source) {
+  nlohmann::ordered_json summary;
+  ProgressBar progress(options.progress, options.on_progress);
+  const auto variant = scene.name.find('/');  // a sweep's variant: "<scene>/<label>"
+  if (variant != std::string::npos) progress.name_phases(scene.name.substr(variant + 1));
+  RunResults r;
+  {
+    Hdf5File h5 = Hdf5File::create((dir / "result.h5").string());
+    r = compute_parts(scene, initial, progress, [&](const RunResults& partial, Part part) {
+      write_part(h5, partial, part);
+      summarize_part(summary, partial, part);
+      if (also) also(partial, part);
+      throw_if_aborted();
+    }, source);
+    progress.phase("writing result.h5, summary.json, report.md");
+    h5.close();
+  }
+  write_file(dir / "summary.json", summary.dump(2) + "\n");
+  write_file(dir / "report.md", report_text(r));
+  if (options.plots && scene.output.plots)
+    draw_plots(dir, scene.output.animation, progress,
+               variant != std::string::npos ? dir.filename().string() : "");
+  progress.phase("writing report.html, manifest.json");
+  write_report_html(dir);
+  write_manifest(dir, scene.name);
+  return reduce(r, std::move(summary));
+}
+
+std::string into_run_directory(const fs::path& out, const Scene& scene, const RunOptions& options,
+                               const std::function<void(const fs::path& staging)>& write) {
+  RunDirectory dir(out, scene.name, options.force);
+  try {
+    write(dir.staging());
+  } catch (const InputError& e) {  // a rule checked where the work starts (the engine's own)
+    throw located(e, scene);
+  }
+  ProgressBar progress(options.progress);
+  progress.phase("syncing, moving into " + out.string());
+  dir.commit();
+  return out.string();
+}
+
+}  // namespace shockgas::app

@@ -1,0 +1,91 @@
+// Stage 1: the particle gas (an ensemble of event-driven or exact-hull runs from
+// the scene's initial condition), and what it shows alone: the cooling law and
+// the scaled velocity distribution (shockgas/compare/particle_analysis.hpp), with the
+// exact laws of a white-noise start beside them (shockgas/compare/white_noise_references.hpp).
+// An animation adds its frame times to realization 0's snapshots (frames.hpp).
+#include <algorithm>
+
+#include "shockgas/app/output/frames.hpp"
+#include "shockgas/core/interrupt.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
+#include "shockgas/core/cores.hpp"
+#include "shockgas/app/output/run_results.hpp"
+#include "shockgas/compare/cluster_velocity_law.hpp"
+#include "shockgas/compare/heaviest.hpp"
+#include "shockgas/compare/snapshot_comparison.hpp"
+#include "shockgas/app/records/state_file.hpp"
+
+namespace shockgas::app {
+
+namespace {
+
+bool contains(const std::vector<double>& times, double t) {
+  return std::find(times.begin(), times.end(), t) != times.end();
+}
+
+// The snapshots at frame times go to r.frames; the scene's own stay.
+void split_frames(ParticleResults& r, const Scene& scene, const std::vector<double>& frames) {
+  auto& snaps = r.ensemble.first.snapshots;
+  std::vector<particles::Snapshot> own;
+  for (auto& s : snaps) {
+    if (contains(frames, s.t)) r.frames.push_back(s);
+    if (contains(scene.particles.snapshots, s.t)) own.push_back(std::move(s));
+  }
+  snaps = std::move(own);
+}
+
+// The heaviest cluster of realization 0's final state, streamed: the clusters
+// are not collected (40 bytes each, up to one per body), and a state kept
+// apart is read from its file in chunks.
+std::optional<particles::Cluster> heaviest_cluster(const ParticleResults& r, const Scene& s,
+                                                   const InitialCondition& initial) {
+  const auto& end = r.ensemble.first;
+  const double spacing = initial.length() / static_cast<double>(s.initial.N);
+  const auto criteria =
+      compare::snapshot_params(s.compare, s.particles.r, s.particles.delta, spacing, end.stop.time).clusters;
+  const double L = s.particles.geometry == particles::Geometry::ring ? initial.length() : 0.0;
+  if (r.states) return compare::heaviest_cluster(r.states->final_state(), L, criteria);
+  return compare::heaviest_cluster(particles::BodiesReader(end.final_state), L, criteria);
+}
+
+}  // namespace
+
+ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+                              const EnsembleSource& source) {
+  ParticleResults r;
+  // A phase of progress, until compute_parts starts the next one.
+  const char* analysis = "particles: analysis, writing result.h5";
+  if (source) {
+    progress.phase(analysis);
+    ComputedEnsemble computed = source(scene);
+    r.ensemble = std::move(computed.ensemble);
+    r.parallel = computed.parallel;
+    r.states = std::move(computed.states);
+  } else {
+    progress.stage("particles");
+    r.ensemble = particles::run_ensemble(initial, particle_params(scene), progress.callback());
+    progress.finish();
+    progress.phase(analysis);
+    r.parallel.threads = resolved_threads(scene.particles.threads);
+  }
+  // Stopped at a safe point on a checkpoint request: nothing is written (no
+  // checkpoint is kept yet), the run ends as interrupted.
+  for (const particles::RunStop& stop : r.ensemble.stops)
+    if (stop.reason == particles::StopReason::interrupted) throw Interrupted(interrupt_signal());
+  if (scene.output.animation) split_frames(r, scene, frame_times(scene));
+  r.heaviest = heaviest_cluster(r, scene, initial);
+  const auto& h = r.ensemble.first.histogram;
+  if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
+  r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r,
+                                       scene.particles.t_end, scene.compare.fit_window);
+  r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
+  r.exact = compare::white_noise_references(scene.initial);
+  if (r.exact && r.histogram.bins > 0)
+    r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
+  r.errors = compare::jackknife_analysis(r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r,
+                                         scene.particles.t_end, scene.compare.fit_window, r.histogram,
+                                         r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
+  return r;
+}
+
+}  // namespace shockgas::app

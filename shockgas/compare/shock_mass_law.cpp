@@ -1,0 +1,84 @@
+#include "shockgas/compare/shock_mass_law.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shockgas/compare/gauss_legendre.hpp"
+#include "shockgas/compare/chernoff_table.hpp"
+#include "shockgas/compare/cluster_velocity_law.hpp"
+#include "shockgas/core/error.hpp"
+
+namespace shockgas::compare {
+
+namespace {
+
+const double kCbrt2 = std::cbrt(2.0);
+// (g * g)(mu): the integrand is even in u, and beyond u = 6 it is below
+// g(mu/2 + u) sup g < g(6) sup g ~ e^-140 (g(x) ~ 4x exp(-2x^3/3)), while
+// (g * g)(mu) itself is about exp(-mu^3/6) (its value at u = 0): negligible
+// for the mu <= kMuMax where the law is evaluated.
+constexpr double kUMax = 6.0, kUPanel = 0.1;
+// Beyond mu = 12, N(mu) < exp(-12^3 / 6) = e^-288 of its scale: taken as 0.
+constexpr double kMuMax = 12.0;
+// In v = sqrt(mu) the bins' integrand 2 v N(v^2) is smooth: panels of at most 0.05.
+constexpr double kVPanel = 0.05;
+
+const GaussRule& rule8() {
+  static const GaussRule rule = gauss_legendre(8);
+  return rule;
+}
+
+double self_convolution(double mu) {
+  const ChernoffLogGTable& g = chernoff_log_g_table();
+  const GaussRule& r = rule8();
+  const int panels = static_cast<int>(std::ceil(kUMax / kUPanel));
+  double sum = 0;
+  for (int p = 0; p < panels; ++p)
+    for (std::size_t i = 0; i < r.x.size(); ++i) {
+      const double u = kUPanel * (p + 0.5 + 0.5 * r.x[i]);
+      sum += 0.5 * kUPanel * r.w[i] * std::exp(g.log_g(0.5 * mu + u) + g.log_g(0.5 * mu - u));
+    }
+  return 2 * sum;
+}
+
+}  // namespace
+
+double shock_mass_density(double mu) {
+  require_above("compare.shock_mass", mu, 0.0);
+  return 2 * mu * airy_zero_exponential_sum(kCbrt2 * mu) * self_convolution(mu);
+}
+
+double shock_mass_integral(double mu1, double mu2) {
+  require(mu1 >= 0 && mu2 >= mu1 && std::isfinite(mu2), "compare.shock_mass_range", mu2,
+          "finite, >= the lower end (" + std::to_string(mu1) + ") >= 0");
+  const double v1 = std::sqrt(std::min(mu1, kMuMax)), v2 = std::sqrt(std::min(mu2, kMuMax));
+  if (v2 <= v1) return 0.0;
+  const int panels = std::max(1, static_cast<int>(std::ceil((v2 - v1) / kVPanel)));
+  const double width = (v2 - v1) / panels;
+  const GaussRule& r = rule8();
+  double sum = 0;
+  for (int p = 0; p < panels; ++p)
+    for (std::size_t i = 0; i < r.x.size(); ++i) {
+      const double v = v1 + width * (p + 0.5 + 0.5 * r.x[i]);
+      sum += 0.5 * width * r.w[i] * 2 * v * shock_mass_density(v * v);
+    }
+  return sum;
+}
+
+std::vector<double> expected_shocks_in_mass_bins(std::span<const double> mass_edges, double D, double L,
+                                                 double rho, double t) {
+  require(mass_edges.size() >= 2 && mass_edges.front() >= 0, "compare.mass_edges", mass_edges.size(),
+          ">= 2 edges from >= 0");
+  for (const auto& [name, value] :
+       {std::pair{"compare.D", D}, {"compare.length", L}, {"compare.density", rho}, {"compare.t", t}})
+    require_above(name, value, 0.0);
+  const double a = std::cbrt(4 * D * t * t), mass_unit = rho * a;
+  std::vector<double> count;
+  for (std::size_t j = 0; j + 1 < mass_edges.size(); ++j) {
+    require(mass_edges[j + 1] > mass_edges[j], "compare.mass_edges", mass_edges[j + 1], "increasing edges");
+    count.push_back(L / a * shock_mass_integral(mass_edges[j] / mass_unit, mass_edges[j + 1] / mass_unit));
+  }
+  return count;
+}
+
+}  // namespace shockgas::compare

@@ -1,0 +1,76 @@
+#pragma once
+// Scene table [particles]: the physics of the gas, how it is solved and what to observe.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "shockgas/core/parameters.hpp"
+#include "shockgas/particles/collision.hpp"
+
+namespace shockgas::particles {
+
+// What a sub-threshold collision does (shockgas/particles/collision.hpp).
+enum class Subthreshold { elastic, sticky };
+constexpr std::array<EnumName<Subthreshold>, 2> enum_names(Subthreshold) {
+  return {{{Subthreshold::elastic, "elastic"}, {Subthreshold::sticky, "sticky"}}};
+}
+
+enum class Geometry { ring, line };
+constexpr std::array<EnumName<Geometry>, 2> enum_names(Geometry) {
+  return {{{Geometry::ring, "ring"}, {Geometry::line, "line"}}};
+}
+
+// How the gas is solved: events = the event-driven engine; hull = the exact
+// sticky solution by the lower convex hull (r = 0 only). simulate.hpp.
+enum class ParticleSolver { events, hull };
+constexpr std::array<EnumName<ParticleSolver>, 2> enum_names(ParticleSolver) {
+  return {{{ParticleSolver::events, "events"}, {ParticleSolver::hull, "hull"}}};
+}
+
+// Event order of the engine (shockgas/particles/window_scheduler.hpp): automatic = time
+// windows where they apply, else the global queue.
+enum class Schedule { automatic, windows, global };
+constexpr std::array<EnumName<Schedule>, 3> enum_names(Schedule) {
+  return {{{Schedule::automatic, "auto"}, {Schedule::windows, "windows"}, {Schedule::global, "global"}}};
+}
+
+// Collisions between two safe points of the global queue, where the limits
+// (max_collisions, max_wall_seconds), the saves and inelastic collapse are
+// looked at (event_engine.hpp).
+inline constexpr std::uint64_t kGlobalQueueCheckEvery = 1u << 14;
+
+// Unit, allowed range and meaning of every member: parameters() (shockgas/particles/params.cpp).
+struct ParticleParams {
+  double r = 0.9;       // 0 = aggregation (every collision merges)
+  double delta = 1e-2;  // 0 = no threshold
+  Subthreshold subthreshold = Subthreshold::elastic;
+  Geometry geometry = Geometry::ring;
+  ParticleSolver solver = ParticleSolver::events;
+  Schedule schedule = Schedule::automatic;
+  double t_end = 1000.0;
+  std::size_t samples = 40;  // log-spaced in [1, t_end]
+  std::size_t realizations = 1;
+  std::size_t threads = 0;  // 0 = all cores
+  std::vector<double> snapshots = {};
+  bool spacetime = false;
+  std::size_t histogram_bins = 0;  // 0 = no histogram
+  double histogram_zmax = 4.0;
+  std::size_t spacetime_frames = 200;
+  bool clusters = true;
+  std::uint64_t max_collisions = 0;  // 0 = no limit (checked at safe points: kGlobalQueueCheckEvery)
+  double max_wall_seconds = 0.0;     // 0 = no limit
+};
+
+// The declarations of [particles]: key, unit, allowed values, doc.
+const ParameterTable<ParticleParams>& parameters();
+
+// Throws InputError naming the first key out of range: the declared rules, then
+// the rules between keys (hull only with r = 0 and without the engine's limits, snapshots
+// within t_end).
+void validate(const ParticleParams& p);
+
+// The collision rule of these parameters: r, delta and the sub-threshold kind.
+CollisionRule collision_rule(const ParticleParams& p);
+
+}  // namespace shockgas::particles
