@@ -29,7 +29,9 @@ constexpr std::size_t kCells = 100000;
 constexpr double kCfl = 0.5;
 constexpr double kDx = 1.0 / kCells;
 
-double initial_velocity(std::size_t i) { return 0.5 + std::sin(2 * M_PI * (static_cast<double>(i) + 0.5) * kDx); }
+double initial_velocity(std::size_t i) {
+  return 0.5 + std::sin(2 * M_PI * (static_cast<double>(i) + 0.5) * kDx);
+}
 
 void BM_GodunovGeneric(benchmark::State& state) {
   std::vector<BurgersContinuity::State> cells(kCells);

@@ -91,7 +91,8 @@ std::size_t textbook_hull(const shockgas::Bodies& b, double t) {
   p[0] = {0, 0};
   for (std::size_t k = 0; k < b.size(); ++k)
     p[k + 1] = {p[k].x + b.m[k], p[k].y + b.m[k] * (b.x[k] + t * b.v[k])};
-  std::sort(p.begin(), p.end(), [](const P& a, const P& c) { return a.x < c.x || (a.x == c.x && a.y < c.y); });
+  std::sort(p.begin(), p.end(),
+            [](const P& a, const P& c) { return a.x < c.x || (a.x == c.x && a.y < c.y); });
   std::vector<P> h;
   for (const P& q : p) {
     while (h.size() >= 2) {
@@ -164,7 +165,12 @@ BENCHMARK(BM_StickyLine)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchma
 BENCHMARK(BM_StickyRing)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_HopfLaxBodies)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TextbookHull)->Arg(1000000)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_HopfLaxField)->Arg(16384)->Arg(100000)->Arg(1000000)->Arg(10000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HopfLaxField)
+    ->Arg(16384)
+    ->Arg(100000)
+    ->Arg(1000000)
+    ->Arg(10000000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BruteForceHopfLax)->Arg(16384)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {

@@ -34,9 +34,9 @@
 #include <tuple>
 
 #include "csv_main.hpp"
-#include "shockgas/particles/recorder.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/sticky_hull.hpp"
+#include "shockgas/particles/recorder.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 namespace {

@@ -38,7 +38,8 @@ class TempPathRegistry {
   // singleton, so it is destroyed before it and may still ask for the verdict.
   ~TempPathRegistry() {
     const char* keep = std::getenv("SHOCKGAS_KEEP_TEST_FILES");
-    if ((keep != nullptr && std::string(keep) == "1") || !::testing::UnitTest::GetInstance()->Passed()) return;
+    if ((keep != nullptr && std::string(keep) == "1") || !::testing::UnitTest::GetInstance()->Passed())
+      return;
     for (const auto& path : paths_) {
       std::error_code ignored;  // a path a test never created, or a mount point: leave it
       std::filesystem::remove_all(path, ignored);

@@ -10,15 +10,15 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "shockgas/app/run/captured_outputs.hpp"
-#include "shockgas/app/files/file_problem.hpp"
 #include "interruptible.hpp"
 #include "keywords.hpp"
+#include "shockgas/app/files/file_problem.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/jobs/run_scene.hpp"
+#include "shockgas/app/run/captured_outputs.hpp"
 #include "shockgas/app/run/resources.hpp"
 #include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
-#include "shockgas/app/jobs/run_scene.hpp"
 
 namespace shockgas::python {
 
@@ -107,7 +107,8 @@ app::CapturedOutputs capture_single(const app::Scene& scene, const std::string& 
     app::compute_parts(scene, initial, bar, app::capture_into(captured));
   } else {
     app::RunOptions options;
-    options.out_dir = out_dir, options.progress = false, options.plots = plots, options.on_progress = listener;
+    options.out_dir = out_dir, options.progress = false, options.plots = plots,
+    options.on_progress = listener;
     app::into_run_directory(out_dir, scene, options, [&](const std::filesystem::path& staging) {
       app::run_single(scene, initial, staging, options, app::capture_into(captured));
     });

@@ -26,8 +26,8 @@
 #include <limits>
 #include <numbers>
 
-#include "shockgas/compare/gauss_legendre.hpp"
 #include "shockgas/compare/airy.hpp"
+#include "shockgas/compare/gauss_legendre.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {

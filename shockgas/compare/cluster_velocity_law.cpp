@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 
-#include "shockgas/compare/gauss_legendre.hpp"
 #include "shockgas/compare/airy.hpp"
 #include "shockgas/compare/chernoff_table.hpp"
 #include "shockgas/compare/eulerian_velocity_law.hpp"
+#include "shockgas/compare/gauss_legendre.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {

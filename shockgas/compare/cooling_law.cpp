@@ -5,8 +5,8 @@
 #include <limits>
 #include <span>
 
-#include "shockgas/compare/theory.hpp"
 #include "shockgas/compare/statistics.hpp"
+#include "shockgas/compare/theory.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {
@@ -16,7 +16,8 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void validate_series(const std::vector<double>& t, const std::vector<double>& T) {
-  require(t.size() == T.size(), "compare.T", T.size(), "one value per time (" + std::to_string(t.size()) + ")");
+  require(t.size() == T.size(), "compare.T", T.size(),
+          "one value per time (" + std::to_string(t.size()) + ")");
   require(t.size() >= 2, "compare.t", t.size(), "at least 2 samples");
   for (std::size_t i = 0; i < t.size(); ++i) {
     require(std::isfinite(t[i]) && t[i] > 0, "compare.t", t[i], "finite, > 0");
@@ -41,7 +42,8 @@ std::vector<double> centered_differences(const std::vector<double>& lt, const st
   return alpha;
 }
 
-std::vector<double> windowed_slopes(const std::vector<double>& lt, const std::vector<double>& lT, double half) {
+std::vector<double> windowed_slopes(const std::vector<double>& lt, const std::vector<double>& lT,
+                                    double half) {
   const double half_ln = half * std::log(10.0);
   const std::size_t n = lt.size();
   std::vector<double> alpha(n);
@@ -75,7 +77,8 @@ std::vector<double> local_exponents(const std::vector<double>& t, const std::vec
   require(std::isfinite(half_window_decades) && half_window_decades >= 0, "compare.half_window_decades",
           half_window_decades, ">= 0");
   const auto lt = logs(t), lT = logs(T);
-  return half_window_decades > 0 ? windowed_slopes(lt, lT, half_window_decades) : centered_differences(lt, lT);
+  return half_window_decades > 0 ? windowed_slopes(lt, lT, half_window_decades)
+                                 : centered_differences(lt, lT);
 }
 
 PowerLawFit fit_power_law(const std::vector<double>& t, const std::vector<double>& T, double t_min,

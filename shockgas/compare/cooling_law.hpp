@@ -37,10 +37,10 @@ std::vector<double> local_exponents(const std::vector<double>& t, const std::vec
 // T = prefactor * t^exponent fitted by least squares of ln T on ln t over the
 // samples with t_min <= t <= t_max (Eigen); exponent_error is the standard error.
 struct PowerLawFit {
-  double exponent = 0;        // [1]
-  double exponent_error = 0;  // [1]
-  double prefactor = 0;       // [T unit / time^exponent]
-  std::size_t points = 0;     // samples in the window
+  double exponent = 0;          // [1]
+  double exponent_error = 0;    // [1]
+  double prefactor = 0;         // [T unit / time^exponent]
+  std::size_t points = 0;       // samples in the window
   double t_min = 0, t_max = 0;  // the window [time]
 };
 // Throws InputError as local_exponents, or if fewer than 2 samples are in the window.
@@ -55,13 +55,13 @@ struct CrossoverParams {
 };
 
 struct Crossovers {
-  double t_dissip = 0;          // measured, NaN if not crossed [time]
-  double t_stick = 0;           // measured, NaN if not crossed [time]
-  double t_dissip_theory = 0;   // 1 / eps [time]
-  double t_stick_theory = 0;    // eps^(-3/2) [time]
-  double min_exponent = 0;      // the minimum of alpha [1]
-  double t_min_exponent = 0;    // where it is reached [time]
-  bool separated = false;       // min alpha <= stick_level: the cooling regime is visible
+  double t_dissip = 0;         // measured, NaN if not crossed [time]
+  double t_stick = 0;          // measured, NaN if not crossed [time]
+  double t_dissip_theory = 0;  // 1 / eps [time]
+  double t_stick_theory = 0;   // eps^(-3/2) [time]
+  double min_exponent = 0;     // the minimum of alpha [1]
+  double t_min_exponent = 0;   // where it is reached [time]
+  bool separated = false;      // min alpha <= stick_level: the cooling regime is visible
 };
 // r: the restitution coefficient (for the theory values).
 Crossovers find_crossovers(const std::vector<double>& t, const std::vector<double>& T, double r,

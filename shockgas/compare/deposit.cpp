@@ -36,8 +36,8 @@ void deposit_cloud_in_cell(GridFields& g, const Bodies& b, double dx) {
     const double s = wrap(b.x[i], g.length) / dx - 0.5;
     const double left = std::floor(s);
     const double f = s - left;
-    const std::size_t c0 = static_cast<std::size_t>((static_cast<long long>(left) + static_cast<long long>(n)) %
-                                                    static_cast<long long>(n));
+    const std::size_t c0 = static_cast<std::size_t>(
+        (static_cast<long long>(left) + static_cast<long long>(n)) % static_cast<long long>(n));
     add(g, c0, (1 - f) * b.m[i], b.v[i]);
     add(g, (c0 + 1) % n, f * b.m[i], b.v[i]);
   }

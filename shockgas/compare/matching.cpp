@@ -106,10 +106,10 @@ MatchResult match_shocks_to_clusters(const std::vector<continuum::Shock>& shocks
   require(std::isfinite(L) && L > 0, "compare.L", L, "> 0");
   require(std::isfinite(params.max_distance) && params.max_distance >= 0, "compare.match_distance",
           params.max_distance, "a finite number >= 0 (0 = automatic)");
-  require(std::isfinite(params.min_mass) && params.min_mass >= 0, "compare.min_cluster_particles", params.min_mass,
-          "a finite mass >= 0 (min_cluster_particles times the mean particle mass)");
-  const MatchParams used{params.max_distance > 0 ? params.max_distance : automatic_distance(shocks, L, params),
-                         params.min_mass};
+  require(std::isfinite(params.min_mass) && params.min_mass >= 0, "compare.min_cluster_particles",
+          params.min_mass, "a finite mass >= 0 (min_cluster_particles times the mean particle mass)");
+  const MatchParams used{
+      params.max_distance > 0 ? params.max_distance : automatic_distance(shocks, L, params), params.min_mass};
   std::vector<bool> shock_taken(shocks.size(), false), cluster_taken(clusters.size(), false);
   MatchResult r;
   r.max_distance = used.max_distance;
@@ -118,7 +118,8 @@ MatchResult match_shocks_to_clusters(const std::vector<continuum::Shock>& shocks
     shock_taken[c.shock] = cluster_taken[c.cluster] = true;
     const auto& s = shocks[c.shock];
     const auto& k = clusters[c.cluster];
-    r.pairs.push_back(MatchedPair{c.shock, c.cluster, periodic_displacement(s.x, k.x, L), k.m - s.mass, k.v - s.v});
+    r.pairs.push_back(
+        MatchedPair{c.shock, c.cluster, periodic_displacement(s.x, k.x, L), k.m - s.mass, k.v - s.v});
   }
   std::sort(r.pairs.begin(), r.pairs.end(), [](const auto& a, const auto& b) { return a.shock < b.shock; });
   summarise(r, shocks, clusters, params.min_mass);

@@ -29,27 +29,27 @@ struct MatchParams {
 };
 
 struct MatchedPair {
-  std::size_t shock = 0;        // index into the shock list
-  std::size_t cluster = 0;      // index into the cluster list
-  double position_error = 0;    // x_cluster - x_shock, periodic, in [-L/2, L/2) [length]
-  double mass_error = 0;        // m_cluster - mass_shock [mass]
-  double velocity_error = 0;    // v_cluster - v_shock [length/time]
+  std::size_t shock = 0;      // index into the shock list
+  std::size_t cluster = 0;    // index into the cluster list
+  double position_error = 0;  // x_cluster - x_shock, periodic, in [-L/2, L/2) [length]
+  double mass_error = 0;      // m_cluster - mass_shock [mass]
+  double velocity_error = 0;  // v_cluster - v_shock [length/time]
 };
 
 struct MatchResult {
-  std::vector<MatchedPair> pairs;                 // sorted by shock index
-  std::vector<std::size_t> unmatched_shocks;      // indices of eligible shocks without a cluster
-  std::vector<std::size_t> unmatched_clusters;    // indices of eligible clusters without a shock
-  std::size_t eligible_shocks = 0;                // shocks with mass >= min_mass
-  std::size_t eligible_clusters = 0;              // clusters with m >= min_mass
-  double cluster_mass = 0;                        // mass of eligible clusters [mass]
-  double matched_cluster_mass = 0;                // mass of matched clusters [mass]
-  double matched_mass_fraction = 0;               // matched_cluster_mass / cluster_mass (0 if none)
-  double max_position_error = 0;                  // max |position_error| over pairs [length]
-  double rms_position_error = 0;                  // root mean square over pairs [length]
-  double max_distance = 0;                        // the matching distance used [length]
-  double max_relative_mass_error = 0;             // max |mass_error| / m_cluster over pairs [1]
-  double rms_velocity_error = 0;                  // root mean square over pairs [length/time]
+  std::vector<MatchedPair> pairs;               // sorted by shock index
+  std::vector<std::size_t> unmatched_shocks;    // indices of eligible shocks without a cluster
+  std::vector<std::size_t> unmatched_clusters;  // indices of eligible clusters without a shock
+  std::size_t eligible_shocks = 0;              // shocks with mass >= min_mass
+  std::size_t eligible_clusters = 0;            // clusters with m >= min_mass
+  double cluster_mass = 0;                      // mass of eligible clusters [mass]
+  double matched_cluster_mass = 0;              // mass of matched clusters [mass]
+  double matched_mass_fraction = 0;             // matched_cluster_mass / cluster_mass (0 if none)
+  double max_position_error = 0;                // max |position_error| over pairs [length]
+  double rms_position_error = 0;                // root mean square over pairs [length]
+  double max_distance = 0;                      // the matching distance used [length]
+  double max_relative_mass_error = 0;           // max |mass_error| / m_cluster over pairs [1]
+  double rms_velocity_error = 0;                // root mean square over pairs [length/time]
 };
 
 // Throws InputError if L <= 0, max_distance < 0 or min_mass < 0.

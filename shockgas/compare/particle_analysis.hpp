@@ -35,8 +35,8 @@ struct ZHistogram {
   std::vector<double> density;
   double centre(std::size_t b) const;  // -zmax + (b + 1/2) (2 zmax / bins)
   std::vector<double> centres() const;
-  double width() const;                // the spacing of the centres
-  std::vector<double> edges() const;   // bins + 1 edges: centre(0) - width / 2 + b width
+  double width() const;               // the spacing of the centres
+  std::vector<double> edges() const;  // bins + 1 edges: centre(0) - width / 2 + b width
 };
 
 struct DistributionAnalysis {

@@ -48,7 +48,8 @@ std::vector<WindowExponent> jackknife_decade_windows(const std::vector<double>& 
   std::vector<WindowExponent> out;
   if (t.empty() || !(t.front() > 0)) return out;
   for (const double decades : {1.0, 2.0})
-    for (double k = std::ceil(std::log10(t.front()) - 1e-9); k + decades <= std::log10(t.back()) + 1e-9; k += 1) {
+    for (double k = std::ceil(std::log10(t.front()) - 1e-9); k + decades <= std::log10(t.back()) + 1e-9;
+         k += 1) {
       const double lo = std::pow(10.0, k), hi = std::pow(10.0, k + decades);
       const auto in = std::count_if(t.begin(), t.end(), [&](double x) { return x >= lo && x <= hi; });
       if (in >= 3) out.push_back({lo, hi, jackknife_T_exponent(t, T_rows, lo, hi)});

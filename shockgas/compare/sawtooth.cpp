@@ -55,8 +55,9 @@ SawtoothFit fit_sawtooth_between(const std::vector<double>& v, double length, do
     require(extents[k].left >= 0 && extents[k].left < length, "compare.extent.left", extents[k].left,
             "in [0, length)");
     require(extents[k].right >= extents[k].left, "compare.extent.right", extents[k].right, ">= left");
-    if (k > 0) require(extents[k].left >= extents[k - 1].right, "compare.extent.left", extents[k].left,
-                       "sorted, not overlapping the previous extent");
+    if (k > 0)
+      require(extents[k].left >= extents[k - 1].right, "compare.extent.left", extents[k].left,
+              "sorted, not overlapping the previous extent");
   }
 
   const double dx = length / static_cast<double>(v.size());
@@ -70,7 +71,8 @@ SawtoothFit fit_sawtooth_between(const std::vector<double>& v, double length, do
     const RampCells cells = ramp_cells(v, weights, dx, x_begin, x_end, margin);
     if (cells.x.size() < params.min_cells) continue;
     const LineFit line = fit_line(cells.x, cells.v, cells.w);
-    fit.ramps.push_back(RampFit{k, x_begin, x_end, cells.x.size(), line.slope, line.slope_error, line.slope * t});
+    fit.ramps.push_back(
+        RampFit{k, x_begin, x_end, cells.x.size(), line.slope, line.slope_error, line.slope * t});
     products.push_back(line.slope * t);
   }
   if (products.empty()) {

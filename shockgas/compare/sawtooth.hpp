@@ -32,8 +32,8 @@ struct RampFit {
 };
 
 struct SawtoothFit {
-  std::vector<RampFit> ramps;   // ramps with at least min_cells usable cells, in shock order
-  Quartiles slope_times_t;      // quartiles of slope * t over ramps; NaN if no ramp
+  std::vector<RampFit> ramps;  // ramps with at least min_cells usable cells, in shock order
+  Quartiles slope_times_t;     // quartiles of slope * t over ramps; NaN if no ramp
 };
 
 // v: cell averages on `v.size()` uniform cells of [0, length); t: time of the

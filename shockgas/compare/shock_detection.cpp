@@ -20,7 +20,9 @@ struct Grid {
   double length, dx;
   Index n;
   double v_at(Index i) const { return v[static_cast<std::size_t>(((i % n) + n) % n)]; }
-  double rho_at(Index i) const { return rho.empty() ? 0.0 : rho[static_cast<std::size_t>(((i % n) + n) % n)]; }
+  double rho_at(Index i) const {
+    return rho.empty() ? 0.0 : rho[static_cast<std::size_t>(((i % n) + n) % n)];
+  }
   double centre(Index i) const { return (static_cast<double>(i) + 0.5) * dx; }
   double drop(Index interface) const { return v_at(interface + 1) - v_at(interface); }
 };
@@ -76,7 +78,7 @@ double wrap(double x, double length) {
 // Shock of the compression region `run` (step 3 and 4 of the header); jump >= 0 if none.
 continuum::Shock shock_of_region(const Grid& g, Run run) {
   const Index c0 = run.first, c1 = run.first + run.count;  // cells of the region
-  const Index a = c0 - 1, b = c1 + 1;                        // ramp cells either side
+  const Index a = c0 - 1, b = c1 + 1;                      // ramp cells either side
   const double slope_left = std::max(0.0, (g.v_at(a) - g.v_at(a - 1)) / g.dx);
   const double slope_right = std::max(0.0, (g.v_at(b + 1) - g.v_at(b)) / g.dx);
   const double s = 0.5 * (slope_left + slope_right);

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shockgas/compare/gauss_legendre.hpp"
 #include "shockgas/compare/chernoff_table.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
+#include "shockgas/compare/gauss_legendre.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {

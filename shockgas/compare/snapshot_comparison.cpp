@@ -17,7 +17,8 @@ std::vector<double> eligible_shock_positions(const std::vector<continuum::Shock>
 // [first body, last body] of each eligible cluster (the last unrolled by +L if
 // the cluster wraps), in order of position.
 std::vector<Extent> eligible_cluster_extents(const Bodies& state, double L,
-                                             const std::vector<particles::Cluster>& clusters, double min_mass) {
+                                             const std::vector<particles::Cluster>& clusters,
+                                             double min_mass) {
   const std::size_t n = state.size();
   std::vector<Extent> extents;
   for (const auto& c : clusters) {
@@ -40,19 +41,22 @@ std::vector<double> occupied(const std::vector<double>& mass_or_density) {
 
 }  // namespace
 
-SnapshotParams snapshot_params(const CompareParams& c, double r, double delta, double mean_spacing, double t) {
+SnapshotParams snapshot_params(const CompareParams& c, double r, double delta, double mean_spacing,
+                               double t) {
   SnapshotParams p;
-  p.clusters = r == 0 ? particles::merged_bodies_criteria() : particles::default_cluster_criteria(delta, mean_spacing, t);
+  p.clusters = r == 0 ? particles::merged_bodies_criteria()
+                      : particles::default_cluster_criteria(delta, mean_spacing, t);
   if (c.cluster_gap > 0) p.clusters.max_gap = c.cluster_gap;
   if (c.cluster_dv > 0) p.clusters.max_dv = c.cluster_dv;
   p.match_distance = c.match_distance;
-  p.min_cluster_particles = c.min_cluster_particles > 0 ? c.min_cluster_particles : automatic_min_cluster_particles(t);
+  p.min_cluster_particles =
+      c.min_cluster_particles > 0 ? c.min_cluster_particles : automatic_min_cluster_particles(t);
   p.deposit = c.deposit;
   return p;
 }
 
-SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N, const continuum::ContinuumResult& field,
-                                    const SnapshotParams& params) {
+SnapshotComparison compare_snapshot(const Bodies& state, std::size_t N,
+                                    const continuum::ContinuumResult& field, const SnapshotParams& params) {
   require(N > 0, "initial.N", N, ">= 1");
   require(!field.v.empty(), "compare.cells", field.v.size(), ">= 1");
   require(field.t > 0, "compare.t", field.t, "> 0");

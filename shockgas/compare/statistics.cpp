@@ -23,7 +23,8 @@ Quartiles quartiles(const std::vector<double>& values) {
 }
 
 LineFit fit_line(std::span<const double> x, std::span<const double> y, std::span<const double> weights) {
-  require(x.size() == y.size(), "fit_line.y", y.size(), "as many values as x (" + std::to_string(x.size()) + ")");
+  require(x.size() == y.size(), "fit_line.y", y.size(),
+          "as many values as x (" + std::to_string(x.size()) + ")");
   require(weights.empty() || weights.size() == x.size(), "fit_line.weights", weights.size(),
           "empty or as many as x");
   std::vector<std::size_t> used;

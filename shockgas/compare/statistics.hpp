@@ -36,7 +36,6 @@ struct LineFit {
 
 // weights empty = all 1. Throws InputError if sizes differ, a weight is
 // negative, fewer than 2 points have w > 0 or the x of those are all equal.
-LineFit fit_line(std::span<const double> x, std::span<const double> y,
-                 std::span<const double> weights = {});
+LineFit fit_line(std::span<const double> x, std::span<const double> y, std::span<const double> weights = {});
 
 }  // namespace shockgas::compare

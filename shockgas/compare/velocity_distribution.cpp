@@ -150,7 +150,8 @@ ScaledDistribution mean_distribution(const std::vector<ScaledDistribution>& d) {
 double standard_deviation(const ScaledDistribution& d) {
   double w = 0, m1 = 0, m2 = 0;
   for (std::size_t b = 0; b + 1 < d.z_edges.size(); ++b) {
-    const double z = 0.5 * (d.z_edges[b] + d.z_edges[b + 1]), p = d.density[b] * (d.z_edges[b + 1] - d.z_edges[b]);
+    const double z = 0.5 * (d.z_edges[b] + d.z_edges[b + 1]),
+                 p = d.density[b] * (d.z_edges[b + 1] - d.z_edges[b]);
     w += p;
     m1 += p * z;
     m2 += p * z * z;
@@ -206,8 +207,7 @@ TailFit fit_tail_exponent(std::span<const double> z, std::span<const double> phi
   fit.at_bound = fit.exponent - a_min < resolution || a_max - fit.exponent < resolution;
   if (!fit.at_bound && fit.points > 3 && rss > 0) {
     const double h = 1e-3 * std::max(1.0, fit.exponent);
-    const double curvature =
-        (rss_at(p, fit.exponent + h) - 2 * rss + rss_at(p, fit.exponent - h)) / (h * h);
+    const double curvature = (rss_at(p, fit.exponent + h) - 2 * rss + rss_at(p, fit.exponent - h)) / (h * h);
     const double sigma2 = rss / static_cast<double>(fit.points - 3);
     if (curvature > 0) fit.exponent_error = std::sqrt(2 * sigma2 / curvature);
   }

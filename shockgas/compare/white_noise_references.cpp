@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "shockgas/compare/gauss_legendre.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
 #include "shockgas/compare/eulerian_velocity_law.hpp"
+#include "shockgas/compare/gauss_legendre.hpp"
 
 namespace shockgas::compare {
 

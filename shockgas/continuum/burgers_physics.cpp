@@ -53,8 +53,8 @@ double velocity_antiderivative(const BurgersRiemannProblem& p, double x, double 
 
 }  // namespace
 
-std::vector<double> exact_velocity_averages(const BurgersRiemannProblem& p, double length,
-                                            std::size_t cells, double t) {
+std::vector<double> exact_velocity_averages(const BurgersRiemannProblem& p, double length, std::size_t cells,
+                                            double t) {
   assert(cells > 0 && length > 0);
   std::vector<double> v(cells);
   const double dx = length / static_cast<double>(cells);

@@ -36,8 +36,8 @@ enum class RiemannSide {
 };
 
 struct BurgersRiemannSample {
-  double v = 0;                         // velocity at xi [length/time]
-  RiemannSide side = RiemannSide::left; // where the density comes from
+  double v = 0;                          // velocity at xi [length/time]
+  RiemannSide side = RiemannSide::left;  // where the density comes from
 };
 
 // Burgers flux f(v) = v^2 / 2.
@@ -113,7 +113,7 @@ double exact_shock_position(const BurgersRiemannProblem& p, double t);
 double exact_shock_mass(const BurgersRiemannProblem& p, double t);
 // Exact cell averages of v on `cells` cells of [0, length) (no periodic wrap),
 // from the antiderivative of the piecewise-linear solution.
-std::vector<double> exact_velocity_averages(const BurgersRiemannProblem& p, double length,
-                                            std::size_t cells, double t);
+std::vector<double> exact_velocity_averages(const BurgersRiemannProblem& p, double length, std::size_t cells,
+                                            double t);
 
 }  // namespace shockgas::continuum

@@ -28,11 +28,11 @@ struct ExplicitViscousParams {
 };
 
 struct ExplicitViscousResult {
-  std::vector<double> v;      // cell averages after the steps taken [length/time]
-  std::size_t steps = 0;      // steps taken (fewer than asked if it blew up)
-  bool blew_up = false;       // max|v| passed blow_up_factor * max|v0| (or turned non-finite)
-  double max_abs_v = 0;       // max|v| at the end [length/time]
-  double total_variation = 0; // sum |v_{i+1} - v_i| at the end (periodic) [length/time]
+  std::vector<double> v;       // cell averages after the steps taken [length/time]
+  std::size_t steps = 0;       // steps taken (fewer than asked if it blew up)
+  bool blew_up = false;        // max|v| passed blow_up_factor * max|v0| (or turned non-finite)
+  double max_abs_v = 0;        // max|v| at the end [length/time]
+  double total_variation = 0;  // sum |v_{i+1} - v_i| at the end (periodic) [length/time]
 };
 
 // Periodic grid of v0.size() cells of width h on [0, h v0.size()).

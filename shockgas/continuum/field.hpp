@@ -22,17 +22,17 @@ struct Shock {
 
 // Fields at time t on a uniform grid of cells [i dx, (i+1) dx).
 struct ContinuumResult {
-  std::string solver;            // the registered name (registry.hpp)
-  double t = 0;                  // time of the fields [time]
-  double length = 1;             // domain length [length]
-  std::vector<double> x;         // cell centres [length]
-  std::vector<double> v;         // cell averages of the velocity [length/time]
-  std::vector<double> rho;       // cell averages of the density [mass/length]
-  bool has_shocks = false;       // whether the solver knows its shocks
-  std::vector<Shock> shocks;     // sorted by x
-  std::string method_note;       // which path ran and why (e.g. Hopf-Cole FFT vs log-domain)
+  std::string solver;                   // the registered name (registry.hpp)
+  double t = 0;                         // time of the fields [time]
+  double length = 1;                    // domain length [length]
+  std::vector<double> x;                // cell centres [length]
+  std::vector<double> v;                // cell averages of the velocity [length/time]
+  std::vector<double> rho;              // cell averages of the density [mass/length]
+  bool has_shocks = false;              // whether the solver knows its shocks
+  std::vector<Shock> shocks;            // sorted by x
+  std::string method_note;              // which path ran and why (e.g. Hopf-Cole FFT vs log-domain)
   std::map<std::string, double> stats;  // solver counters: steps, rhs evaluations, ...
-  double wall_seconds = 0;       // filled by the caller
+  double wall_seconds = 0;              // filled by the caller
 };
 
 // Cell centres (i + 1/2) dx of `cells` cells on [0, length).

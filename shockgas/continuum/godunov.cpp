@@ -62,9 +62,8 @@ SolverInfo registration(int order) {
   s.preflight = [order](const InitialField& f, const ContinuumParams& p, double t_end) {
     check_input(f, p, t_end, order);
   };
-  s.run = [order](const InitialField& f, const ContinuumParams& p, double t_end, const ProgressCallback& progress) {
-    return solve_godunov(f, p, t_end, order, progress);
-  };
+  s.run = [order](const InitialField& f, const ContinuumParams& p, double t_end,
+                  const ProgressCallback& progress) { return solve_godunov(f, p, t_end, order, progress); };
   return s;
 }
 

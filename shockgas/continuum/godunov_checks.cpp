@@ -36,11 +36,11 @@ void check_initial_averages(const CellAverages& a, double length) {
   }
 }
 
-void throw_non_finite(const std::string& solver, double t, std::size_t step, std::size_t cell,
-                      double x, const std::string& component, double value) {
+void throw_non_finite(const std::string& solver, double t, std::size_t step, std::size_t cell, double x,
+                      const std::string& component, double value) {
   throw RunError(solver + ": non-finite " + component + " = " + to_text(value) + " in cell " +
-                 std::to_string(cell) + " (x = " + to_text(x) + ") at t = " + to_text(t) +
-                 " (step " + std::to_string(step) + "); no field written");
+                 std::to_string(cell) + " (x = " + to_text(x) + ") at t = " + to_text(t) + " (step " +
+                 std::to_string(step) + "); no field written");
 }
 
 void throw_stalled(const std::string& solver, double t, double dt) {

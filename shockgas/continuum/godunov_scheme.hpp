@@ -202,17 +202,16 @@ void check_finite_volume_input(const ContinuumParams& p, double t_end, double cf
 void check_initial_averages(const CellAverages& a, double length);
 
 // Throws RunError: "<solver>: non-finite <component> = <value> in cell i (x = ...) at t = ...".
-[[noreturn]] void throw_non_finite(const std::string& solver, double t, std::size_t step,
-                                   std::size_t cell, double x, const std::string& component,
-                                   double value);
+[[noreturn]] void throw_non_finite(const std::string& solver, double t, std::size_t step, std::size_t cell,
+                                   double x, const std::string& component, double value);
 // Throws RunError when the time step no longer advances t.
 [[noreturn]] void throw_stalled(const std::string& solver, double t, double dt);
 
 struct TimeLoop {
-  double t_end = 0;            // final time [time], reached exactly
-  double cfl = 0.5;            // Courant number: dt = cfl dx / max|speed|
-  std::string solver;          // name for errors (the registered name)
-  ProgressCallback progress;   // called about every 1% of t_end
+  double t_end = 0;           // final time [time], reached exactly
+  double cfl = 0.5;           // Courant number: dt = cfl dx / max|speed|
+  std::string solver;         // name for errors (the registered name)
+  ProgressCallback progress;  // called about every 1% of t_end
 };
 
 // Advances grid to loop.t_end with step(dt) -> StepSummary; returns the number of

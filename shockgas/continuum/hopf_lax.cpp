@@ -25,10 +25,10 @@ namespace {
 
 // 4-point Gauss-Legendre on [-1, 1] (exact for degree 7).
 // Nodes sqrt(3/7 -+ (2/7) sqrt(6/5)), weights (18 +- sqrt 30) / 36.
-constexpr std::array<double, 4> kNodes = {-0.86113631159405258, -0.33998104358485626,
-                                          0.33998104358485626, 0.86113631159405258};
-constexpr std::array<double, 4> kWeights = {0.34785484513745385, 0.65214515486254614,
-                                            0.65214515486254614, 0.34785484513745385};
+constexpr std::array<double, 4> kNodes = {-0.86113631159405258, -0.33998104358485626, 0.33998104358485626,
+                                          0.86113631159405258};
+constexpr std::array<double, 4> kWeights = {0.34785484513745385, 0.65214515486254614, 0.65214515486254614,
+                                            0.34785484513745385};
 
 // int_a^b f by one 4-point Gauss-Legendre rule.
 template <class F>
@@ -144,7 +144,8 @@ void HopfLaxSolution::build_tables() {
     const double a = node_q(static_cast<long>(j)), b = node_q(static_cast<long>(j) + 1);
     const double dp = gauss([&](double q) { return v0(q) - u0; }, a, b);
     const double dm = gauss([&](double q) { return rho0(q); }, a, b);
-    if (!std::isfinite(dp)) throw InputError("initial.v0", "non-finite near x = " + to_text(a), "finite values");
+    if (!std::isfinite(dp))
+      throw InputError("initial.v0", "non-finite near x = " + to_text(a), "finite values");
     if (!(dm >= 0 && std::isfinite(dm)))
       throw InputError("initial.rho0", to_text(dm / h_) + " near x = " + to_text(a), "finite values >= 0");
     p.add(dp);
@@ -178,7 +179,8 @@ void HopfLaxSolution::build_hull() {
   for (long k = -1; k <= 1; ++k) {
     for (const StickyCluster& c : hull) {
       const long a = static_cast<long>(c.first) + k * n, b = a + static_cast<long>(c.count);
-      hull_x_.push_back(0.5 * (node_q(a) + node_q(b)) + t_ * (psi_node(b) - psi_node(a)) / (node_q(b) - node_q(a)));
+      hull_x_.push_back(0.5 * (node_q(a) + node_q(b)) +
+                        t_ * (psi_node(b) - psi_node(a)) / (node_q(b) - node_q(a)));
       hull_start_.push_back(a);
     }
   }
@@ -203,8 +205,8 @@ double HopfLaxSolution::root_near(double y, long node, bool& bracketed) const {
   const auto f = [&](double q) { return q + t_ * (v0(q) - U_) - y; };
   const double q0 = node_q(node), f0 = f(q0);
   // Rounding of f's terms q, t w0 = f + y - q and y.
-  const double noise = 4 * std::numeric_limits<double>::epsilon() *
-                       (std::abs(q0) + std::abs(f0 + y - q0) + std::abs(y) + h_);
+  const double noise =
+      4 * std::numeric_limits<double>::epsilon() * (std::abs(q0) + std::abs(f0 + y - q0) + std::abs(y) + h_);
   bracketed = true;
   if (f0 >= 0) {
     const double qm = node_q(node - 1), fm = f(qm);

@@ -121,8 +121,8 @@ class HopfLaxSolution {
   std::function<double(double)> v0_, rho0_;
   double t_ = 0, L_ = 1, h_ = 1, U_ = 0, mass_ = 0;
   std::size_t n_ = 0;
-  std::vector<double> psi_;   // Psi0_w at nodes 0..n-1 (moving frame, periodic)
-  std::vector<double> mcum_;  // M0 at nodes 0..n-1
+  std::vector<double> psi_;       // Psi0_w at nodes 0..n-1 (moving frame, periodic)
+  std::vector<double> mcum_;      // M0 at nodes 0..n-1
   std::size_t period_edges_ = 0;  // hull edges (clusters) per period
   std::vector<double> hull_x_;    // hull edge slopes (cluster positions) over 3 periods, ascending
   std::vector<long> hull_start_;  // first node of each edge; edge c spans nodes [start_c, start_{c+1}]

@@ -38,8 +38,8 @@ ContinuumResult solve_pressureless(const InitialField& f, const ContinuumParams&
   check_initial_averages(initial, f.length);
 
   Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), p.boundary);
-  const std::size_t steps =
-      advance(grid, TimeLoop{t_end, p.cfl, solver, progress}, [&](double dt) { return grid.step_godunov(dt); });
+  const std::size_t steps = advance(grid, TimeLoop{t_end, p.cfl, solver, progress},
+                                    [&](double dt) { return grid.step_godunov(dt); });
 
   ContinuumResult r;
   r.solver = solver;

@@ -3,18 +3,18 @@
 // preconditioner (ARKBandPre). See viscous_mol.hpp.
 #include <arkode/arkode_bandpre.h>
 
-#include "shockgas/continuum/viscous_mol.hpp"
-#include "shockgas/core/error.hpp"
 #include "shockgas/continuum/sundials_wrap.hpp"
+#include "shockgas/continuum/viscous_mol.hpp"
 #include "shockgas/continuum/viscous_mol_setup.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::continuum {
 
 namespace {
 
 constexpr const char* kName = "arkode";  // as registered
-constexpr long kHalfBandwidth = 4;    // implicit part: v_i couples to v_{i+-2}, interleaved
-constexpr int kKrylovDimension = 30;  // SPGMR restart length
+constexpr long kHalfBandwidth = 4;       // implicit part: v_i couples to v_{i+-2}, interleaved
+constexpr int kKrylovDimension = 30;     // SPGMR restart length
 constexpr long kMaxStepsPerOutput = 200000;
 
 std::span<double> view(N_Vector v, std::size_t n) { return {N_VGetArrayPointer(v), n}; }

@@ -3,18 +3,18 @@
 #include <cvode/cvode_bandpre.h>
 #include <cvode/cvode_ls.h>
 
-#include "shockgas/continuum/viscous_mol.hpp"
-#include "shockgas/core/error.hpp"
 #include "shockgas/continuum/sundials_wrap.hpp"
+#include "shockgas/continuum/viscous_mol.hpp"
 #include "shockgas/continuum/viscous_mol_setup.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::continuum {
 
 namespace {
 
 constexpr const char* kName = "cvode";  // as registered
-constexpr long kHalfBandwidth = 5;    // interleaved (v, rho), 5-point stencils
-constexpr int kKrylovDimension = 30;  // SPGMR restart length
+constexpr long kHalfBandwidth = 5;      // interleaved (v, rho), 5-point stencils
+constexpr int kKrylovDimension = 30;    // SPGMR restart length
 constexpr long kMaxStepsPerOutput = 200000;
 
 int rhs(double /*t*/, N_Vector y, N_Vector ydot, void* data) {

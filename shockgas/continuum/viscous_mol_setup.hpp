@@ -12,8 +12,8 @@ namespace shockgas::continuum {
 struct MolProblem {
   std::string solver;  // the registered name, for messages and the result
   ViscousBurgersGrid grid;
-  std::vector<double> y0;     // interleaved (v_i, rho_i) cell averages at t = 0
-  double rtol = 0, atol = 0;  // atol = rtol * max(max|v0|, max rho0)
+  std::vector<double> y0;       // interleaved (v_i, rho_i) cell averages at t = 0
+  double rtol = 0, atol = 0;    // atol = rtol * max(max|v0|, max rho0)
   double v_min = 0, v_max = 0;  // the range of v0's cell averages (maximum principle)
   bool bounded = true;          // v held to that range (not under continuum.allow_unstable)
   double t_end = 0;

@@ -48,8 +48,7 @@ std::string to_text(double value, int digits) {
 
 void require_in_range(const std::string& key, double value, double lo, double hi) {
   if (!(std::isfinite(value) && value >= lo && value <= hi))
-    throw InputError(key, to_text(value),
-                     "a finite number in [" + to_text(lo) + ", " + to_text(hi) + "]");
+    throw InputError(key, to_text(value), "a finite number in [" + to_text(lo) + ", " + to_text(hi) + "]");
 }
 
 void require_above(const std::string& key, double value, double lo) {

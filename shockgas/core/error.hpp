@@ -51,10 +51,7 @@ std::string to_text(double value);
 std::string to_text(double value, int digits);
 inline std::string to_text(const std::string& value) { return "\"" + value + "\""; }
 template <class Int>
-  requires std::is_integral_v<Int>
-std::string to_text(Int value) {
-  return std::to_string(value);
-}
+requires std::is_integral_v<Int> std::string to_text(Int value) { return std::to_string(value); }
 
 // Throws InputError(key, value, allowed) unless ok.
 template <class T>

@@ -52,8 +52,8 @@ void Expression::require_finite_on(double a, double b, int n) const {
     const double y = (*this)(x);
     if (!std::isfinite(y))
       throw InputError(key_, "\"" + text_ + "\"",
-                       "an expression finite on [" + to_text(a) + ", " + to_text(b) +
-                           "] (it is " + to_text(y) + " at x = " + to_text(x) + ")");
+                       "an expression finite on [" + to_text(a) + ", " + to_text(b) + "] (it is " +
+                           to_text(y) + " at x = " + to_text(x) + ")");
   }
 }
 

@@ -69,19 +69,21 @@ const ParameterTable<InitialParams>& initial_parameters() {
     t.add(&P::N, "N", "1", "number of particles", allowed(at_least(2)));
     t.add(&P::positions, "positions", "", "initial positions: equally spaced, or uniform random (sorted)");
     t.add(&P::velocities, "velocities", "",
-          "initial velocities: uniform on [-amplitude, amplitude], Gaussian (sd amplitude), from file, or v0(x)");
+          "initial velocities: uniform on [-amplitude, amplitude], Gaussian (sd amplitude), from file, or "
+          "v0(x)");
     t.add(&P::amplitude, "amplitude", "length/time", "velocity scale", allowed(above(0)));
     t.add(&P::remove_mean, "remove_mean", "", "subtract the mean velocity");
     t.add(&P::file, "file", "", "bodies `x v [m]` per line, sorted by x; initial.N must count them",
           described("an existing text file (velocities = \"file\")"));
-    t.add(&P::seed, "seed", "", "random seed (realization k uses a seed derived from it)", allowed(at_least(0)));
+    t.add(&P::seed, "seed", "", "random seed (realization k uses a seed derived from it)",
+          allowed(at_least(0)));
     t.add(&P::L, "L", "length", "ring length; 0 means L = N (unit spacing)", allowed(at_least(0)));
     t.add(&P::v0, "v0", "length/time", "v0(x) for velocities = \"expression\"",
           described("an expression in x, finite on the domain"));
     t.add(&P::rho0, "rho0", "mass/length", "rho0(x) for velocities = \"expression\"",
           described("an expression in x, > 0 on the domain"));
-    t.add(&P::domain, "domain", "length", "period of v0, rho0 (domain [0, domain)) for velocities = \"expression\"",
-          allowed(above(0)));
+    t.add(&P::domain, "domain", "length",
+          "period of v0, rho0 (domain [0, domain)) for velocities = \"expression\"", allowed(above(0)));
     return t;
   }();
   return table;
@@ -104,8 +106,8 @@ void validate(const InitialParams& p) {
     rho.require_finite_on(0.0, p.domain);
     for (int i = 0; i <= 1000; ++i) {
       const double x = p.domain * i / 1000.0;
-      require(rho(x) > 0, "initial.rho0", p.rho0, "a density > 0 on the domain (it is " +
-                                                      to_text(rho(x)) + " at x = " + to_text(x) + ")");
+      require(rho(x) > 0, "initial.rho0", p.rho0,
+              "a density > 0 on the domain (it is " + to_text(rho(x)) + " at x = " + to_text(x) + ")");
     }
   }
 }
@@ -141,7 +143,8 @@ InitialCondition::InitialCondition(const InitialParams& p, Keep keep)
 }
 
 const Bodies& InitialCondition::bodies() const {
-  if (!held_) throw RunError("the initial condition does not hold realization 0: read it with stream_realization");
+  if (!held_)
+    throw RunError("the initial condition does not hold realization 0: read it with stream_realization");
   return field_.from_bodies() ? field_.bodies : expression_bodies_;
 }
 

@@ -126,8 +126,8 @@ class StickyHull {
   std::size_t n_;
   double L_;  // ring length; 0 = open line
   double t_;
-  bool masses_;    // masses differ: m_ holds them
-  double m0_ = 0;  // the mass of every body, if they are equal
+  bool masses_;         // masses differ: m_ holds them
+  double m0_ = 0;       // the mass of every body, if they are equal
   double reach_x_ = 0;  // max |x| at t = 0, plus L on a ring (unrolled centres): check_reach
   double vmax_ = 0;     // max |v|
   std::size_t origin_ = 0, begin_ = 0,

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "shockgas/particles/chain_view.hpp"
-#include "shockgas/particles/ring_wrap.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
+#include "shockgas/particles/ring_wrap.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -35,7 +35,6 @@ class ClusterCounter {
   std::optional<std::size_t> count() const;
 
  private:
-
   double L_;
   bool ring_;
   ClusterCriteria criteria_;

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shockgas/particles/cluster_sums.hpp"
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/particles/cluster_sums.hpp"
 
 namespace shockgas::particles {
 

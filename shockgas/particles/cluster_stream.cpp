@@ -9,9 +9,9 @@
 // bodies before the start (unrolled by + L) to the last cluster.
 #include <limits>
 
-#include "shockgas/particles/cluster_sums.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
+#include "shockgas/particles/cluster_sums.hpp"
 
 namespace shockgas::particles {
 

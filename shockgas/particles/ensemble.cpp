@@ -74,7 +74,8 @@ RunResult not_started() {
   return r;
 }
 
-std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams& p, SharedProgress& progress) {
+std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams& p,
+                               SharedProgress& progress) {
   const std::size_t R = p.realizations;
   const ThreadSplit split = split_threads(p.threads > 0 ? p.threads : usable_cores(), R);
   ParticleParams each = p;

@@ -32,9 +32,9 @@
 #include <emmintrin.h>
 #endif
 
+#include "shockgas/particles/collision.hpp"
 #include "shockgas/particles/event_tree.hpp"
 #include "shockgas/particles/huge_page_allocator.hpp"
-#include "shockgas/particles/collision.hpp"
 #include "shockgas/particles/params.hpp"
 
 namespace shockgas::particles::detail {

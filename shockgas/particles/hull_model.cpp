@@ -2,10 +2,10 @@
 
 #include <optional>
 
-#include "shockgas/particles/recorder.hpp"
-#include "shockgas/particles/run_watch.hpp"
 #include "shockgas/core/initial_stream.hpp"
 #include "shockgas/core/sticky_hull.hpp"
+#include "shockgas/particles/recorder.hpp"
+#include "shockgas/particles/run_watch.hpp"
 
 namespace shockgas::particles::detail {
 
@@ -28,8 +28,8 @@ Counters hull_counters(double initial_energy, const StickyHull& hull) {
 // The run from `build(t)`, the hull of the initial bodies at t, called once;
 // `energy()` their kinetic energy, read after it.
 template <class Build, class Energy>
-RunResult run_hull(std::size_t n, Build&& build, Energy&& energy, double L, bool ring, const ParticleParams& p,
-                   const StateSink* sink) {
+RunResult run_hull(std::size_t n, Build&& build, Energy&& energy, double L, bool ring,
+                   const ParticleParams& p, const StateSink* sink) {
   RunWatch watch{p, {}};
   Recorder recorder(p, n, L, ring, sink);
   // Built from the bodies at the first stop, then advanced from its own clusters.
@@ -61,8 +61,11 @@ RunResult run_hull(std::size_t n, Build&& build, Energy&& energy, double L, bool
 RunResult simulate_hull(const Bodies& initial, double L, bool ring, const ParticleParams& p,
                         const StateSink* sink) {
   const double energy = kinetic_energy(initial);
-  auto build = [&](double t) { return ring ? StickyHull::ring(initial, L, t) : StickyHull::line(initial, t); };
-  return run_hull(initial.size(), build, [energy] { return energy; }, L, ring, p, sink);
+  auto build = [&](double t) {
+    return ring ? StickyHull::ring(initial, L, t) : StickyHull::line(initial, t);
+  };
+  return run_hull(
+      initial.size(), build, [energy] { return energy; }, L, ring, p, sink);
 }
 
 // The kinetic energy is summed as the bodies pass, in their order (as kinetic_energy).
@@ -74,8 +77,11 @@ RunResult simulate_hull(InitialStream& initial, double L, bool ring, const Parti
     for (std::size_t i = 0; i < count; ++i) energy += 0.5 * m[i] * v[i] * v[i];
   };
   const std::size_t n = initial.size();
-  auto build = [&](double t) { return ring ? StickyHull::ring(n, read, L, t) : StickyHull::line(n, read, t); };
-  return run_hull(n, build, [&energy] { return energy; }, L, ring, p, sink);
+  auto build = [&](double t) {
+    return ring ? StickyHull::ring(n, read, L, t) : StickyHull::line(n, read, t);
+  };
+  return run_hull(
+      n, build, [&energy] { return energy; }, L, ring, p, sink);
 }
 
 }  // namespace shockgas::particles::detail

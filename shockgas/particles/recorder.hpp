@@ -7,12 +7,12 @@
 #include <limits>
 #include <vector>
 
+#include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/chain_observables.hpp"
 #include "shockgas/particles/chain_view.hpp"
-#include "shockgas/particles/ring_wrap.hpp"
-#include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
 #include "shockgas/particles/params.hpp"
+#include "shockgas/particles/ring_wrap.hpp"
 #include "shockgas/particles/run_result.hpp"
 #include "shockgas/particles/run_state.hpp"
 #include "shockgas/particles/state_sink.hpp"

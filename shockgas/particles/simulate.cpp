@@ -4,14 +4,14 @@
 #include <cmath>
 #include <optional>
 
+#include "shockgas/core/cores.hpp"
+#include "shockgas/core/error.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "shockgas/particles/event_engine.hpp"
 #include "shockgas/particles/hull_model.hpp"
 #include "shockgas/particles/recorder.hpp"
 #include "shockgas/particles/run_state_io.hpp"
 #include "shockgas/particles/run_watch.hpp"
-#include "shockgas/core/cores.hpp"
-#include "shockgas/core/error.hpp"
-#include "shockgas/core/initial_stream.hpp"
 #include "shockgas/particles/window_scheduler.hpp"
 
 namespace shockgas::particles {
@@ -107,7 +107,8 @@ RunStop stop_of(detail::EngineStop s, double now, double position, StopReason wa
 
 // What the summary says about the order of events.
 template <class Scheduler>
-RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_masses, const ParticleParams& p) {
+RunSchedule schedule_of(const Scheduler* scheduler, std::size_t n, bool equal_masses,
+                        const ParticleParams& p) {
   RunSchedule s;
   if (scheduler) {
     s.threads = scheduler->threads();

@@ -88,8 +88,8 @@ struct EnsembleResult {
   // jackknife over realizations needs (shockgas/compare/realization_errors.hpp).
   std::vector<std::vector<double>> T_by_realization;          // at the samples it reached
   std::vector<std::vector<double>> histogram_by_realization;  // empty rows without a histogram
-  RunResult first;                // realization 0 in full (final state, snapshots, space-time)
-  std::vector<RunStop> stops;     // how each realization ended
+  RunResult first;             // realization 0 in full (final state, snapshots, space-time)
+  std::vector<RunStop> stops;  // how each realization ended
   std::vector<std::uint64_t> collisions_per_realization;
   std::uint64_t total_collisions = 0;
   double wall_seconds = 0;  // wall-clock time of the whole ensemble [s]

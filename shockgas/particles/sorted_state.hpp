@@ -10,8 +10,8 @@
 // the order is the chain's, stably sorted where rounding left it out of order.
 #include <cstddef>
 
-#include "shockgas/particles/chain_view.hpp"
 #include "shockgas/core/bodies.hpp"
+#include "shockgas/particles/chain_view.hpp"
 #include "shockgas/particles/state_sink.hpp"
 
 namespace shockgas::particles::detail {

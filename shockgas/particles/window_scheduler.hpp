@@ -54,10 +54,10 @@
 #include <string>
 #include <vector>
 
+#include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/domain_prefetcher.hpp"
 #include "shockgas/particles/domain_sampler.hpp"
 #include "shockgas/particles/event_engine.hpp"
-#include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/thread_team.hpp"
 #include "shockgas/particles/window_domain.hpp"
 #include "shockgas/particles/window_plan.hpp"

@@ -82,7 +82,8 @@ void rethrow_if_bench_failure(const std::exception& e) {
 void FailureLog::write(const Context& ctx) const {
   CsvWriter csv(ctx.path("failures.csv"), {"bench_section", "section", "method", "parameter", "what"});
   std::ofstream md(ctx.path("failures.md"));
-  md << "# Failures detected by shockgas bench\n\n| section | method | parameter | what happened |\n|---|---|---|---|\n";
+  md << "# Failures detected by shockgas bench\n\n| section | method | parameter | what happened "
+        "|\n|---|---|---|---|\n";
   for (const auto& [bench_section, f] : failures_) {
     csv << bench_section << f.section << f.method << f.parameter << f.what;
     csv.end_row();
@@ -183,16 +184,18 @@ double crossing(const std::vector<double>& v, double length, double x_s, double 
 
 double shock_position_error(const std::vector<double>& v, const std::vector<double>& exact, double length,
                             double x_s, double v_mid, double half_width) {
-  return std::abs(crossing(v, length, x_s, v_mid, half_width) - crossing(exact, length, x_s, v_mid, half_width));
+  return std::abs(crossing(v, length, x_s, v_mid, half_width) -
+                  crossing(exact, length, x_s, v_mid, half_width));
 }
 
 std::string fmt(double value, int digits) { return to_text(value, digits); }
 
 const SolverNames& solver_names() {
-  static const SolverNames names{continuum::godunov_solver().name,      continuum::godunov2_solver().name,
-                                 continuum::pressureless_solver().name, continuum::hopf_lax_solver().name,
-                                 continuum::hopf_cole_solver().name,    continuum::cvode_solver().name,
-                                 continuum::arkode_solver().name,       name_of(particles::ParticleSolver::events)};
+  static const SolverNames names{
+      continuum::godunov_solver().name,      continuum::godunov2_solver().name,
+      continuum::pressureless_solver().name, continuum::hopf_lax_solver().name,
+      continuum::hopf_cole_solver().name,    continuum::cvode_solver().name,
+      continuum::arkode_solver().name,       name_of(particles::ParticleSolver::events)};
   return names;
 }
 

@@ -15,9 +15,9 @@ namespace shockgas::studies {
 
 // The size of a bench run and where it writes.
 struct Context {
-  std::string out_dir;    // existing directory for the CSV and PNG files
-  bool full = false;      // record size instead of the quick one
-  bool progress = true;   // progress lines on stderr
+  std::string out_dir;      // existing directory for the CSV and PNG files
+  bool full = false;        // record size instead of the quick one
+  bool progress = true;     // progress lines on stderr
   std::size_t repeats = 5;  // timed runs per setting; the median is reported (>= 5)
 
   // "bench: <section>: <text>" on stderr when progress is on.

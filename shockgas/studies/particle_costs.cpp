@@ -14,10 +14,10 @@
 #include <numeric>
 #include <vector>
 
-#include "shockgas/studies/sections.hpp"
 #include "shockgas/compare/cooling_law.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/particles/simulate.hpp"
+#include "shockgas/studies/sections.hpp"
 
 namespace shockgas::studies {
 
@@ -52,28 +52,31 @@ void cost_row(CsvWriter& csv, const std::string& scan, std::size_t N, double t_e
               double seconds) {
   const double per_particle = double(r.collisions) / double(N);
   csv << scan << double(N) << t_end << double(r.collisions) << per_particle << seconds
-      << (r.collisions > 0 ? 1e9 * seconds / double(r.collisions) : NAN) << particles::to_string(r.stop.reason);
+      << (r.collisions > 0 ? 1e9 * seconds / double(r.collisions) : NAN)
+      << particles::to_string(r.stop.reason);
   csv.end_row();
 }
 
 // One measured point: median wall time of ctx.repeats identical runs.
-void cost_point(const Context& ctx, FailureLog& failures, CsvWriter& csv, const std::string& scan, std::size_t N,
-                double t_end) {
+void cost_point(const Context& ctx, FailureLog& failures, CsvWriter& csv, const std::string& scan,
+                std::size_t N, double t_end) {
   const Bodies b = gas(N, 0);
   const ParticleParams p = gas_params(t_end, 4, ctx.full ? 600.0 : 20.0);
   RunResult r;
   const double s = median_seconds(ctx.repeats, [&] { r = particles::simulate(b, double(N), p); });
   if (r.stop.reason != particles::StopReason::completed)
-    failures.add({"particles_cost", "events (r = 0.5, delta = 0.01)", "N = " + fmt(double(N)) + ", t_end = " + fmt(t_end),
+    failures.add({"particles_cost", "events (r = 0.5, delta = 0.01)",
+                  "N = " + fmt(double(N)) + ", t_end = " + fmt(t_end),
                   "stopped early: " + particles::to_string(r.stop.reason) + " at t = " + fmt(r.stop.time)});
   cost_row(csv, scan, N, t_end, r, s);
 }
 
 void cost(const Context& ctx, FailureLog& failures) {
-  CsvWriter csv(ctx.path("particles_cost.csv"),
-                {"scan", "N", "t_end", "collisions", "collisions_per_particle", "seconds", "ns_per_collision", "stop"});
-  const std::vector<double> sizes = ctx.full ? std::vector<double>{1e3, 1e4, 1e5, 1e6}
-                                             : std::vector<double>{1e3, 3e3, 1e4, 3e4, 1e5};
+  CsvWriter csv(
+      ctx.path("particles_cost.csv"),
+      {"scan", "N", "t_end", "collisions", "collisions_per_particle", "seconds", "ns_per_collision", "stop"});
+  const std::vector<double> sizes =
+      ctx.full ? std::vector<double>{1e3, 1e4, 1e5, 1e6} : std::vector<double>{1e3, 3e3, 1e4, 3e4, 1e5};
   for (double N : sizes) {
     ctx.log("particles", "cost, N = " + fmt(N));
     cost_point(ctx, failures, csv, "N", std::size_t(N), 100.0);
@@ -90,7 +93,9 @@ struct Realization {
   double seconds = 0;
 };
 
-double mean(const std::vector<double>& x) { return std::accumulate(x.begin(), x.end(), 0.0) / double(x.size()); }
+double mean(const std::vector<double>& x) {
+  return std::accumulate(x.begin(), x.end(), 0.0) / double(x.size());
+}
 
 double standard_error(const std::vector<double>& x) {
   if (x.size() < 2) return NAN;
@@ -111,7 +116,8 @@ std::vector<double> mean_T(const std::vector<Realization>& runs, std::size_t n, 
 }
 
 // Jackknife error of the exponent fitted to the mean of runs[0..n); NaN for n < 2.
-double jackknife_exponent_error(const std::vector<Realization>& runs, std::size_t n, double t_fit, double t_end) {
+double jackknife_exponent_error(const std::vector<Realization>& runs, std::size_t n, double t_fit,
+                                double t_end) {
   if (n < 2) return NAN;
   std::vector<double> a;
   for (std::size_t skip = 0; skip < n; ++skip)

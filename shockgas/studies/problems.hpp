@@ -18,10 +18,10 @@ namespace shockgas::studies {
 struct Problem {
   std::string name;
   InitialField field;
-  double t = 0;               // time of the comparison [time]
-  bool shock_error = false;   // whether the shock-position error is measured (isolated shocks)
-  double max_speed = 0;       // max |v0| [length/time]
-  double spread = 0;          // max v0 - min v0 [length/time]
+  double t = 0;              // time of the comparison [time]
+  bool shock_error = false;  // whether the shock-position error is measured (isolated shocks)
+  double max_speed = 0;      // max |v0| [length/time]
+  double spread = 0;         // max v0 - min v0 [length/time]
 };
 
 std::vector<Problem> reference_problems();

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/studies/sections.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/studies/sections.hpp"
 #include "shockgas/studies/studies.hpp"
 
 namespace shockgas::studies {

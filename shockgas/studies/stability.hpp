@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "shockgas/particles/run_result.hpp"
 #include "shockgas/studies/common.hpp"
 #include "shockgas/studies/problems.hpp"
-#include "shockgas/particles/run_result.hpp"
 
 namespace shockgas::studies {
 
@@ -22,15 +22,15 @@ namespace shockgas::studies {
 struct CflPoint {
   double cfl = 0;
   bool failed = false;
-  bool blew_up = false;        // stopped: non-finite or |v| > 10 max|v0|
-  double max_tv_rise = 0;      // max over steps of (TV_{n+1} - TV_n) / TV_0 [1]
+  bool blew_up = false;          // stopped: non-finite or |v| > 10 max|v0|
+  double max_tv_rise = 0;        // max over steps of (TV_{n+1} - TV_n) / TV_0 [1]
   std::size_t rising_steps = 0;  // steps whose TV rise passed the threshold
-  double tv_ratio = 0;         // TV(v) at the end / TV(v0); NaN if it blew up [1]
-  double max_ratio = 0;        // max|v| at the end / max|v0|; NaN if it blew up [1]
-  double min_rho = 0;          // min density over the run [mass/length]
-  double l1 = 0;               // L1 error against Hopf-Lax at pb.t; NaN if it blew up [length^2/time]
-  double t_reached = 0;        // [time]
-  std::string what;            // in words
+  double tv_ratio = 0;           // TV(v) at the end / TV(v0); NaN if it blew up [1]
+  double max_ratio = 0;          // max|v| at the end / max|v0|; NaN if it blew up [1]
+  double min_rho = 0;            // min density over the run [mass/length]
+  double l1 = 0;                 // L1 error against Hopf-Lax at pb.t; NaN if it blew up [length^2/time]
+  double t_reached = 0;          // [time]
+  std::string what;              // in words
 };
 // solver: the registered name of godunov or godunov2; limiter: its scene name, for godunov2.
 std::vector<CflPoint> cfl_scan(const Problem& pb, const std::string& solver, const std::string& limiter,
@@ -52,26 +52,27 @@ void cfl_stability(const Context& ctx, FailureLog& failures);
 struct ViscousPoint {
   double nu = 0;
   std::size_t cells = 0;
-  double c = 0;              // dt / (h^2 / 2 nu): 1 is the diffusive limit [1]
-  double c_predicted = 0;    // the frozen-coefficient limit 1 / (1 + max|v0| h / 2 nu), in units of h^2/2nu [1]
-  bool failed = false;       // blew up, or TV grew by more than 1 %
-  double tv_ratio = 0;       // TV at the end / TV(v0) [1]
-  std::size_t steps = 0;     // steps taken
+  double c = 0;            // dt / (h^2 / 2 nu): 1 is the diffusive limit [1]
+  double c_predicted = 0;  // the frozen-coefficient limit 1 / (1 + max|v0| h / 2 nu), in units of h^2/2nu [1]
+  bool failed = false;     // blew up, or TV grew by more than 1 %
+  double tv_ratio = 0;     // TV at the end / TV(v0) [1]
+  std::size_t steps = 0;   // steps taken
 };
 // Forward Euler from the cell averages of pb.field, `steps` steps of dt = c h^2 / 2 nu.
-ViscousPoint explicit_viscous_point(const Problem& pb, double nu, std::size_t cells, double c, std::size_t steps);
+ViscousPoint explicit_viscous_point(const Problem& pb, double nu, std::size_t cells, double c,
+                                    std::size_t steps);
 
 // ---- Hopf-Cole FFT against DeltaPsi / 2 nu ----
 
 struct HopfColePoint {
-  double ratio = 0;           // DeltaPsi / 2 nu [1]
-  double nu = 0;              // [length^2/time]
-  double fft_error = 0;       // max |v_fft - v_log| of the raw FFT path; NaN if non-finite [length/time]
-  bool fft_finite = true;     // the raw FFT path gave finite values everywhere
-  double fft_bound = 0;       // the path's own roundoff bound [length/time]
-  std::string solver_fft;     // what solving hopf_cole on the fft path did: "accepted" or the error
-  std::string solver_auto;    // the method_note of path auto
-  double log_seconds = 0;     // wall time of the log path [s]
+  double ratio = 0;         // DeltaPsi / 2 nu [1]
+  double nu = 0;            // [length^2/time]
+  double fft_error = 0;     // max |v_fft - v_log| of the raw FFT path; NaN if non-finite [length/time]
+  bool fft_finite = true;   // the raw FFT path gave finite values everywhere
+  double fft_bound = 0;     // the path's own roundoff bound [length/time]
+  std::string solver_fft;   // what solving hopf_cole on the fft path did: "accepted" or the error
+  std::string solver_auto;  // the method_note of path auto
+  double log_seconds = 0;   // wall time of the log path [s]
 };
 // pb at pb.t on `cells` cells with nu = DeltaPsi / (2 ratio).
 HopfColePoint hopf_cole_point(const Problem& pb, std::size_t cells, double ratio);

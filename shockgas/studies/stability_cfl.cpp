@@ -8,12 +8,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shockgas/studies/stability.hpp"
 #include "shockgas/continuum/burgers_physics.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/continuum/godunov_scheme.hpp"
 #include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/continuum/limiters.hpp"
+#include "shockgas/studies/stability.hpp"
 
 namespace shockgas::studies {
 
@@ -22,8 +22,8 @@ namespace {
 using continuum::BurgersContinuity;
 using Grid = continuum::FiniteVolumeGrid<BurgersContinuity>;
 
-constexpr double kTvRise = 1e-8;       // relative TV rise per step that counts (rounding: ~1e-14)
-constexpr double kBlowUp = 10.0;       // |v| > 10 max|v0|: blown up, stop
+constexpr double kTvRise = 1e-8;          // relative TV rise per step that counts (rounding: ~1e-14)
+constexpr double kBlowUp = 10.0;          // |v| > 10 max|v0|: blown up, stop
 constexpr std::size_t kStepFactor = 100;  // step budget: 100 times the steps at the nominal dt
 
 struct Watch {
@@ -75,8 +75,9 @@ void describe(CflPoint& pt) {
   if (pt.min_rho < 0) pt.what += "; density went negative (min " + fmt(pt.min_rho) + ")";
 }
 
-CflPoint scan_point(const Problem& pb, const std::string& solver, continuum::Limiter limiter, std::size_t cells,
-                    double cfl, const continuum::CellAverages& v0, const continuum::CellAverages& exact) {
+CflPoint scan_point(const Problem& pb, const std::string& solver, continuum::Limiter limiter,
+                    std::size_t cells, double cfl, const continuum::CellAverages& v0,
+                    const continuum::CellAverages& exact) {
   std::vector<BurgersContinuity::State> u(cells);
   for (std::size_t i = 0; i < cells; ++i) u[i] = {v0.v[i], v0.rho[i]};
   Grid g(u, pb.field.length / double(cells), continuum::Boundary::periodic);
@@ -98,7 +99,8 @@ CflPoint scan_point(const Problem& pb, const std::string& solver, continuum::Lim
     std::vector<double> v(cells);
     for (std::size_t i = 0; i < cells; ++i) v[i] = g.cell(i)[0];
     w.pt.tv_ratio = continuum::periodic_total_variation(v) / w.tv0;
-    w.pt.max_ratio = *std::max_element(v.begin(), v.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    w.pt.max_ratio =
+        *std::max_element(v.begin(), v.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
     w.pt.max_ratio = std::abs(w.pt.max_ratio) / w.v0max;
     w.pt.l1 = error_norms(v, exact.v, g.dx()).l1;
   }
@@ -128,33 +130,37 @@ ScanLimit cfl_limit(const std::vector<CflPoint>& points) {
 }
 
 void cfl_stability(const Context& ctx, FailureLog& failures) {
-  CsvWriter csv(ctx.path("stability_cfl.csv"), {"problem", "method", "cfl", "failed", "max_tv_rise", "rising_steps",
-                                                 "tv_ratio", "max_ratio", "min_rho", "l1", "what"});
+  CsvWriter csv(ctx.path("stability_cfl.csv"),
+                {"problem", "method", "cfl", "failed", "max_tv_rise", "rising_steps", "tv_ratio", "max_ratio",
+                 "min_rho", "l1", "what"});
   CsvWriter limits(ctx.path("stability_cfl_limits.csv"),
                    {"problem", "method", "predicted", "last_stable", "first_failed"});
   const std::size_t cells = ctx.full ? 1024 : 256;
-  const std::vector<double> cfls = ctx.full
-      ? std::vector<double>{0.5, 0.7, 0.75, 0.8, 0.85, 0.9, 0.95, 0.98, 1.0, 1.02, 1.05, 1.1, 1.2, 1.3, 1.5, 2.0}
-      : std::vector<double>{0.5, 0.8, 0.85, 0.9, 0.95, 1.0, 1.05, 1.1, 1.2, 1.5, 2.0};
+  const std::vector<double> cfls =
+      ctx.full ? std::vector<double>{0.5, 0.7,  0.75, 0.8, 0.85, 0.9, 0.95, 0.98,
+                                     1.0, 1.02, 1.05, 1.1, 1.2,  1.3, 1.5,  2.0}
+               : std::vector<double>{0.5, 0.8, 0.85, 0.9, 0.95, 1.0, 1.05, 1.1, 1.2, 1.5, 2.0};
   for (const Problem& pb : {problem_by_name("sine_post"), problem_by_name("noise")}) {
     for (std::string limiter : {"", "minmod", "vanleer", "mc"}) {
       const auto& names = solver_names();
       const std::string method = limiter.empty() ? names.godunov : names.godunov2 + " (" + limiter + ")";
       ctx.log("stability", "CFL scan of " + method + ", " + pb.name);
-      const auto points = cfl_scan(pb, limiter.empty() ? names.godunov : names.godunov2, limiter.empty() ? "mc" : limiter,
-                                   cells, cfls);
+      const auto points = cfl_scan(pb, limiter.empty() ? names.godunov : names.godunov2,
+                                   limiter.empty() ? "mc" : limiter, cells, cfls);
       for (const auto& pt : points) {
-        csv << pb.name << method << pt.cfl << (pt.failed ? "yes" : "no") << pt.max_tv_rise << double(pt.rising_steps)
-            << pt.tv_ratio << pt.max_ratio << pt.min_rho << pt.l1 << pt.what;
+        csv << pb.name << method << pt.cfl << (pt.failed ? "yes" : "no") << pt.max_tv_rise
+            << double(pt.rising_steps) << pt.tv_ratio << pt.max_ratio << pt.min_rho << pt.l1 << pt.what;
         csv.end_row();
       }
       const ScanLimit lim = cfl_limit(points);
       limits << pb.name << method << 1.0 << lim.last_stable << lim.first_failed;
       limits.end_row();
       if (lim.first_failed > 0) {
-        const auto& pt = *std::find_if(points.begin(), points.end(), [](const CflPoint& p) { return p.failed; });
+        const auto& pt =
+            *std::find_if(points.begin(), points.end(), [](const CflPoint& p) { return p.failed; });
         failures.add({"cfl", method, pb.name + ", " + std::to_string(cells) + " cells, cfl = " + fmt(pt.cfl),
-                      "first failure of the scan (last stable " + fmt(lim.last_stable) + ", predicted 1): " + pt.what});
+                      "first failure of the scan (last stable " + fmt(lim.last_stable) +
+                          ", predicted 1): " + pt.what});
       }
     }
   }

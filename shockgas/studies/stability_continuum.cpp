@@ -9,11 +9,11 @@
 #include <cmath>
 #include <limits>
 
-#include "shockgas/studies/sections.hpp"
-#include "shockgas/studies/stability.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/continuum/hopf_cole.hpp"
 #include "shockgas/continuum/solve.hpp"
+#include "shockgas/studies/sections.hpp"
+#include "shockgas/studies/stability.hpp"
 
 namespace shockgas::studies {
 
@@ -31,7 +31,8 @@ double max_abs(const std::vector<double>& v) {
 
 }  // namespace
 
-ViscousPoint explicit_viscous_point(const Problem& pb, double nu, std::size_t cells, double c, std::size_t steps) {
+ViscousPoint explicit_viscous_point(const Problem& pb, double nu, std::size_t cells, double c,
+                                    std::size_t steps) {
   const double h = pb.field.length / double(cells);
   const auto v0 = continuum::cell_averages(pb.field, cells).v;
   continuum::ExplicitViscousParams p;
@@ -98,10 +99,11 @@ void explicit_rows(const Context& ctx, CsvWriter& csv, FailureLog& failures, con
   bool reported = false;
   for (double c : {0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.8, 0.9, 0.95, 1.0, 1.05, 1.1, 1.2, 1.5, 2.0}) {
     const ViscousPoint pt = explicit_viscous_point(pb, nu, cells, c, steps);
-    const std::string what = pt.failed ? "blew up or TV grew (x" + fmt(pt.tv_ratio) + ") after " + std::to_string(pt.steps) + " steps"
+    const std::string what = pt.failed ? "blew up or TV grew (x" + fmt(pt.tv_ratio) + ") after " +
+                                             std::to_string(pt.steps) + " steps"
                                        : "stable";
-    csv << "explicit" << nu << double(cells) << c << pt.c_predicted << (pt.failed ? "yes" : "no") << pt.tv_ratio
-        << double(pt.steps) << NAN << what;
+    csv << "explicit" << nu << double(cells) << c << pt.c_predicted << (pt.failed ? "yes" : "no")
+        << pt.tv_ratio << double(pt.steps) << NAN << what;
     csv.end_row();
     if (pt.failed && !reported) {
       reported = true;
@@ -122,13 +124,15 @@ void implicit_rows(CsvWriter& csv, FailureLog& failures, const Problem& pb, doub
     try {
       const auto r = continuum::solve(solver, pb.field, p, pb.t);
       const double steps = r.stats.count("steps") ? r.stats.at("steps") : NAN;
-      csv << solver << nu << double(cells) << (pb.t / steps) / limit << NAN << "no" << NAN << steps << r.wall_seconds
-          << "completed; mean step = " + fmt(pb.t / steps / limit) + " h^2/2nu";
+      csv << solver << nu << double(cells) << (pb.t / steps) / limit << NAN << "no" << NAN << steps
+          << r.wall_seconds << "completed; mean step = " + fmt(pb.t / steps / limit) + " h^2/2nu";
       csv.end_row();
     } catch (const std::exception& e) {
       rethrow_if_bench_failure(e);
-      failures.add({"viscous_implicit", solver, "nu = " + fmt(nu) + ", " + std::to_string(cells) + " cells", e.what()});
-      csv << solver << nu << double(cells) << NAN << NAN << "yes" << NAN << NAN << NAN << std::string("refused: ") + e.what();
+      failures.add({"viscous_implicit", solver, "nu = " + fmt(nu) + ", " + std::to_string(cells) + " cells",
+                    e.what()});
+      csv << solver << nu << double(cells) << NAN << NAN << "yes" << NAN << NAN << NAN
+          << std::string("refused: ") + e.what();
       csv.end_row();
     }
   }
@@ -148,30 +152,32 @@ void viscous_section(const Context& ctx, FailureLog& failures) {
 }
 
 void hopf_cole_section(const Context& ctx, FailureLog& failures) {
-  CsvWriter csv(ctx.path("stability_hopf_cole.csv"),
-                {"ratio", "nu", "fft_error", "fft_finite", "fft_bound", "log_seconds", "solver_fft", "solver_auto"});
+  CsvWriter csv(ctx.path("stability_hopf_cole.csv"), {"ratio", "nu", "fft_error", "fft_finite", "fft_bound",
+                                                      "log_seconds", "solver_fft", "solver_auto"});
   const Problem pb = problem_by_name("sine_post");
   const std::size_t cells = ctx.full ? 4096 : 1024;
   const double scale = 1.5, tolerance = 1e-3;  // max|v0|; digits lost = error above 1e-3 max|v0|
   bool lost = false, nonfinite = false;
-  for (double ratio : {2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 50.0, 70.0, 100.0, 200.0, 400.0, 700.0,
-                       750.0, 1000.0, 1500.0}) {
+  for (double ratio : {2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 50.0, 70.0, 100.0, 200.0, 400.0,
+                       700.0, 750.0, 1000.0, 1500.0}) {
     ctx.log("stability", "Hopf-Cole FFT, DeltaPsi/2nu = " + fmt(ratio));
     const HopfColePoint pt = hopf_cole_point(pb, cells, ratio);
-    csv << pt.ratio << pt.nu << pt.fft_error << (pt.fft_finite ? "yes" : "no") << pt.fft_bound << pt.log_seconds
-        << pt.solver_fft << pt.solver_auto;
+    csv << pt.ratio << pt.nu << pt.fft_error << (pt.fft_finite ? "yes" : "no") << pt.fft_bound
+        << pt.log_seconds << pt.solver_fft << pt.solver_auto;
     csv.end_row();
-    const std::string where = "DeltaPsi/2nu = " + fmt(ratio) + " (nu = " + fmt(pt.nu) + ", " + std::to_string(cells) + " cells)";
+    const std::string where =
+        "DeltaPsi/2nu = " + fmt(ratio) + " (nu = " + fmt(pt.nu) + ", " + std::to_string(cells) + " cells)";
     if (!lost && (!pt.fft_finite || pt.fft_error > tolerance * scale)) {
       lost = true;
       failures.add({"hopf_cole_fft", "hopf_cole fft (raw)", where,
                     "digits lost: error " + (pt.fft_finite ? fmt(pt.fft_error) : std::string("non-finite")) +
-                        " > 1e-3 max|v0| (roundoff prediction: ratio " + fmt(hopf_cole_predicted_break(cells, tolerance)) +
-                        "; exp range: ~709)"});
+                        " > 1e-3 max|v0| (roundoff prediction: ratio " +
+                        fmt(hopf_cole_predicted_break(cells, tolerance)) + "; exp range: ~709)"});
     }
     if (!nonfinite && !pt.fft_finite) {
       nonfinite = true;
-      failures.add({"hopf_cole_fft", "hopf_cole fft (raw)", where, "non-finite velocities (theta underflowed or went negative)"});
+      failures.add({"hopf_cole_fft", "hopf_cole fft (raw)", where,
+                    "non-finite velocities (theta underflowed or went negative)"});
     }
   }
 }

@@ -10,10 +10,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shockgas/studies/sections.hpp"
-#include "shockgas/studies/stability.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/particles/simulate.hpp"
+#include "shockgas/studies/sections.hpp"
+#include "shockgas/studies/stability.hpp"
 
 namespace shockgas::studies {
 
@@ -63,18 +63,21 @@ void three_particle_rows(CsvWriter& csv, FailureLog& failures) {
   for (double r : {0.01, 0.05, 0.07, 0.075, 0.1, 0.3}) {
     const RunStop s = three_particle_stop(r);
     const bool collapsed = s.reason == StopReason::collapse;
-    csv << "three on a line" << 3.0 << r << 1.0 << (collapsed ? 1.0 : 0.0) << (collapsed ? s.time : NAN) << 3.0
+    csv << "three on a line" << 3.0 << r << 1.0 << (collapsed ? 1.0 : 0.0) << (collapsed ? s.time : NAN)
+        << 3.0
         << particles::to_string(s.reason) + (r < r_c ? " (predicted: collapse)" : " (predicted: none)");
     csv.end_row();
     if (collapsed)
-      failures.add({"collapse", "events, delta = 0", "3 particles on a line, r = " + fmt(r),
-                    "inelastic collapse at t = " + fmt(s.time) + " (predicted for r < 7 - 4 sqrt 3 = 0.0718)"});
+      failures.add(
+          {"collapse", "events, delta = 0", "3 particles on a line, r = " + fmt(r),
+           "inelastic collapse at t = " + fmt(s.time) + " (predicted for r < 7 - 4 sqrt 3 = 0.0718)"});
   }
 }
 
 void ring_rows(const Context& ctx, CsvWriter& csv, FailureLog& failures) {
-  const std::vector<std::size_t> sizes = ctx.full ? std::vector<std::size_t>{3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 128, 256, 1024}
-                                                  : std::vector<std::size_t>{3, 4, 6, 8, 12, 16, 24, 32, 64, 128, 256};
+  const std::vector<std::size_t> sizes =
+      ctx.full ? std::vector<std::size_t>{3, 4, 6, 8, 12, 16, 24, 32, 48, 64, 128, 256, 1024}
+               : std::vector<std::size_t>{3, 4, 6, 8, 12, 16, 24, 32, 64, 128, 256};
   const std::size_t seeds = ctx.full ? 10 : 4;
   const double t_end = 1000.0;
   for (double r : {0.1, 0.3, 0.5, 0.7, 0.9}) {
@@ -89,15 +92,17 @@ void ring_rows(const Context& ctx, CsvWriter& csv, FailureLog& failures) {
       std::sort(times.begin(), times.end());
       const double fraction = double(times.size()) / double(seeds);
       const double median = times.empty() ? NAN : times[times.size() / 2];
-      csv << "ring" << double(N) << r << double(seeds) << fraction << median << collapse_particles_predicted(r)
+      csv << "ring" << double(N) << r << double(seeds) << fraction << median
+          << collapse_particles_predicted(r)
           << (times.empty() ? std::string("no collapse up to t = ") + fmt(t_end)
                             : std::to_string(times.size()) + " of " + std::to_string(seeds) + " collapsed");
       csv.end_row();
       if (fraction >= 0.5 && !reported) {
         reported = true;
         failures.add({"collapse", "events, delta = 0, ring", "r = " + fmt(r) + ", N = " + std::to_string(N),
-                      "inelastic collapse in " + std::to_string(times.size()) + " of " + std::to_string(seeds) +
-                          " realizations, median t = " + fmt(median) + " (smallest N collapsing in half; McNamara-Young N_c = " +
+                      "inelastic collapse in " + std::to_string(times.size()) + " of " +
+                          std::to_string(seeds) + " realizations, median t = " + fmt(median) +
+                          " (smallest N collapsing in half; McNamara-Young N_c = " +
                           fmt(collapse_particles_predicted(r)) + ")"});
       }
     }
@@ -142,7 +147,8 @@ void threshold_rows(const Context& ctx, CsvWriter& csv, FailureLog& failures) {
   const double t_end = ctx.full ? 1e5 : 1e4, max_wall = ctx.full ? 600.0 : 20.0;
   const double deviation = 0.2;  // 20 %: well above the difference between two small deltas at early times
   for (double r : {0.5, 0.9}) {
-    const double ref_delta = 3e-3;  // small against every compared delta but 1e-3, which is compared too (5x the cost)
+    const double ref_delta =
+        3e-3;  // small against every compared delta but 1e-3, which is compared too (5x the cost)
     ctx.log("stability", "threshold independence, r = " + fmt(r) + ", reference delta = " + fmt(ref_delta));
     const MeanT ref = mean_temperature(N, r, ref_delta, R, t_end, max_wall);
     for (double delta : {0.3, 0.1, 0.03, 0.01, 0.001}) {
@@ -160,10 +166,12 @@ void threshold_rows(const Context& ctx, CsvWriter& csv, FailureLog& failures) {
           << m.stop + (ref.stop != "completed" ? "; reference " + ref.stop : std::string());
       csv.end_row();
       if (m.stop != "completed")
-        failures.add({"threshold", "events, r = " + fmt(r), "delta = " + fmt(delta) + " (N = " + std::to_string(N) + ")",
+        failures.add({"threshold", "events, r = " + fmt(r),
+                      "delta = " + fmt(delta) + " (N = " + std::to_string(N) + ")",
                       "run stopped early: " + m.stop + " although delta > 0"});
       if (!std::isnan(t_dev))
-        failures.add({"threshold", "events, r = " + fmt(r), "delta = " + fmt(delta) + " (N = " + std::to_string(N) + ")",
+        failures.add({"threshold", "events, r = " + fmt(r),
+                      "delta = " + fmt(delta) + " (N = " + std::to_string(N) + ")",
                       "T(t) departs from delta = " + fmt(ref_delta) + " by > 20 % at t = " + fmt(t_dev) +
                           " (predicted t_valid ~ delta^-3 = " + fmt(t_valid) + ")"});
     }
@@ -173,13 +181,15 @@ void threshold_rows(const Context& ctx, CsvWriter& csv, FailureLog& failures) {
 }  // namespace
 
 void particle_stability(const Context& ctx, FailureLog& failures) {
-  CsvWriter collapse(ctx.path("stability_collapse.csv"), {"geometry", "N", "r", "realizations", "collapsed_fraction",
-                                                          "median_collapse_time", "N_c_predicted", "what"});
+  CsvWriter collapse(ctx.path("stability_collapse.csv"),
+                     {"geometry", "N", "r", "realizations", "collapsed_fraction", "median_collapse_time",
+                      "N_c_predicted", "what"});
   ctx.log("stability", "collapse of three particles on a line");
   three_particle_rows(collapse, failures);
   ring_rows(ctx, collapse, failures);
-  CsvWriter threshold(ctx.path("stability_threshold.csv"), {"r", "delta", "reference_delta", "t_valid_predicted",
-                                                            "t_departs", "max_rel_difference", "t_compared", "seconds", "stop"});
+  CsvWriter threshold(ctx.path("stability_threshold.csv"),
+                      {"r", "delta", "reference_delta", "t_valid_predicted", "t_departs",
+                       "max_rel_difference", "t_compared", "seconds", "stop"});
   threshold_rows(ctx, threshold, failures);
 }
 

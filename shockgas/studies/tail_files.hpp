@@ -6,8 +6,8 @@
 #include <memory>
 #include <vector>
 
-#include "shockgas/studies/common.hpp"
 #include "shockgas/compare/velocity_tail.hpp"
+#include "shockgas/studies/common.hpp"
 #include "shockgas/studies/tail_study.hpp"
 
 namespace shockgas::studies {

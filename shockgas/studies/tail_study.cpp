@@ -154,7 +154,8 @@ TailEnsemble run_size(std::size_t N, const TailStudyOptions& o) {
     run.cpu_seconds = thread_cpu_seconds() - start;
     std::lock_guard lock(mutex);
     ensemble.add(k, std::move(run));
-    if (o.progress) std::cerr << "tail: N = " << N << ": " << ++done << "/" << o.realizations << " realizations\n";
+    if (o.progress)
+      std::cerr << "tail: N = " << N << ": " << ++done << "/" << o.realizations << " realizations\n";
   });
   return ensemble;
 }

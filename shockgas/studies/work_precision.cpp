@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/studies/problems.hpp"
-#include "shockgas/studies/sections.hpp"
 #include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/studies/problems.hpp"
+#include "shockgas/studies/sections.hpp"
 
 namespace shockgas::studies {
 
@@ -51,7 +51,8 @@ std::vector<Setting> inviscid_settings(const Context& ctx) {
     p.cells = cells;
     const auto& names = solver_names();
     s.push_back({names.godunov, names.godunov, p, double(cells)});
-    for (continuum::Limiter lim : {continuum::Limiter::minmod, continuum::Limiter::vanleer, continuum::Limiter::mc}) {
+    for (continuum::Limiter lim :
+         {continuum::Limiter::minmod, continuum::Limiter::vanleer, continuum::Limiter::mc}) {
       p.limiter = lim;
       s.push_back({names.godunov2 + " (" + name_of(lim) + ")", names.godunov2, p, double(cells)});
     }
@@ -131,27 +132,28 @@ double shock_error(const Problem& pb, const ContinuumResult& exact, const std::v
   return worst;
 }
 
-const std::vector<std::string> kColumns = {"problem", "method", "parameter", "cells", "nu", "rtol",
-                                           "reference", "l1", "linf", "shock_error", "seconds", "note"};
+const std::vector<std::string> kColumns = {"problem", "method",      "parameter", "cells",
+                                           "nu",      "rtol",        "reference", "l1",
+                                           "linf",    "shock_error", "seconds",   "note"};
 
-void write_row(CsvWriter& csv, const Problem& pb, const Setting& s, const std::string& reference, const Norms& e,
-               double shock, double seconds, const std::string& note) {
+void write_row(CsvWriter& csv, const Problem& pb, const Setting& s, const std::string& reference,
+               const Norms& e, double shock, double seconds, const std::string& note) {
   const bool viscous = continuum::solver_info(s.solver).viscous;
   const bool adaptive = s.solver == solver_names().cvode || s.solver == solver_names().arkode;
   csv << pb.name << s.method << s.parameter << double(s.params.cells) << (viscous ? s.params.nu : NAN)
-      << (adaptive ? s.params.rtol : NAN) << reference << e.l1 << e.linf
-      << shock << seconds << note;
+      << (adaptive ? s.params.rtol : NAN) << reference << e.l1 << e.linf << shock << seconds << note;
   csv.end_row();
 }
 
 // Runs one setting; a failure goes to the log instead of the table.
-void run_setting(const Context& ctx, FailureLog& failures, CsvWriter& csv, const Problem& pb, const Setting& s,
-                 const ContinuumResult& reference, const std::string& reference_name) {
+void run_setting(const Context& ctx, FailureLog& failures, CsvWriter& csv, const Problem& pb,
+                 const Setting& s, const ContinuumResult& reference, const std::string& reference_name) {
   try {
     const Measured m = measure(ctx, s, pb);
     const double h = pb.field.length / double(s.params.cells);
     const Norms e = error_norms(m.result.v, reference.v, h);
-    const double shock = reference_name == solver_names().hopf_lax ? shock_error(pb, reference, m.result.v) : NAN;
+    const double shock =
+        reference_name == solver_names().hopf_lax ? shock_error(pb, reference, m.result.v) : NAN;
     write_row(csv, pb, s, reference_name, e, shock, m.seconds, m.result.method_note);
   } catch (const std::exception& e) {  // InputError (outside the range) or RunError (failed)
     rethrow_if_bench_failure(e);
@@ -184,7 +186,8 @@ void viscous(const Context& ctx, FailureLog& failures) {
     ContinuumParams ref = settings.front().params;
     ref.hopf_cole_path = continuum::HopfColePath::log;
     const ContinuumResult exact = continuum::solve(solver_names().hopf_cole, pb.field, ref, pb.t);
-    for (const Setting& s : settings) run_setting(ctx, failures, csv, pb, s, exact, solver_names().hopf_cole + " log");
+    for (const Setting& s : settings)
+      run_setting(ctx, failures, csv, pb, s, exact, solver_names().hopf_cole + " log");
   }
 }
 

@@ -15,16 +15,16 @@
 #include "app/run_command.hpp"
 #include "app/run_comparison.hpp"
 #include "app/run_dir_checks.hpp"
-#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/ensemble/checkpointer.hpp"
-#include "shockgas/app/output/frames.hpp"
 #include "shockgas/app/ensemble/realization_pool.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/output/frames.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/records/run_state_file.hpp"
+#include "shockgas/app/records/state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/simulate.hpp"
 #include "shockgas/version.hpp"
-#include "shockgas/app/records/state_file.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 

@@ -54,7 +54,8 @@ inline Options in_own_group() {
 class Child {
  public:
   Child(std::vector<std::string> args, const Options& o = {}) {
-    err_ = shockgas::testing_support::process_temp_path("shockgas-child-", std::to_string(counter()++) + ".err");
+    err_ =
+        shockgas::testing_support::process_temp_path("shockgas-child-", std::to_string(counter()++) + ".err");
     args.insert(args.begin(), shockgas_binary());
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
@@ -99,7 +100,7 @@ class Child {
     }
     return code_;
   }
-  int signal() const { return signal_; }      // the signal that ended it, 0 if it exited
+  int signal() const { return signal_; }            // the signal that ended it, 0 if it exited
   long peak_memory_kb() const { return peak_kb_; }  // ru_maxrss after wait()
   // Whether it stopped (SIGSTOP, as SHOCKGAS_FAULT=point:stop does) within the time.
   bool wait_stopped(std::chrono::seconds limit = std::chrono::seconds(120)) {

@@ -72,7 +72,8 @@ inline void compare_files(const std::filesystem::path& a, const std::filesystem:
     // A shard keeps each realization's timing as a dataset: /shard/{e}/{k}/wall_seconds.
     if (path.rfind("/shard/", 0) == 0 && excluded(path.substr(path.rfind('/') + 1))) continue;
     const auto u = x.read(path), v = y.read(path);
-    if (u.size() != v.size() || (!u.empty() && std::memcmp(u.data(), v.data(), u.size() * sizeof(double)) != 0))
+    if (u.size() != v.size() ||
+        (!u.empty() && std::memcmp(u.data(), v.data(), u.size() * sizeof(double)) != 0))
       out.push_back(a.string() + ": dataset " + path + " differs");
   }
   const auto oy = objects_of(dy);

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/app/records/checkpoint.hpp"
-#include "shockgas/app/files/manifest.hpp"
 #include "process_temp_path.hpp"
+#include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/files/sha256.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 
 namespace shockgas::app::testing {
 
@@ -40,7 +40,8 @@ inline std::string whole_run(const fs::path& dir, const std::string& scene) {
       const std::string rel = fs::relative(entry.path(), dir).generic_string();
       // checkpoint.bin and the running realizations' states: an interrupted run's
       // checkpoint beside the results it leaves (checkpoint.hpp).
-      if (rel != kManifestFile && !is_checkpoint_file(rel) && !m->find(rel)) return rel + " is not in the manifest";
+      if (rel != kManifestFile && !is_checkpoint_file(rel) && !m->find(rel))
+        return rel + " is not in the manifest";
     }
   return "";
 }
@@ -50,7 +51,8 @@ inline std::vector<std::string> leftovers(const fs::path& target) {
   std::vector<std::string> out;
   const std::string prefix = "." + target.filename().string() + ".";
   for (const auto& entry : fs::directory_iterator(target.parent_path()))
-    if (entry.path().filename().string().rfind(prefix, 0) == 0) out.push_back(entry.path().filename().string());
+    if (entry.path().filename().string().rfind(prefix, 0) == 0)
+      out.push_back(entry.path().filename().string());
   return out;
 }
 
@@ -93,14 +95,17 @@ inline const char* kSceneB =
 // `seconds`, a second one.
 inline fs::path fake_plot_script(const fs::path& dir, double seconds) {
   const fs::path script = dir / "fake_plot.py";
-  write_text(script,
-             "import json, os, sys, time\n"
-             "d = sys.argv[1]\n"
-             "open(os.path.join(os.path.dirname(os.path.abspath(d)), 'plotter.pid'), 'w').write(str(os.getpid()))\n"
-             "scene = json.load(open(os.path.join(d, 'summary.json')))['scene']\n"
-             "open(os.path.join(d, scene + '.png'), 'w').write('picture')\n"
-             "time.sleep(" + std::to_string(seconds) + ")\n"
-             "open(os.path.join(d, 'late.png'), 'w').write('late')\n");
+  write_text(
+      script,
+      "import json, os, sys, time\n"
+      "d = sys.argv[1]\n"
+      "open(os.path.join(os.path.dirname(os.path.abspath(d)), 'plotter.pid'), 'w').write(str(os.getpid()))\n"
+      "scene = json.load(open(os.path.join(d, 'summary.json')))['scene']\n"
+      "open(os.path.join(d, scene + '.png'), 'w').write('picture')\n"
+      "time.sleep(" +
+          std::to_string(seconds) +
+          ")\n"
+          "open(os.path.join(d, 'late.png'), 'w').write('late')\n");
   return script;
 }
 

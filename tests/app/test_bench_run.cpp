@@ -12,8 +12,8 @@
 #include <string>
 
 #include "child_run.hpp"
-#include "shockgas/app/files/manifest.hpp"
 #include "run_dir_checks.hpp"
+#include "shockgas/app/files/manifest.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -40,7 +40,7 @@ TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
   const std::size_t stability_failures = failures_of("continuum_stability");
   const auto [second, why_second] = bench("particles_stability");
   ASSERT_EQ(second, 0) << why_second;
-  EXPECT_EQ(read_text(out / "stability_cfl.csv"), cfl_before);  // kept, not measured again
+  EXPECT_EQ(read_text(out / "stability_cfl.csv"), cfl_before);        // kept, not measured again
   EXPECT_EQ(failures_of("continuum_stability"), stability_failures);  // and its failures with it
   const std::optional<Manifest> m = read_manifest(out);
   ASSERT_TRUE(m.has_value());

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/app/output/hdf5_file.hpp"
 #include "run_command.hpp"
 #include "run_comparison.hpp"
 #include "shockgas/app/cli/info.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
 
 namespace shockgas::app {
 namespace {

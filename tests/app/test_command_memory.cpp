@@ -58,10 +58,11 @@ TEST(CommandMemory, TheRunStaysWithinFortyBytesPerParticle) {
   const std::optional<double> before = status_bytes("VmRSS");
   if (!before || !reset_peak()) GTEST_SKIP() << "no /proc/self/status or clear_refs here";
   std::string said;
-  ASSERT_EQ(testing_support::run_saying({"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(),
-                                         "-q", "--no-plots", "--set", "particles.threads=1"},
-                                        said),
-            0)
+  ASSERT_EQ(
+      testing_support::run_saying({"run", (dir / "scene.toml").string(), "--out", (dir / "out").string(),
+                                   "-q", "--no-plots", "--set", "particles.threads=1"},
+                                  said),
+      0)
       << said;
   const double grown = *status_bytes("VmHWM") - *before;
   EXPECT_LE(grown, 40.0 * N + 8.0 * (1 << 20)) << grown / N << " bytes per particle";

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "run_command.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/output/frames.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
-#include "run_command.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

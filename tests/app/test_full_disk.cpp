@@ -15,9 +15,9 @@
 #include <string>
 
 #include "child_run.hpp"
-#include "shockgas/app/files/manifest.hpp"
-#include "shockgas/app/directory/result_check.hpp"
 #include "run_dir_checks.hpp"
+#include "shockgas/app/directory/result_check.hpp"
+#include "shockgas/app/files/manifest.hpp"
 #include "two_runs.hpp"
 
 namespace shockgas::app {
@@ -64,8 +64,8 @@ TEST(FullDisk, TheDefaultSceneOnATwoMegabyteDiskEndsCleanlyAndWritesNothing) {
   SmallDisk disk("fulldisk-default", "2m");
   REQUIRE_MOUNTED(disk);
   const fs::path scene = fs::path(SHOCKGAS_SOURCE_DIR) / "data/scenes/default.toml";
-  const auto [code, err] =
-      run_child({"run", scene.string(), "--set", "initial.N=5000", "--out", (disk.dir() / "D").string(), "-q"});
+  const auto [code, err] = run_child(
+      {"run", scene.string(), "--set", "initial.N=5000", "--out", (disk.dir() / "D").string(), "-q"});
   EXPECT_TRUE(code == 1 || code == 2) << "status " << code << "\n" << err;
   EXPECT_FALSE(fs::exists(disk.dir() / "D"));
   EXPECT_TRUE(leftovers(disk.dir() / "D").empty());
@@ -100,7 +100,8 @@ TEST(FullDisk, ADiskThatFillsDuringTheRunLeavesThePreviousResults) {
   EXPECT_NE(err.find((fs::weakly_canonical(out) / "result.h5").string()), std::string::npos) << err;
   EXPECT_EQ(err.find(".tmp-"), std::string::npos) << err;
   EXPECT_NE(err.find("(No space left on device)"), std::string::npos) << err;
-  EXPECT_NE(run.err().find("the results in the output directory are as they were"), std::string::npos) << run.err();
+  EXPECT_NE(run.err().find("the results in the output directory are as they were"), std::string::npos)
+      << run.err();
   EXPECT_EQ(whole_run(out, "alpha"), "");
   EXPECT_TRUE(leftovers(out).empty()) << leftovers(out).front();
 }
@@ -163,7 +164,8 @@ TEST(FullDisk, TooLittleRoomIsRefusedBeforeAnyWork) {
   const TwoRuns s = alpha_done(disk.dir());
   const fs::path& out = s.out;
   disk.fill(30000);
-  const auto [code, err] = run_child({"run", s.b.string(), "--out", out.string(), "-q", "--no-plots", "--force"});
+  const auto [code, err] =
+      run_child({"run", s.b.string(), "--out", out.string(), "-q", "--no-plots", "--force"});
   EXPECT_EQ(code, 2) << err;
   EXPECT_NE(err.find("a file system with room for the results"), std::string::npos) << err;
   EXPECT_EQ(whole_run(out, "alpha"), "");
@@ -189,7 +191,8 @@ TEST(FullDisk, AMountPointIsNotReplaced) {
   REQUIRE_MOUNTED(disk);
   const fs::path scene = disk.dir().parent_path() / "mountpoint-alpha.toml";
   write_text(scene, kSceneA);
-  const auto [code, err] = run_child({"run", scene.string(), "--out", disk.dir().string(), "-q", "--no-plots"});
+  const auto [code, err] =
+      run_child({"run", scene.string(), "--out", disk.dir().string(), "-q", "--no-plots"});
   EXPECT_EQ(code, 2) << err;
   EXPECT_NE(err.find("not a mount point"), std::string::npos) << err;
 }

@@ -33,8 +33,8 @@ std::pair<int, std::string> command(std::vector<std::string> args) {
 std::pair<int, std::string> run_text(const fs::path& root, const std::string& text,
                                      std::vector<std::string> extra = {}) {
   write_text(root / "scene.toml", text);
-  std::vector<std::string> args = {"run", (root / "scene.toml").string(), "--out", (root / "out").string(), "-q",
-                                   "--no-plots"};
+  std::vector<std::string> args = {
+      "run", (root / "scene.toml").string(), "--out", (root / "out").string(), "-q", "--no-plots"};
   args.insert(args.end(), extra.begin(), extra.end());
   auto result = command(args);
   if (result.first == 2) {
@@ -70,8 +70,9 @@ TEST(InputMessages, ASolverNamedTwiceIsRefusedAtItsLine) {
 TEST(InputMessages, ABadBodiesFileWritesNothing) {
   const fs::path root = fresh_dir("input-bodies");
   write_text(root / "bodies.txt", "0 1\n1 x\n2 0.5\n");
-  expect_bad(run_text(root, "[initial]\nvelocities = \"file\"\nfile = \"bodies.txt\"\n[particles]\nt_end = 1\n"),
-             "initial.file");
+  expect_bad(
+      run_text(root, "[initial]\nvelocities = \"file\"\nfile = \"bodies.txt\"\n[particles]\nt_end = 1\n"),
+      "initial.file");
   // A word or a fourth number after x v [m] was dropped without a word, and a
   // line that did not start with a number (a header, nan, 1e500) was skipped.
   for (const char* line : {"0 1 junk\n", "0 1 2 3\n", "x v m\n0 1\n", "nan 2\n", "1e500 0\n"}) {
@@ -115,7 +116,8 @@ TEST(InputMessages, AnUnknownTableInASetNamesTheSet) {
 
 TEST(InputMessages, SpacesAroundTheEqualsSignOfASetAreAllowed) {
   const fs::path root = fresh_dir("input-spaces");
-  const auto [code, err] = run_text(root, kSceneA, {"--set", "particles.r = 0.3", "--set", "particles.nope = 1"});
+  const auto [code, err] =
+      run_text(root, kSceneA, {"--set", "particles.r = 0.3", "--set", "particles.nope = 1"});
   expect_bad({code, err}, "--set particles.nope = 1: particles.nope = 1 is not allowed");
   EXPECT_EQ(run_text(root, kSceneA, {"--set", "particles.r = 0.3"}).first, 0);
   EXPECT_NE(read_text(root / "out" / "summary.json").find("\"r\": 0.3"), std::string::npos);
@@ -127,7 +129,8 @@ TEST(InputMessages, ANegativeCountSaysTheRule) {
 }
 
 TEST(InputMessages, ATomlSyntaxErrorSaysSo) {
-  expect_bad(run_text(fresh_dir("input-syntax"), "[particles\nr = 0.5\n"), "scene.toml:1:11: TOML syntax error: ");
+  expect_bad(run_text(fresh_dir("input-syntax"), "[particles\nr = 0.5\n"),
+             "scene.toml:1:11: TOML syntax error: ");
 }
 
 TEST(InputMessages, ADeeplyNestedTableGivesAShortMessage) {
@@ -145,7 +148,8 @@ TEST(InputMessages, ADeeplyNestedTableGivesAShortMessage) {
 
 TEST(InputMessages, AnErrorInASweepVariantNamesTheVariant) {
   const fs::path root = fresh_dir("input-sweep");
-  const auto r = run_text(root, std::string(kSceneA) + "[sweep]\nvariants = [\"particles.r=0.5\", \"particles.r=2\"]\n");
+  const auto r =
+      run_text(root, std::string(kSceneA) + "[sweep]\nvariants = [\"particles.r=0.5\", \"particles.r=2\"]\n");
   expect_bad(r, "scene.toml:14 (sweep variant 2: particles.r=2): particles.r = 2 is not allowed");
   EXPECT_EQ(r.second.find("--set"), std::string::npos) << r.second;
 }
@@ -154,9 +158,11 @@ TEST(InputMessages, TheSceneNameIsANameNotAPath) {
   const fs::path root = fresh_dir("input-name");
   fs::create_directories(root / "a" / "b");
   const std::string body = "[initial]\nN = 100\n[particles]\nt_end = 1\n[output]\nplots = false\n";
-  for (const std::string name : {"../../escape", "/tmp/absolute", "a/b", ".hidden", "bell\\u0007", "back\\\\slash"}) {
+  for (const std::string name :
+       {"../../escape", "/tmp/absolute", "a/b", ".hidden", "bell\\u0007", "back\\\\slash"}) {
     write_text(root / "scene.toml", "[scene]\nname = \"" + name + "\"\n" + body);
-    const auto [code, err] = run_child({"run", (root / "scene.toml").string(), "-q"}, in_dir(root / "a" / "b"));
+    const auto [code, err] =
+        run_child({"run", (root / "scene.toml").string(), "-q"}, in_dir(root / "a" / "b"));
     EXPECT_EQ(code, 2) << name << "\n" << err;
     EXPECT_NE(err.find("scene.name"), std::string::npos) << err;
   }

@@ -12,9 +12,9 @@
 #include <string>
 
 #include "child_run.hpp"
-#include "shockgas/app/files/file_problem.hpp"
 #include "run_dir_checks.hpp"
 #include "shockgas/app/cli/info.hpp"
+#include "shockgas/app/files/file_problem.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -26,7 +26,8 @@ const fs::path& pristine() {
   static const fs::path dir = [] {
     const fs::path root = fresh_dir("integrity");
     write_text(root / "scene.toml", std::string(kSceneA) + "[output]\nplots = false\n");
-    const auto [code, err] = run_child({"run", (root / "scene.toml").string(), "--out", (root / "run").string(), "-q"});
+    const auto [code, err] =
+        run_child({"run", (root / "scene.toml").string(), "--out", (root / "run").string(), "-q"});
     EXPECT_EQ(code, 0) << err;
     return root / "run";
   }();

@@ -10,15 +10,15 @@
 #include <deque>
 #include <mutex>
 
-#include "shockgas/app/ensemble/checkpointer.hpp"
-#include "shockgas/app/jobs/job_ensembles.hpp"
 #include "process_temp_path.hpp"
-#include "shockgas/app/run/progress_bar.hpp"
+#include "shockgas/app/ensemble/checkpointer.hpp"
 #include "shockgas/app/ensemble/realization_pool.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/jobs/job_ensembles.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/simulate.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "app/run_comparison.hpp"
-#include "shockgas/app/records/checkpoint.hpp"
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 
 namespace shockgas::app {
 namespace {

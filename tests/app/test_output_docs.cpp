@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "run_command.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/output_layout.hpp"
-#include "run_command.hpp"
 #include "shockgas/core/initial_condition.hpp"
 
 namespace shockgas::app {

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "child_run.hpp"
-#include "shockgas/app/run/progress_bar.hpp"
 #include "run_dir_checks.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
 
 namespace shockgas::app {
 namespace {

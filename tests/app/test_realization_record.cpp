@@ -9,10 +9,10 @@
 #include <random>
 
 #include "shockgas/app/ensemble/ensemble_plan.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/records/realization_record.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/simulate.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/app/output/hdf5_file.hpp"
 #include "run_command.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
 
 namespace shockgas::app {
 namespace {

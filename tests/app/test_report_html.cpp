@@ -8,9 +8,9 @@
 #include <sstream>
 #include <string>
 
-#include "shockgas/app/report/html_page.hpp"
-#include "shockgas/app/output/output_layout.hpp"
 #include "run_command.hpp"
+#include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/report/html_page.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app {

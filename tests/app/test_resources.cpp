@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "child_run.hpp"
-#include "shockgas/app/run/resources.hpp"
 #include "run_dir_checks.hpp"
-#include "shockgas/app/scene/scene.hpp"
 #include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/run/resources.hpp"
+#include "shockgas/app/scene/scene.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -44,10 +44,12 @@ TEST(Resources, SizesThatCannotFitAreRefusedNamingTheKeyBeforeAnyWork) {
       {"particles.spacetime_frames=1e8", "particles.spacetime_frames = 100000000 is not allowed"},
   };
   for (const auto& [set, says] : cases) {
-    const auto [code, err] = run_child({"run", kDefault, "--set", set, "--out", (root / "out").string(), "-q"});
+    const auto [code, err] =
+        run_child({"run", kDefault, "--set", set, "--out", (root / "out").string(), "-q"});
     EXPECT_EQ(code, 2) << set << "\n" << err;
     EXPECT_NE(err.find(says), std::string::npos) << err;
-    EXPECT_NE(err.find("a scene that fits in the memory available: it needs about"), std::string::npos) << err;
+    EXPECT_NE(err.find("a scene that fits in the memory available: it needs about"), std::string::npos)
+        << err;
     EXPECT_NE(err.find(" available ("), std::string::npos) << err;  // the limit and where it comes from
     EXPECT_FALSE(fs::exists(root / "out")) << set;
     EXPECT_TRUE(leftovers(root / "out").empty()) << set;
@@ -86,7 +88,8 @@ TEST(Resources, IntegerKeysTakeWholeFloatsAndRefuseOthers) {
 // The limit of the process, not the machine's memory: a run under `ulimit -v`
 // is refused naming it.
 TEST(Resources, TheProcessLimitIsTheOneThatCounts) {
-  if (kSanitized) GTEST_SKIP() << "an AddressSanitizer build cannot start under a 400 MiB address-space limit";
+  if (kSanitized)
+    GTEST_SKIP() << "an AddressSanitizer build cannot start under a 400 MiB address-space limit";
   const fs::path root = fresh_dir("resources-ulimit");
   Options o;
   o.in_child = [] {
@@ -113,7 +116,8 @@ TEST(Resources, ACgroupLimitIsRead) {
   write_text(root / "sys/fs/cgroup/job/run/memory.max", "512000000\n");
   write_text(root / "sys/fs/cgroup/job/run/memory.current", "112000000\n");
   const MemoryLimit limit = memory_limit(root);
-  if (limit.source.find("ulimit") != std::string::npos) GTEST_SKIP() << "a ulimit below 400 MB: " << limit.source;
+  if (limit.source.find("ulimit") != std::string::npos)
+    GTEST_SKIP() << "a ulimit below 400 MB: " << limit.source;
   EXPECT_EQ(limit.bytes, 400e6);
   EXPECT_EQ(limit.source, "the cgroup's memory.max");
   // Without the cgroup, MemAvailable.

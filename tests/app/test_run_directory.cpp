@@ -16,9 +16,9 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
+#include "shockgas/app/cli/command.hpp"
 #include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/directory/run_target.hpp"
-#include "shockgas/app/cli/command.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -55,7 +55,8 @@ TEST(RunDirectory, ASceneRunAgainReplacesItsResultsAsAWhole) {
   const Dirs d = setup("rundir-again");
   ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots"}), 0);
   EXPECT_EQ(whole_run(d.out, "alpha"), "");
-  ASSERT_EQ(run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots", "--set", "particles.r=0.3"}), 0);
+  ASSERT_EQ(
+      run({"run", d.a.string(), "--out", d.out.string(), "-q", "--no-plots", "--set", "particles.r=0.3"}), 0);
   EXPECT_EQ(whole_run(d.out, "alpha"), "");
   EXPECT_NE(read_text(d.out / "summary.json").find("particles.r=0.3"), std::string::npos);
   EXPECT_TRUE(leftovers(d.out).empty()) << leftovers(d.out).front();
@@ -97,7 +98,11 @@ TEST(RunDirectory, FilesARunDidNotWriteAreNeverReplaced) {
 TEST(RunDirectory, TheRootHomeSourceAndCurrentDirectoriesAreRefused) {
   const Dirs d = setup("rundir-protected");
   const fs::path cwd = fs::current_path();
-  std::vector<std::string> refused = {".", "/", SHOCKGAS_SOURCE_DIR, cwd.parent_path().string(), "..",
+  std::vector<std::string> refused = {".",
+                                      "/",
+                                      SHOCKGAS_SOURCE_DIR,
+                                      cwd.parent_path().string(),
+                                      "..",
                                       std::string(SHOCKGAS_SOURCE_DIR) + "/.."};
   if (const char* home = std::getenv("HOME")) refused.push_back(home);
   for (const auto& out : refused) {

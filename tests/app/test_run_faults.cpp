@@ -57,19 +57,27 @@ struct Point {
 
 TEST(RunFaults, AKillAtEachNamedPointLeavesOneWholeRun) {
   const std::vector<Point> points = {
-      {"compute", "alpha"},           {"write:result.h5:1", "alpha"}, {"write:result.h5:20", "alpha"},
-      {"write:summary.json", "alpha"}, {"write:report.md", "alpha"},    {"plot:10", "alpha"},
-      {"write:manifest.json", "alpha"}, {"swap", "alpha"},             {"swapped", "beta"},
+      {"compute", "alpha"},
+      {"write:result.h5:1", "alpha"},
+      {"write:result.h5:20", "alpha"},
+      {"write:summary.json", "alpha"},
+      {"write:report.md", "alpha"},
+      {"plot:10", "alpha"},
+      {"write:manifest.json", "alpha"},
+      {"swap", "alpha"},
+      {"swapped", "beta"},
   };
   for (const auto& p : points) {
     const Scenario s = setup("faults-" + std::to_string(&p - points.data()));
-    Child run(run_beta(s), with_env({{"SHOCKGAS_FAULT", p.fault}, {"SHOCKGAS_PLOT_SCRIPT", s.script.string()}}));
+    Child run(run_beta(s),
+              with_env({{"SHOCKGAS_FAULT", p.fault}, {"SHOCKGAS_PLOT_SCRIPT", s.script.string()}}));
     run.wait();
     ASSERT_EQ(run.signal(), SIGKILL) << p.fault << ": the point was not reached\n" << run.err();
     EXPECT_EQ(whole_run(s.out, p.holds), "") << p.fault;
     if (p.fault.rfind("plot", 0) == 0) {  // the plotting process dies with shockgas
       const pid_t plotter = std::stoi(read_text(s.root / "plotter.pid"));
-      for (int i = 0; i < 500 && process_alive(plotter); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      for (int i = 0; i < 500 && process_alive(plotter); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
       EXPECT_FALSE(process_alive(plotter)) << "the plotting process outlived a killed shockgas";
     }
     expect_recovers(s, p.fault);
@@ -86,7 +94,8 @@ TEST(RunFaults, AKillAtRandomTimesLeavesOneWholeRun) {
   std::mt19937 rng(2024);
   std::uniform_real_distribution<double> when(0.0, span);
   for (int k = 0; k < 6; ++k) {
-    ASSERT_EQ(run_child({"run", s.a.string(), "--out", s.out.string(), "-q", "--no-plots", "--force"}).first, 0);
+    ASSERT_EQ(run_child({"run", s.a.string(), "--out", s.out.string(), "-q", "--no-plots", "--force"}).first,
+              0);
     const double t = when(rng);
     Child run(run_beta(s), with_env({{"SHOCKGAS_PLOT_SCRIPT", s.script.string()}}));
     std::this_thread::sleep_for(std::chrono::duration<double>(t));

@@ -2,9 +2,9 @@
 // key, value and the allowed range.
 #include <gtest/gtest.h>
 
+#include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -103,15 +103,15 @@ TEST(Scene, SyntaxError) {
 }
 
 TEST(Scene, OverrideSetsValuesReadAsToml) {
-  const Scene s = parse_scene(kMinimal, "s.toml",
-                              {"particles.r=0.25", "initial.N=1000", "continuum.solvers=[\"godunov\"]",
-                               "initial.positions=random"});
+  const Scene s = parse_scene(
+      kMinimal, "s.toml",
+      {"particles.r=0.25", "initial.N=1000", "continuum.solvers=[\"godunov\"]", "initial.positions=random"});
   EXPECT_DOUBLE_EQ(s.particles.r, 0.25);
   EXPECT_EQ(s.initial.N, 1000u);
   ASSERT_EQ(s.continuum.solvers.size(), 1u);
   EXPECT_EQ(s.continuum.solvers[0], "godunov");
   EXPECT_EQ(name_of(s.initial.positions), "random");  // a bare word is a string
-  EXPECT_TRUE(s.has_continuum);               // --set creates the table
+  EXPECT_TRUE(s.has_continuum);                       // --set creates the table
 }
 
 TEST(Scene, OverrideOfUnknownKeyIsTheSameError) {
@@ -141,13 +141,15 @@ TEST(Scene, DefaultSceneParsesToTheDefaults) {
 }
 
 TEST(Scene, ExpressionThatDoesNotParse) {
-  const auto e = error_of("[initial]\nvelocities = \"expression\"\nv0 = \"sin(2*pi*x\"\n[continuum]\nt_end = 0.1\n");
+  const auto e =
+      error_of("[initial]\nvelocities = \"expression\"\nv0 = \"sin(2*pi*x\"\n[continuum]\nt_end = 0.1\n");
   EXPECT_EQ(e.key(), "initial.v0");
   EXPECT_EQ(e.where(), "bad.toml:3");
 }
 
 TEST(Scene, ExpressionNotFiniteOnDomain) {
-  const auto e = error_of("[initial]\nvelocities = \"expression\"\nv0 = \"1/(x-0.5)\"\n[continuum]\nt_end = 0.1\n");
+  const auto e =
+      error_of("[initial]\nvelocities = \"expression\"\nv0 = \"1/(x-0.5)\"\n[continuum]\nt_end = 0.1\n");
   EXPECT_EQ(e.key(), "initial.v0");
 }
 

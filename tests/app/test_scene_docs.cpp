@@ -7,10 +7,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "shockgas/app/scene/scene_schema.hpp"
-#include "shockgas/app/scene/scene.hpp"
-#include "shockgas/core/error.hpp"
 #include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/scene/scene.hpp"
+#include "shockgas/app/scene/scene_schema.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/app/output/hdf5_file.hpp"
-#include "shockgas/app/files/manifest.hpp"
 #include "run_command.hpp"
 #include "run_comparison.hpp"
+#include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -112,7 +112,8 @@ TEST_F(Shards, AnAnimatedRunMergesWithItsFrames) {
   ASSERT_EQ(merge({"s0", "s1"}, "merged"), 0) << said_;
   EXPECT_EQ(testing::result_differences(dir_ / "whole", dir_ / "merged"), std::vector<std::string>{});
   bool has_frames = false;
-  for (const auto& d : Hdf5File::open(path("merged/result.h5")).datasets()) has_frames |= d.path == "/animation/t";
+  for (const auto& d : Hdf5File::open(path("merged/result.h5")).datasets())
+    has_frames |= d.path == "/animation/t";
   EXPECT_TRUE(has_frames);
 }
 

@@ -13,10 +13,10 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
-#include "two_runs.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/jobs/run_scene.hpp"
 #include "shockgas/core/interrupt.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
+#include "two_runs.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -56,7 +56,8 @@ TEST(Signals, SigintAndSigtermDuringComputeEndTheRunWith130And143) {
     kill(run.pid(), sig);
     kill(run.pid(), SIGCONT);
     EXPECT_EQ(run.wait(), 128 + sig) << run.err();
-    EXPECT_NE(run.err().find("interrupted by signal " + std::to_string(sig) + " (SIG"), std::string::npos) << run.err();
+    EXPECT_NE(run.err().find("interrupted by signal " + std::to_string(sig) + " (SIG"), std::string::npos)
+        << run.err();
     expect_unchanged(s);
   }
 }

@@ -8,10 +8,10 @@
 #include <string>
 
 #include "app/run_dir_checks.hpp"
+#include "shockgas/app/records/state_file.hpp"
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/state_sink.hpp"
-#include "shockgas/app/records/state_file.hpp"
 
 namespace shockgas::app {
 namespace {

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "child_run.hpp"
-#include "shockgas/app/files/manifest.hpp"
-#include "shockgas/app/directory/result_check.hpp"
 #include "run_dir_checks.hpp"
+#include "shockgas/app/directory/result_check.hpp"
+#include "shockgas/app/files/manifest.hpp"
 
 namespace shockgas::app {
 namespace {

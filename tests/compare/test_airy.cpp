@@ -1,5 +1,3 @@
-#include "shockgas/compare/airy.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +5,7 @@
 #include <numbers>
 
 #include "reference_table.hpp"
+#include "shockgas/compare/airy.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {

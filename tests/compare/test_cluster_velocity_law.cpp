@@ -1,17 +1,16 @@
-#include "shockgas/compare/cluster_velocity_law.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numeric>
 #include <vector>
 
-#include "shockgas/compare/gauss_legendre.hpp"
 #include "reference_table.hpp"
 #include "shockgas/compare/airy.hpp"
 #include "shockgas/compare/chernoff.hpp"
 #include "shockgas/compare/chernoff_table.hpp"
+#include "shockgas/compare/cluster_velocity_law.hpp"
 #include "shockgas/compare/eulerian_velocity_law.hpp"
+#include "shockgas/compare/gauss_legendre.hpp"
 #include "shockgas/compare/goodness_of_fit.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/initial_condition.hpp"

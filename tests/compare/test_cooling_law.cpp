@@ -1,9 +1,8 @@
-#include "shockgas/compare/cooling_law.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "shockgas/compare/cooling_law.hpp"
 #include "shockgas/compare/theory.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
@@ -55,7 +54,7 @@ TEST(CoolingLaw, CrossoverBetweenTwoPowerLawsIsAtTheirMeetingPoint) {
   for (double ti : t) T.push_back(std::pow(ti / t1, -2.0) + std::pow(ti / t1, -2.0 / 3.0));
   const Crossovers c = find_crossovers(t, T, 0.9);
   EXPECT_NEAR(c.t_stick / t1, 1.0, 1e-4);  // measured 2e-8
-  EXPECT_TRUE(std::isnan(c.t_dissip));  // alpha starts below -1: no downward crossing
+  EXPECT_TRUE(std::isnan(c.t_dissip));     // alpha starts below -1: no downward crossing
   EXPECT_NEAR(c.t_stick_theory, sticking_time(0.9), 1e-9);
   EXPECT_NEAR(c.t_dissip_theory, 20.0, 1e-12);
 }
@@ -69,7 +68,7 @@ TEST(CoolingLaw, DissipationCrossoverIsRecovered) {
   const Crossovers c = find_crossovers(t, T, 0.9);
   // As above: second-order differences at 200 samples per decade.
   EXPECT_NEAR(c.t_dissip / t0, 1.0, 1e-4);  // measured 5e-8
-  EXPECT_TRUE(std::isnan(c.t_stick));  // alpha never rises again
+  EXPECT_TRUE(std::isnan(c.t_stick));       // alpha never rises again
   EXPECT_NEAR(c.min_exponent, -2.0, 1e-3);  // -2 u^2 / (1 + u^2) at u = 5000
 }
 
@@ -80,7 +79,8 @@ TEST(CoolingLaw, ThreeRegimesGiveBothCrossovers) {
   const double r = 0.99, eps = 0.005, ts = sticking_time(r);
   const auto t = log_times(0, 7, 1401);
   std::vector<double> T;
-  for (double ti : t) T.push_back(1.0 / (1.0 + std::pow(eps * ti, 2.0)) + eps * std::pow(ti / ts, -2.0 / 3.0));
+  for (double ti : t)
+    T.push_back(1.0 / (1.0 + std::pow(eps * ti, 2.0)) + eps * std::pow(ti / ts, -2.0 / 3.0));
   const Crossovers c = find_crossovers(t, T, r);
   // The two crossovers are 1.2 decades apart: each is displaced by the other
   // regime by a few percent (alpha = -1 and -4/3 are only exact for two laws;

@@ -1,9 +1,8 @@
-#include "shockgas/compare/deposit.hpp"
-
 #include <gtest/gtest.h>
 
 #include <numeric>
 
+#include "shockgas/compare/deposit.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
 

@@ -1,5 +1,3 @@
-#include "shockgas/compare/eulerian_velocity_law.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +5,7 @@
 #include <vector>
 
 #include "shockgas/compare/chernoff.hpp"
+#include "shockgas/compare/eulerian_velocity_law.hpp"
 #include "shockgas/compare/goodness_of_fit.hpp"
 #include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/core/error.hpp"

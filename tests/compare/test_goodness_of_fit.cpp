@@ -1,10 +1,9 @@
-#include "shockgas/compare/goodness_of_fit.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
+#include "shockgas/compare/goodness_of_fit.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::compare {

@@ -1,9 +1,8 @@
-#include "shockgas/compare/matching.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
+#include "shockgas/compare/matching.hpp"
 #include "shockgas/compare/shock_detection.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
@@ -100,8 +99,7 @@ TEST(Matching, GreedyOnManyRandomPairsIsExact) {
 TEST(Matching, AutomaticDistanceIsAQuarterOfTheShockSpacing) {
   // Four shocks on a ring of 100: automatic distance 100 / 16 = 6.25. A cluster
   // 6 away matches, one 7 away does not.
-  const std::vector<continuum::Shock> shocks{
-      {10, 1, -1, 0}, {35, 1, -1, 0}, {60, 1, -1, 0}, {85, 1, -1, 0}};
+  const std::vector<continuum::Shock> shocks{{10, 1, -1, 0}, {35, 1, -1, 0}, {60, 1, -1, 0}, {85, 1, -1, 0}};
   const std::vector<Cluster> clusters{cluster_at(16.0, 1.0), cluster_at(42.0, 1.0)};
   const MatchResult r = match_shocks_to_clusters(shocks, clusters, 100.0);
   EXPECT_DOUBLE_EQ(r.max_distance, 6.25);

@@ -1,9 +1,8 @@
-#include "shockgas/compare/sawtooth.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "shockgas/compare/sawtooth.hpp"
 #include "shockgas/compare/shock_detection.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"

@@ -1,10 +1,9 @@
-#include "shockgas/compare/shock_detection.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
+#include "shockgas/compare/shock_detection.hpp"
 #include "shockgas/core/error.hpp"
 #include "synthetic_fields.hpp"
 

@@ -1,9 +1,8 @@
-#include "shockgas/compare/snapshot_comparison.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "shockgas/compare/snapshot_comparison.hpp"
 #include "shockgas/continuum/hopf_lax.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/sticky_hull.hpp"

@@ -1,9 +1,8 @@
-#include "shockgas/compare/statistics.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "shockgas/compare/statistics.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
 

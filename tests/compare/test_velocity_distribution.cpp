@@ -1,9 +1,8 @@
-#include "shockgas/compare/velocity_distribution.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "shockgas/compare/velocity_distribution.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
 
@@ -98,8 +97,8 @@ TEST(VelocityDistribution, NormalisationAndWeights) {
   // Two samples of weights 1 and 3 at t = 8 (t^(1/3) = 2): z = 0.5 and -1.5.
   const std::vector<double> v{0.25, -0.75}, w{1.0, 3.0};
   const ScaledDistribution d = scaled_histogram(v, w, 8.0, 2.0, 4);  // bins of width 1
-  EXPECT_DOUBLE_EQ(d.density[0], 0.75);  // [-2, -1)
-  EXPECT_DOUBLE_EQ(d.density[2], 0.25);  // [0, 1)
+  EXPECT_DOUBLE_EQ(d.density[0], 0.75);                              // [-2, -1)
+  EXPECT_DOUBLE_EQ(d.density[2], 0.25);                              // [0, 1)
   const std::vector<double> edges{-1, 0, 2}, counts{1, 3};
   const ScaledDistribution r = rescale_v_histogram(edges, counts, 8.0);
   EXPECT_DOUBLE_EQ(r.z_edges[2], 4.0);

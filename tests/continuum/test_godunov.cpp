@@ -56,7 +56,8 @@ constexpr double kDx = 1.0 / kCells, kT = 0.4;
 
 TEST_P(GodunovRiemann, ShockMovesAtRankineHugoniotSpeedAndHoldsItsMass) {
   const BurgersRiemannProblem prob{1.0, 0.0, 1.0, 1.0, 0.5};  // shock at 0.5 + 0.5 t = 0.7
-  const auto r = solve_godunov(riemann_field(prob), params(kCells, "outflow", GetParam()), kT, GetParam().order);
+  const auto r =
+      solve_godunov(riemann_field(prob), params(kCells, "outflow", GetParam()), kT, GetParam().order);
   // A captured shock is a steady profile a couple of cells wide around the exact
   // position, so L1 error = C dx with C fixed by the scheme (measured at 100-800
   // cells: C = 0.35 first order, 0.18-0.21 second); bound 0.5 dx.
@@ -73,7 +74,8 @@ TEST_P(GodunovRiemann, ShockMovesAtRankineHugoniotSpeedAndHoldsItsMass) {
 
 TEST_P(GodunovRiemann, RarefactionFollowsTheFan) {
   const BurgersRiemannProblem prob{0.2, 1.0, 1.0, 1.0, 0.5};  // fan over [0.58, 0.9]
-  const auto r = solve_godunov(riemann_field(prob), params(kCells, "outflow", GetParam()), kT, GetParam().order);
+  const auto r =
+      solve_godunov(riemann_field(prob), params(kCells, "outflow", GetParam()), kT, GetParam().order);
   // Error concentrated at the two kinks of the fan: first order O(dx log(1/dx))
   // (measured 1.0, 1.21, 1.41, 1.63 dx at 100..800 cells), second order C dx
   // (measured 0.17-0.25 dx). Bounds: 1.5x the measured value at 200 cells.
@@ -83,7 +85,8 @@ TEST_P(GodunovRiemann, RarefactionFollowsTheFan) {
 
 TEST_P(GodunovRiemann, TransonicRarefactionOpensAtTheInterface) {
   const BurgersRiemannProblem prob{-1.0, 1.0, 1.0, 1.0, 0.5};  // fan over [0.1, 0.9]
-  const auto r = solve_godunov(riemann_field(prob), params(kCells, "outflow", GetParam()), kT, GetParam().order);
+  const auto r =
+      solve_godunov(riemann_field(prob), params(kCells, "outflow", GetParam()), kT, GetParam().order);
   // As for the rarefaction, plus the first-order scheme's dog-leg at the sonic
   // point: measured 2.5 dx first order, 0.27-0.48 dx second; bounds 1.5x that.
   const double bound = GetParam().order == 1 ? 3.75 : 0.75;

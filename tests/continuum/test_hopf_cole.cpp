@@ -190,7 +190,8 @@ TEST(HopfCole, RefusesBadInput) {
     EXPECT_EQ(e.key(), "continuum.nu");
   }
   p.nu = 1e-3;
-  // A path is named through its declaration (shockgas/continuum/params.cpp): an unknown name is refused there.
+  // A path is named through its declaration (shockgas/continuum/params.cpp): an unknown name is refused
+  // there.
   try {
     sc::parameters().set(p, "hopf_cole_path", shockgas::ParameterValue::of("spectral"));
     FAIL() << "unknown path accepted";

@@ -53,9 +53,10 @@ struct SineReference {
   }
   double lagrangian(double y) const {
     const double k = std::floor(y + 0.5);  // y - k in [-1/2, 1/2)
-    const double lo = -qL, hi = qL;       // q_R - 1 = -q_L
+    const double lo = -qL, hi = qL;        // q_R - 1 = -q_L
     const double yc = y - k;
-    const double q = bisect([&](double s) { return s + t * std::sin(2 * kPi * s) - yc; }, lo - 1e-3, hi + 1e-3);
+    const double q =
+        bisect([&](double s) { return s + t * std::sin(2 * kPi * s) - yc; }, lo - 1e-3, hi + 1e-3);
     return q + k;
   }
   double psi(double y) const {
@@ -136,7 +137,7 @@ TEST(HopfLax, RiemannShockAndEmptyFan) {
     return t / 2 + (xs - t);
   };
   const auto M = [&](double x) { return x <= t ? 0.0 : (x < xs ? x - t : x); };  // int_0^x rho
-  const std::size_t cells = 73;  // no edge on x = t or x = xs
+  const std::size_t cells = 73;                                                  // no edge on x = t or x = xs
   const double dx = 1.0 / cells;
   const ContinuumResult r = solve_hopf_lax(f, cells, t);
   for (std::size_t i = 0; i < cells; ++i) {

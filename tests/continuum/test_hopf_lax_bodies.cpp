@@ -135,9 +135,8 @@ TEST(HopfLaxBodies, MeanVelocityIsAGalileanShift) {
   ASSERT_EQ(moving.shocks.size(), rest.shocks.size());
   for (const Shock& s : rest.shocks) {
     const double x = std::fmod(s.x + U * t, static_cast<double>(n));
-    const auto it = std::min_element(moving.shocks.begin(), moving.shocks.end(), [&](auto& a, auto& b) {
-      return std::abs(a.x - x) < std::abs(b.x - x);
-    });
+    const auto it = std::min_element(moving.shocks.begin(), moving.shocks.end(),
+                                     [&](auto& a, auto& b) { return std::abs(a.x - x) < std::abs(b.x - x); });
     EXPECT_NEAR(it->x, x, 1e-12);  // eps (L + U t) ~ 1e-13; measured 5.7e-14
     EXPECT_EQ(it->mass, s.mass);
     EXPECT_NEAR(it->jump, s.jump, 1e-15);  // integer boundaries over t: exact

@@ -140,8 +140,9 @@ TEST(Pressureless, UniformDensitySharesBurgersShocksNonUniformDoesNot) {
   // rho0 = 1 + 0.9 sin 2 pi x: more mass arrives from the fast side, the cluster
   // runs ahead of the Burgers shock (measured 0.8877 vs 0.7490).
   const auto lumpy = sine(0.9);
-  EXPECT_GT(cluster_position(solve_pressureless(lumpy, p, 0.5)) - cluster_position(solve_godunov(lumpy, p, 0.5, 1)),
-            0.1);
+  EXPECT_GT(
+      cluster_position(solve_pressureless(lumpy, p, 0.5)) - cluster_position(solve_godunov(lumpy, p, 0.5, 1)),
+      0.1);
 }
 
 // L1 error of the velocity against the exact Hopf-Lax cell averages, rho0 = 1.

@@ -11,8 +11,8 @@
 
 #include "shockgas/continuum/hopf_cole.hpp"
 #include "shockgas/continuum/viscous_mol.hpp"
-#include "shockgas/core/error.hpp"
 #include "shockgas/continuum/viscous_mol_setup.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace sc = shockgas::continuum;
 using shockgas::InitialField;

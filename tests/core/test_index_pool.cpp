@@ -15,7 +15,8 @@ TEST(IndexPool, EveryIndexRunsOnceOnAnyNumberOfThreads) {
   for (const std::size_t threads : {1u, 2u, 3u, 8u, 100u}) {
     std::vector<std::atomic<int>> runs(37);
     run_indices(runs.size(), threads, [&](std::size_t k) { ++runs[k]; });
-    for (std::size_t k = 0; k < runs.size(); ++k) EXPECT_EQ(runs[k].load(), 1) << "k = " << k << ", threads " << threads;
+    for (std::size_t k = 0; k < runs.size(); ++k)
+      EXPECT_EQ(runs[k].load(), 1) << "k = " << k << ", threads " << threads;
   }
 }
 

@@ -74,8 +74,8 @@ double distance(double a, double b, double L) {
 }
 
 // Same partition (first mod N, count) and the same x, v, m up to tol.
-void expect_same(std::vector<RefCluster> ref, const std::vector<StickyCluster>& got, std::size_t n,
-                 double L, double tol) {
+void expect_same(std::vector<RefCluster> ref, const std::vector<StickyCluster>& got, std::size_t n, double L,
+                 double tol) {
   ASSERT_EQ(ref.size(), got.size());
   for (auto& r : ref) r.first %= n;
   std::sort(ref.begin(), ref.end(), [](auto& a, auto& b) { return a.first < b.first; });

@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/app/output/hdf5_file.hpp"
 #include "process_temp_path.hpp"
 #include "rusanov_solver.hpp"
 #include "shockgas/app/cli/command.hpp"
-#include "shockgas/app/scene/scene.hpp"
-#include "shockgas/core/error.hpp"
 #include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/jobs/run_scene.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/scene/scene.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::extension {
 namespace {

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "shockgas/particles/chain_view.hpp"
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/random.hpp"
+#include "shockgas/particles/chain_view.hpp"
 
 namespace shockgas::particles::detail::testing {
 

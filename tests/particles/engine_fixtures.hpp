@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "shockgas/particles/event_engine.hpp"
 #include "shockgas/core/bodies.hpp"
+#include "shockgas/particles/event_engine.hpp"
 
 namespace shockgas::particles::detail {
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <limits>
 
-#include "shockgas/particles/block_minimum.hpp"
 #include "shockgas/core/random.hpp"
+#include "shockgas/particles/block_minimum.hpp"
 
 namespace shockgas::particles::detail {
 namespace {

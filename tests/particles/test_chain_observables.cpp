@@ -10,10 +10,10 @@
 #include <numeric>
 
 #include "chain_fixtures.hpp"
-#include "shockgas/particles/chain_observables.hpp"
-#include "shockgas/particles/recorder.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/random.hpp"
+#include "shockgas/particles/chain_observables.hpp"
+#include "shockgas/particles/recorder.hpp"
 #include "shockgas/particles/simulate.hpp"
 #include "shockgas/particles/sorted_state.hpp"
 

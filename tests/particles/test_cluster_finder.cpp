@@ -1,11 +1,10 @@
-#include "shockgas/particles/cluster_finder.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
+#include "shockgas/particles/cluster_finder.hpp"
 
 namespace shockgas::particles {
 namespace {
@@ -46,7 +45,7 @@ TEST(ClusterFinder, CloseButApproachingBodiesAreSeparate) {
 TEST(ClusterFinder, RingRunWrapsAcrossZero) {
   const double L = 10.0;
   Bodies b;
-  b.push_back(0.1, 0.2, 1);   // wraps with the last two
+  b.push_back(0.1, 0.2, 1);  // wraps with the last two
   b.push_back(4.0, -0.3, 1);
   b.push_back(9.7, 0.2, 1);
   b.push_back(9.9, 0.2, 1);
@@ -77,7 +76,7 @@ TEST(ClusterFinder, MergedBodiesAreEachTheirOwnCluster) {
   Bodies b;
   double x = 0;
   for (int i = 0; i < 50; ++i) {
-    x += 1e-9 + rng.uniform();  // gaps > 0, some tiny
+    x += 1e-9 + rng.uniform();                 // gaps > 0, some tiny
     b.push_back(x, 0.0, 1.0 + rng.uniform());  // equal velocities: only the gap criterion separates
   }
   const auto k = find_clusters(b, x + 1.0, merged_bodies_criteria());

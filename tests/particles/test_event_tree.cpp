@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "shockgas/particles/event_tree.hpp"
 #include "shockgas/core/random.hpp"
+#include "shockgas/particles/event_tree.hpp"
 
 namespace shockgas::particles {
 namespace {

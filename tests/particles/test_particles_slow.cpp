@@ -95,7 +95,8 @@ void expect_sticky_exponent(double r) {
   p.clusters = false;
   const RunResult out = simulate(make_initial_bodies(ip), 1e5, p);
   ASSERT_EQ(out.stop.reason, StopReason::completed);
-  EXPECT_NEAR(temperature_exponent(out.series, 100, 3000), -2.0 / 3.0, 0.03);  // the stated tolerance on the exponent
+  EXPECT_NEAR(temperature_exponent(out.series, 100, 3000), -2.0 / 3.0,
+              0.03);  // the stated tolerance on the exponent
 }
 
 TEST(CoolingSlow, LateTimeExponentHalfRestitution) { expect_sticky_exponent(0.5); }

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "shockgas/particles/sample_sweep.hpp"
 #include "shockgas/core/random.hpp"
+#include "shockgas/particles/sample_sweep.hpp"
 
 #if defined(__SSE2__)
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "engine_fixtures.hpp"
-#include "shockgas/particles/run_watch.hpp"
 #include "shockgas/core/initial_condition.hpp"
+#include "shockgas/particles/run_watch.hpp"
 #include "shockgas/particles/window_scheduler.hpp"
 
 namespace shockgas::particles::detail {

@@ -165,7 +165,8 @@ TEST(WindowScheduler, RefusedWhereItIsNotExact) {
   EXPECT_THROW(simulate(b, 4096.0, sticky), InputError);
   c.delta = 0.0;  // inelastic collapse possible
   EXPECT_THROW(simulate(b, 4096.0, params(c, "windows")), InputError);
-  // A schedule is named through its declaration (shockgas/particles/params.cpp): an unknown name is refused there.
+  // A schedule is named through its declaration (shockgas/particles/params.cpp): an unknown name is refused
+  // there.
   ParticleParams p = params({4096, "lattice", "uniform", "ring", 0.9, 1e-2, 10.0}, "auto");
   EXPECT_THROW(parameters().set(p, "schedule", ParameterValue::of("sometimes")), InputError);
 }

@@ -181,7 +181,8 @@ TEST(WindowThreads, UnequalMassMergesOnTheWindowsEqualTheGlobalQueue) {
   ip.v0 = "sin(2*pi*x/20000) + 0.5*sin(2*pi*x/7) + 0.3*sin(2*pi*x/3.3)";
   ip.rho0 = "1 + 0.5*cos(2*pi*x/13)";
   const Bodies b = make_initial_bodies(ip);
-  ParticleParams windows = params({Geometry::ring, 0.0, 0.0, Subthreshold::elastic, 300.0}, 2), global = windows;
+  ParticleParams windows = params({Geometry::ring, 0.0, 0.0, Subthreshold::elastic, 300.0}, 2),
+                 global = windows;
   windows.schedule = Schedule::windows;
   global.schedule = Schedule::global;
   const RunResult w = simulate(b, ip.domain, windows);

@@ -7,11 +7,11 @@
 #include <fstream>
 #include <string>
 
-#include "shockgas/studies/common.hpp"
 #include "process_temp_path.hpp"
-#include "shockgas/studies/stability.hpp"
 #include "shockgas/continuum/explicit_viscous.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/studies/common.hpp"
+#include "shockgas/studies/stability.hpp"
 
 namespace shockgas::studies {
 namespace {
@@ -58,15 +58,16 @@ TEST(BenchStability, HopfColeFftDetectedFailingBeyondItsLimit) {
 }
 
 TEST(BenchStability, CollapseDetectedForThreeParticlesAtSmallR) {
-  EXPECT_EQ(three_particle_stop(0.05).reason, particles::StopReason::collapse);   // r < 7 - 4 sqrt 3
-  EXPECT_EQ(three_particle_stop(0.1).reason, particles::StopReason::completed);   // r > 7 - 4 sqrt 3
-  EXPECT_NEAR(collapse_particles_predicted(0.9), std::log(10.0) / 0.1, 1e-9);      // -ln(1-r)/(1-r)
+  EXPECT_EQ(three_particle_stop(0.05).reason, particles::StopReason::collapse);  // r < 7 - 4 sqrt 3
+  EXPECT_EQ(three_particle_stop(0.1).reason, particles::StopReason::completed);  // r > 7 - 4 sqrt 3
+  EXPECT_NEAR(collapse_particles_predicted(0.9), std::log(10.0) / 0.1, 1e-9);    // -ln(1-r)/(1-r)
 }
 
 TEST(BenchStability, MinmodMusclHancockIsTvdUpToOne) {
   // Minmod keeps MUSCL-Hancock TVD up to Courant number 1 on this problem (the
   // bench finds the steeper limiters failing earlier: docs/performance.md).
-  const auto lim = cfl_limit(cfl_scan(problem_by_name("sine_post"), "godunov2", "minmod", 128, {0.9, 1.0, 1.1, 1.2}));
+  const auto lim =
+      cfl_limit(cfl_scan(problem_by_name("sine_post"), "godunov2", "minmod", 128, {0.9, 1.0, 1.1, 1.2}));
   EXPECT_EQ(lim.last_stable, 1.0);
   EXPECT_GT(lim.first_failed, 1.0);
 }
@@ -86,7 +87,8 @@ TEST(BenchCommon, ShockPositionErrorIsTheShiftOfTheCrossing) {
   for (std::size_t i = 0; i < 9; ++i) shifted[i] = 1.0;
   EXPECT_NEAR(shock_position_error(shifted, exact, 1.0, 0.5, 0.5, 0.1), 1.0 / 16, 1e-15);
   EXPECT_EQ(shock_position_error(exact, exact, 1.0, 0.5, 0.5, 0.1), 0.0);
-  EXPECT_TRUE(std::isnan(shock_position_error(exact, exact, 1.0, 0.1, 0.5, 0.1)));  // no crossing near x = 0.1
+  EXPECT_TRUE(
+      std::isnan(shock_position_error(exact, exact, 1.0, 0.1, 0.5, 0.1)));  // no crossing near x = 0.1
 }
 
 TEST(BenchStability, CsvWritesNonFiniteAsEmptyCell) {

@@ -4,12 +4,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "shockgas/app/output/hdf5_file.hpp"
-#include "shockgas/app/files/manifest.hpp"
-#include "shockgas/app/report/plots.hpp"
-#include "shockgas/app/report/report_html.hpp"
 #include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/directory/run_target.hpp"
+#include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/report/plots.hpp"
+#include "shockgas/app/report/report_html.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {

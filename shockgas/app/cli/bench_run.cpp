@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <optional>
 
-#include "shockgas/app/files/manifest.hpp"
-#include "shockgas/app/report/plots.hpp"
 #include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/directory/run_directory.hpp"
+#include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/report/plots.hpp"
 #include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::app {

@@ -11,25 +11,25 @@
 
 #include "shockgas/app/cli/animate.hpp"
 #include "shockgas/app/cli/bench_run.hpp"
-#include "shockgas/app/records/checkpoint.hpp"
-#include "shockgas/app/ensemble/checkpointer.hpp"
-#include "shockgas/app/jobs/job.hpp"
-#include "shockgas/app/jobs/merge.hpp"
-#include "shockgas/app/report/plots.hpp"
+#include "shockgas/app/cli/info.hpp"
+#include "shockgas/app/cli/signals.hpp"
+#include "shockgas/app/cli/tail_run.hpp"
 #include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/directory/run_directory.hpp"
-#include "shockgas/app/cli/info.hpp"
+#include "shockgas/app/ensemble/checkpointer.hpp"
+#include "shockgas/app/input/resumed_scene.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/jobs/job.hpp"
+#include "shockgas/app/jobs/merge.hpp"
 #include "shockgas/app/jobs/run_scene.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
+#include "shockgas/app/report/plots.hpp"
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/studies/studies.hpp"
 #include "shockgas/studies/tail_study.hpp"
 #include "shockgas/version.hpp"
-#include "shockgas/app/cli/signals.hpp"
-#include "shockgas/app/cli/tail_run.hpp"
-#include "shockgas/app/input/resumed_scene.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 
@@ -61,7 +61,8 @@ const CLI::Validator kDirectoryName(
     "");
 
 void add_run(CLI::App& app, Arguments& args) {
-  auto* run = app.add_subcommand("run", "Run a scene (TOML) and write result.h5, summary.json, report.md, plots");
+  auto* run =
+      app.add_subcommand("run", "Run a scene (TOML) and write result.h5, summary.json, report.md, plots");
   run->add_option("SCENE", args.scene_path, "scene file, e.g. data/scenes/default.toml");
   auto* out = run->add_option("--out", args.out_dir, "results directory (default out/<scene name>/)")
                   ->check(kDirectoryName);
@@ -137,7 +138,8 @@ int do_run(const Arguments& args) {
 }
 
 void add_tail(CLI::App& app, Arguments& args) {
-  auto* tail = app.add_subcommand("tail", "The tail of Phi(z) at sizes beyond a scene: CSV files (docs/paper.md)");
+  auto* tail =
+      app.add_subcommand("tail", "The tail of Phi(z) at sizes beyond a scene: CSV files (docs/paper.md)");
   studies::TailStudyOptions& o = args.tail;
   tail->add_option("--N", args.tail_sizes, "particles per realization, e.g. 1e5,1e6,1e7")->delimiter(',');
   tail->add_option("--realizations", o.realizations, "realizations per size (default 100)");
@@ -150,7 +152,8 @@ void add_tail(CLI::App& app, Arguments& args) {
   tail->add_option("--threads", o.threads, "realizations at once (default 0: every core)");
   tail->add_option("--out", o.out_dir, "output directory (default out/tail)")->check(kDirectoryName);
   tail->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
-  tail->add_flag("--quiet,-q", [&o](std::int64_t) { o.progress = false; }, "no progress output");
+  tail->add_flag(
+      "--quiet,-q", [&o](std::int64_t) { o.progress = false; }, "no progress output");
 }
 
 int do_tail(Arguments args) {
@@ -211,21 +214,27 @@ int run_command(int argc, char** argv) {
   info->add_option(
       "RESULT", args.result_path,
       "result file or run directory, e.g. out/default (every file its manifest.json lists is checked)");
-  info->add_flag("--layout", args.layout, "print every dataset and summary key a run may write (docs/output.md)");
+  info->add_flag("--layout", args.layout,
+                 "print every dataset and summary key a run may write (docs/output.md)");
   info->require_option(1);
-  auto* scene = app.add_subcommand("scene", "Print the complete commented scene with every key and its default");
+  auto* scene =
+      app.add_subcommand("scene", "Print the complete commented scene with every key and its default");
   scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range");
-  scene->add_flag("--markdown", args.markdown, "print the reference of every key as markdown (docs/scenes.md)");
+  scene->add_flag("--markdown", args.markdown,
+                  "print the reference of every key as markdown (docs/scenes.md)");
   scene->require_option(1);
   auto* anim = app.add_subcommand("animate", "Draw a run's animation (MP4, GIF) from its result.h5");
-  anim->add_option("DIR", args.result_path, "a run's output directory (its scene has [output] animation = true)")
+  anim->add_option("DIR", args.result_path,
+                   "a run's output directory (its scene has [output] animation = true)")
       ->required();
-  auto* bench = app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
+  auto* bench =
+      app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
   bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)")
       ->check(kDirectoryName);
   bench->add_flag("--full", args.bench.full, "the record size (long) instead of the quick one");
   bench->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
-  bench->add_flag("--quiet,-q", [&args](std::int64_t) { args.bench.progress = false; }, "no progress output");
+  bench->add_flag(
+      "--quiet,-q", [&args](std::int64_t) { args.bench.progress = false; }, "no progress output");
   add_tail(app, args);
   try {
     app.parse(argc, argv);

@@ -11,9 +11,9 @@
 #include <optional>
 #include <sstream>
 
+#include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/output_layout.hpp"
-#include "shockgas/app/directory/result_check.hpp"
 
 namespace shockgas::app {
 

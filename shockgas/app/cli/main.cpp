@@ -1,6 +1,6 @@
-#include "shockgas/app/jobs/job.hpp"
 #include "shockgas/app/cli/command.hpp"
 #include "shockgas/app/cli/signals.hpp"
+#include "shockgas/app/jobs/job.hpp"
 
 int main(int argc, char** argv) {
   int code = 0;

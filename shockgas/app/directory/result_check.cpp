@@ -8,11 +8,11 @@
 #include <cerrno>
 #include <cstring>
 
-#include "shockgas/app/records/checkpoint.hpp"
+#include "shockgas/app/directory/run_target.hpp"
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
-#include "shockgas/app/directory/run_target.hpp"
 #include "shockgas/app/files/sha256.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 
 namespace shockgas::app {
 
@@ -30,8 +30,9 @@ bool has_hdf5_signature(const fs::path& file, std::uint64_t size) {
   bool found = false;
   for (std::uint64_t at = 0; !found && at + kSignature.size() <= size; at = at == 0 ? 512 : 2 * at) {
     std::array<unsigned char, 8> head{};
-    found = ::pread(fd, head.data(), head.size(), static_cast<off_t>(at)) == static_cast<ssize_t>(head.size()) &&
-            head == kSignature;
+    found =
+        ::pread(fd, head.data(), head.size(), static_cast<off_t>(at)) == static_cast<ssize_t>(head.size()) &&
+        head == kSignature;
   }
   ::close(fd);
   return found;
@@ -93,7 +94,7 @@ fs::path result_file_of(const fs::path& path) {
   if (!fs::is_directory(path, ec)) return path;
   if (fs::exists(path / "result.h5", ec) || fs::exists(path / kManifestFile, ec)) return path / "result.h5";
   throw result_problem(path.string(), "a directory",
-                        "give a result file, or a run directory that holds result.h5 (this one does not)");
+                       "give a result file, or a run directory that holds result.h5 (this one does not)");
 }
 
 Verification check_result_file(const fs::path& file) {
@@ -112,7 +113,8 @@ Verification check_result_file(const fs::path& file) {
     check_against(*entry, file, size);
     return Verification::manifest;
   }
-  if (size == 0) throw result_problem(file.string(), "empty", "0 bytes: the run that wrote it did not finish");
+  if (size == 0)
+    throw result_problem(file.string(), "empty", "0 bytes: the run that wrote it did not finish");
   if (!has_hdf5_signature(file, size))
     throw result_problem(file.string(), "not an HDF5 file", "it does not start with the HDF5 signature");
   return Verification::no_manifest;

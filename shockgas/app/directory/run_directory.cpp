@@ -10,10 +10,10 @@
 #include <cstring>
 #include <regex>
 
+#include "shockgas/app/directory/run_target.hpp"
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/fault.hpp"
 #include "shockgas/app/files/manifest.hpp"
-#include "shockgas/app/directory/run_target.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -35,7 +35,8 @@ bool starts_with(const std::string& s, const std::string& prefix) { return s.rfi
 
 fs::path make_staging(const fs::path& target) {
   // The pattern below (with_staging_as_target) reads this name back.
-  std::string name = (target.parent_path() / hidden(target, "tmp-")).string() + std::to_string(getpid()) + "-XXXXXX";
+  std::string name =
+      (target.parent_path() / hidden(target, "tmp-")).string() + std::to_string(getpid()) + "-XXXXXX";
   if (!mkdtemp(name.data())) refuse_unwritable(target, std::strerror(errno));
   const mode_t mask = umask(0);  // mkdtemp makes it 0700; the results get the usual mode
   umask(mask);
@@ -93,7 +94,8 @@ DirectoryLock::DirectoryLock(const fs::path& target, const std::string& out)
     }
     // The lock file may have been removed by the previous holder between our
     // open and flock: the lock counts only on the file that is at the path.
-    struct stat held {}, there {};
+    struct stat held {
+    }, there{};
     if (::fstat(fd_, &held) == 0 && ::stat(path_.c_str(), &there) == 0 && held.st_ino == there.st_ino &&
         held.st_dev == there.st_dev)
       break;
@@ -110,9 +112,7 @@ DirectoryLock::~DirectoryLock() {
 }
 
 RunDirectory::RunDirectory(const fs::path& out, const std::string& scene, bool force)
-    : target_(checked_target(out)),
-      created_(target_.parent_path()),
-      lock_(target_, out.string()) {
+    : target_(checked_target(out)), created_(target_.parent_path()), lock_(target_, out.string()) {
   for (const auto& line : clear_leftovers(target_)) std::fprintf(stderr, "shockgas: %s\n", line.c_str());
   check_target_contents(target_, out.string(), scene, force);
   staging_ = make_staging(target_);
@@ -160,7 +160,8 @@ fs::path swap_into_place(const fs::path& staging, const fs::path& target, SwapMe
   if (!fs::exists(target, ec)) {
     if (renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE) == 0) return {};
     if (!exchange_unsupported(errno))
-      throw RunError("cannot move " + staging.string() + " to " + target.string() + ": " + std::strerror(errno));
+      throw RunError("cannot move " + staging.string() + " to " + target.string() + ": " +
+                     std::strerror(errno));
     rename_or_throw(staging, target, 0);
     return {};
   }
@@ -172,8 +173,9 @@ fs::path swap_into_place(const fs::path& staging, const fs::path& target, SwapMe
   }
   // Two renames: between them the target is missing, and the previous results
   // wait at `.NAME.old-*` for clear_leftovers() to put them back.
-  const fs::path aside = staging.parent_path() / (hidden(target, "old-") + staging.filename().string().substr(
-                                                                              hidden(target, "tmp-").size()));
+  const fs::path aside =
+      staging.parent_path() /
+      (hidden(target, "old-") + staging.filename().string().substr(hidden(target, "tmp-").size()));
   rename_or_throw(target, aside, 0);
   fault_point("swap:aside");
   rename_or_throw(staging, target, 0);
@@ -194,8 +196,8 @@ std::vector<std::string> clear_leftovers(const fs::path& target) {
   if (!fs::exists(target, ec) && !aside.empty()) {
     fs::rename(aside.front(), target, ec);
     if (!ec) {
-      done.push_back("put back the previous results of " + target.string() + ", which a killed run had moved to " +
-                     aside.front().filename().string());
+      done.push_back("put back the previous results of " + target.string() +
+                     ", which a killed run had moved to " + aside.front().filename().string());
       aside.erase(aside.begin());
     }
   }

@@ -94,8 +94,8 @@ std::string with_staging_as_target(const std::string& message);
 enum class SwapMethod { exchange, two_renames };
 // Moves staging to target (which may not exist); the previous contents end up
 // at the returned path (to be removed), or it is empty when there were none.
-std::filesystem::path swap_into_place(const std::filesystem::path& staging, const std::filesystem::path& target,
-                                      SwapMethod method);
+std::filesystem::path swap_into_place(const std::filesystem::path& staging,
+                                      const std::filesystem::path& target, SwapMethod method);
 
 // What killed runs into target left beside it: staging directories are
 // removed, and previous results moved aside by a run killed between its two

@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
+#include "shockgas/app/records/state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/studies/tail_study.hpp"
-#include "shockgas/app/records/state_file.hpp"
 
 namespace shockgas::app {
 
@@ -126,7 +126,8 @@ void check_target_path(const fs::path& target, const std::string& out) {
   const auto status = fs::symlink_status(target, ec);
   if (status.type() == fs::file_type::not_found) return;
   if (status.type() != fs::file_type::directory) refuse(out, "a directory (this is not one)");
-  struct stat here {}, above {};
+  struct stat here {
+  }, above{};
   if (::stat(target.c_str(), &here) != 0 || ::stat(target.parent_path().c_str(), &above) != 0) return;
   if (here.st_dev != above.st_dev)
     refuse(out, "a directory that is not a mount point (give a directory inside it)" + replaced);
@@ -177,12 +178,14 @@ std::string interrupted_scene(const fs::path& dir) {
 
 }  // namespace
 
-void check_target_contents(const fs::path& target, const std::string& out, const std::string& scene, bool force) {
+void check_target_contents(const fs::path& target, const std::string& out, const std::string& scene,
+                           bool force) {
   std::error_code ec;
   if (!fs::is_directory(target, ec) || fs::is_empty(target, ec)) return;
   const auto manifest = read_manifest(target);
   if (const auto foreign = foreign_entry(target, manifest))
-    refuse(out, "a new or empty directory, or one that holds only shockgas results (this one holds " + *foreign +
+    refuse(out, "a new or empty directory, or one that holds only shockgas results (this one holds " +
+                    *foreign +
                     ", which a run did not write; a run replaces its output directory as a whole)");
   const auto theirs = scene_of_results(target);
   if (theirs == scene || force) return;
@@ -201,7 +204,8 @@ void check_target_contents(const fs::path& target, const std::string& out, const
                resume_hint(target) + "): give --force to replace it, or another --out");
   }
   refuse(out, "a new or empty directory, or one that holds this scene's results (this one holds " +
-                  (theirs ? "the results of scene \"" + *theirs + "\"" : std::string("results of an unknown scene")) +
+                  (theirs ? "the results of scene \"" + *theirs + "\""
+                          : std::string("results of an unknown scene")) +
                   "): give --force to replace them, or another --out");
 }
 

@@ -22,8 +22,8 @@ void check_target_path(const std::filesystem::path& target, const std::string& o
 
 // The refusals that need the contents (foreign files, another scene's results
 // without force). Called with the directory's lock held.
-void check_target_contents(const std::filesystem::path& target, const std::string& out, const std::string& scene,
-                           bool force);
+void check_target_contents(const std::filesystem::path& target, const std::string& out,
+                           const std::string& scene, bool force);
 
 // Refuses a target that is, or holds, one of the inputs a command reads (the
 // shards of a merge: replacing the output directory would replace them). what

@@ -4,9 +4,9 @@
 #include <atomic>
 
 #include "shockgas/app/files/fault.hpp"
+#include "shockgas/app/records/state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
-#include "shockgas/app/records/state_file.hpp"
 
 namespace shockgas::app {
 

@@ -30,8 +30,8 @@
 #include <set>
 #include <vector>
 
-#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/ensemble/ensemble_plan.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/records/run_state_file.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/run_state.hpp"

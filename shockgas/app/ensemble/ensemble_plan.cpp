@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/run/run_internal.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 

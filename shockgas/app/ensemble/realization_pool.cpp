@@ -8,10 +8,10 @@
 
 #include "shockgas/app/ensemble/checkpointer.hpp"
 #include "shockgas/app/output/frames.hpp"
+#include "shockgas/app/records/state_file.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/simulate.hpp"
-#include "shockgas/app/records/state_file.hpp"
 
 namespace shockgas::app {
 

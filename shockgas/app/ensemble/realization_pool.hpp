@@ -65,5 +65,4 @@ class RealizationPool {
   bool abandon_;
 };
 
-
 }  // namespace shockgas::app

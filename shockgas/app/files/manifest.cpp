@@ -86,7 +86,8 @@ std::string manifest_text(Manifest& m) {
   j["shockgas_version"] = kVersion;
   j["git_commit"] = kGitCommit;
   j["files"] = ordered_json::array();
-  for (const auto& f : m.files) j["files"].push_back({{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
+  for (const auto& f : m.files)
+    j["files"].push_back({{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
   return j.dump(2) + "\n";
 }
 
@@ -133,7 +134,8 @@ std::optional<Manifest> read_manifest(const fs::path& dir) {
   if (!in) refuse(file, "unreadable");
   const ordered_json j = ordered_json::parse(text.str(), nullptr, false);
   if (j.is_discarded() || !j.is_object()) refuse(file, "not JSON");
-  if (!j.contains("format") || j["format"] != kFormat) refuse(file, "format \"" + std::string(kFormat) + "\"");
+  if (!j.contains("format") || j["format"] != kFormat)
+    refuse(file, "format \"" + std::string(kFormat) + "\"");
   if (!j.contains("scene") || !j["scene"].is_string() || !j.contains("files") || !j["files"].is_array())
     refuse(file, "scene and files");
   Manifest m;

@@ -22,7 +22,8 @@ using Digest = std::unique_ptr<EVP_MD_CTX, DigestFree>;
 
 Digest start_digest() {
   Digest ctx(EVP_MD_CTX_new());
-  if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1) throw RunError("SHA-256: OpenSSL init failed");
+  if (!ctx || EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) != 1)
+    throw RunError("SHA-256: OpenSSL init failed");
   return ctx;
 }
 
@@ -63,7 +64,8 @@ std::string sha256_of_file(const std::filesystem::path& path) {
 
 std::string sha256_of_text(const std::string& bytes) {
   Digest ctx = start_digest();
-  if (EVP_DigestUpdate(ctx.get(), bytes.data(), bytes.size()) != 1) throw RunError("SHA-256: OpenSSL update failed");
+  if (EVP_DigestUpdate(ctx.get(), bytes.data(), bytes.size()) != 1)
+    throw RunError("SHA-256: OpenSSL update failed");
   return finish_digest(ctx.get());
 }
 

@@ -1,5 +1,7 @@
 // Scene text -> Scene: TOML parsing, --set overrides, strict key checking and
 // validation, every error located at file:line (or at the --set that caused it).
+#include "shockgas/app/input/scene_parser.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -7,10 +9,9 @@
 
 #include "shockgas/app/files/file_problem.hpp"
 #include "shockgas/app/output/frames.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/output/output_layout.hpp"
-#include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/app/scene/scene.hpp"
+#include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -74,7 +75,8 @@ void read_table(const TableSpec& table, const toml::table& tbl, const std::strin
     const auto origin = scene.key_origin.count(dotted) ? scene.key_origin[dotted] : location(path, node);
     const KeySpec* spec = table.find(key);
     if (!spec)
-      throw InputError(dotted, node_text(node), "a key of [" + table.name + "]: " + table.keys_text(), origin);
+      throw InputError(dotted, node_text(node), "a key of [" + table.name + "]: " + table.keys_text(),
+                       origin);
     try {
       spec->set(scene, from_toml(node));
     } catch (const InputError& e) {
@@ -95,7 +97,8 @@ void read_table(const TableSpec& table, const toml::table& tbl, const std::strin
     throw InputError(table + "." + std::string(first->first.str()), node_text(first->second),
                      "a key of one of " + allowed, set->second);
   }
-  throw InputError(table, node.is_table() ? "[" + table + "]" : node_text(node), allowed, location(path, node));
+  throw InputError(table, node.is_table() ? "[" + table + "]" : node_text(node), allowed,
+                   location(path, node));
 }
 
 void read_tables(const toml::table& root, const std::string& path, Scene& scene) {
@@ -129,10 +132,12 @@ void validate_sweep(const SweepParams& s) {
     require(std::find(s.labels.begin(), s.labels.begin() + static_cast<std::ptrdiff_t>(i), s.labels[i]) ==
                 s.labels.begin() + static_cast<std::ptrdiff_t>(i),
             "sweep.labels", s.labels[i], "distinct labels");
-  require(s.reference_values.empty() || s.reference_values.size() == s.variants.size(), "sweep.reference_values",
-          s.reference_values.size(), "one value per variant (" + std::to_string(s.variants.size()) + "), or none");
-  require(s.reference_key.empty() || find_in_layout(LayoutEntry::Kind::summary, s.reference_key), "sweep.reference_key",
-          s.reference_key, "a key of summary.json (docs/output.md), e.g. analysis.T_exponent");
+  require(s.reference_values.empty() || s.reference_values.size() == s.variants.size(),
+          "sweep.reference_values", s.reference_values.size(),
+          "one value per variant (" + std::to_string(s.variants.size()) + "), or none");
+  require(s.reference_key.empty() || find_in_layout(LayoutEntry::Kind::summary, s.reference_key),
+          "sweep.reference_key", s.reference_key,
+          "a key of summary.json (docs/output.md), e.g. analysis.T_exponent");
 }
 
 // "a=1; b=2" -> {"a=1", "b=2"}
@@ -167,7 +172,8 @@ void validate_compare(const Scene& scene) {
           "particles.geometry", name_of(scene.particles.geometry),
           "\"" + name_of(particles::Geometry::ring) + "\" with continuum.boundary = \"" +
               name_of(continuum::Boundary::periodic) + "\" when [compare] is present");
-  require(scene.initial.velocities != Velocities::expression, "initial.velocities", name_of(scene.initial.velocities),
+  require(scene.initial.velocities != Velocities::expression, "initial.velocities",
+          name_of(scene.initial.velocities),
           "particle data (not \"" + name_of(Velocities::expression) + "\") when [compare] is present");
 }
 
@@ -177,7 +183,8 @@ void validate_name(const Scene& scene) {
   bool ok = !n.empty() && n.size() <= 200 && n.front() != '.';
   for (unsigned char c : n) ok = ok && c != '/' && c != '\\' && c >= 0x20 && c != 0x7f;
   const bool from_file = !scene.key_origin.count("scene.name");
-  require(ok, "scene.name", n, kSceneNameRule + (from_file ? " (this one is the file's name: set [scene] name)" : ""));
+  require(ok, "scene.name", n,
+          kSceneNameRule + (from_file ? " (this one is the file's name: set [scene] name)" : ""));
 }
 
 void validate_scene(const Scene& scene) {
@@ -232,13 +239,15 @@ std::vector<Override> command_line(const std::vector<std::string>& overrides) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& text, const std::string& path, const std::vector<std::string>& overrides) {
+Scene parse_scene(const std::string& text, const std::string& path,
+                  const std::vector<std::string>& overrides) {
   return parse(text, path, command_line(overrides));
 }
 
 std::vector<Scene> expand_sweep(const Scene& scene) {
   std::vector<Scene> variants;
-  const std::string at = scene.key_origin.count("sweep.variants") ? scene.key_origin.at("sweep.variants") : scene.path;
+  const std::string at =
+      scene.key_origin.count("sweep.variants") ? scene.key_origin.at("sweep.variants") : scene.path;
   for (std::size_t i = 0; i < scene.sweep.variants.size(); ++i) {
     const std::string variant = "sweep variant " + std::to_string(i + 1) + ": " + scene.sweep.variants[i];
     auto overrides = command_line(scene.overrides);
@@ -265,9 +274,11 @@ std::vector<Scene> expand_sweep(const Scene& scene) {
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (status.type() == std::filesystem::file_type::not_found) throw FileProblem("SCENE", path, "no such file", "");
+  if (status.type() == std::filesystem::file_type::not_found)
+    throw FileProblem("SCENE", path, "no such file", "");
   if (status.type() == std::filesystem::file_type::directory)
-    throw FileProblem("SCENE", path, "a directory", "give a scene file (.toml), e.g. data/scenes/default.toml");
+    throw FileProblem("SCENE", path, "a directory",
+                      "give a scene file (.toml), e.g. data/scenes/default.toml");
   if (status.type() != std::filesystem::file_type::regular)
     throw FileProblem("SCENE", path, "not a regular file", "give a scene file (.toml)");
   std::ifstream in(path);

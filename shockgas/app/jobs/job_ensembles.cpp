@@ -7,9 +7,9 @@
 #include <thread>
 
 #include "shockgas/app/ensemble/checkpointer.hpp"
+#include "shockgas/app/ensemble/realization_pool.hpp"
 #include "shockgas/app/jobs/job_messages.hpp"
 #include "shockgas/app/run/progress_bar.hpp"
-#include "shockgas/app/ensemble/realization_pool.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
 
@@ -187,8 +187,8 @@ class Gatherer {
   // bad_input: the rank's input was not allowed (a damaged saved state), exit 2
   // as in one process; else the run failed, exit 1.
   [[noreturn]] void fail(int rank, const WorkItem& item, const std::string& message, bool bad_input) {
-    std::string text = "rank " + std::to_string(rank) + " failed in " + plan_.describe(item) + ": " + message +
-                       "; the job stops, no result is written";
+    std::string text = "rank " + std::to_string(rank) + " failed in " + plan_.describe(item) + ": " +
+                       message + "; the job stops, no result is written";
     if (bad_input) throw RankInputError(rank, std::move(text));
     throw RunError(text);
   }

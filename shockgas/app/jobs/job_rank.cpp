@@ -6,9 +6,9 @@
 #include <thread>
 
 #include "shockgas/app/ensemble/checkpointer.hpp"
+#include "shockgas/app/ensemble/realization_pool.hpp"
 #include "shockgas/app/jobs/job_ensembles.hpp"
 #include "shockgas/app/jobs/job_messages.hpp"
-#include "shockgas/app/ensemble/realization_pool.hpp"
 #include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::app {

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <sstream>
 
-#include "shockgas/app/jobs/parallel_run.hpp"
 #include "shockgas/app/directory/run_target.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/jobs/parallel_run.hpp"
 #include "shockgas/app/jobs/shard_file.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 

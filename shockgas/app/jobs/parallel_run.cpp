@@ -7,17 +7,17 @@
 #include <cstdio>
 #include <iostream>
 
-#include "shockgas/app/records/checkpoint.hpp"
+#include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/ensemble/checkpointer.hpp"
+#include "shockgas/app/ensemble/realization_pool.hpp"
 #include "shockgas/app/jobs/job.hpp"
 #include "shockgas/app/jobs/job_ensembles.hpp"
-#include "shockgas/app/run/progress_bar.hpp"
-#include "shockgas/app/ensemble/realization_pool.hpp"
-#include "shockgas/core/cores.hpp"
-#include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/jobs/shard_file.hpp"
-#include "shockgas/core/error.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/records/state_file.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
+#include "shockgas/core/cores.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 

@@ -2,11 +2,11 @@
 
 #include <sstream>
 
-#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/output/output_layout.hpp"
 #include "shockgas/app/output/partial_outputs.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/ensemble/ensemble_plan.hpp"
 #include "shockgas/app/jobs/job_ensembles.hpp"
-#include "shockgas/app/directory/result_check.hpp"
 
 namespace shockgas::app {
 

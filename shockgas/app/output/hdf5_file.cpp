@@ -60,7 +60,8 @@ bool hdf5_says_truncated() {
 std::int64_t check(std::int64_t id, const char* call, const std::string& object) {
   if (id < 0) {
     const std::string reason = hdf5_reason();
-    throw RunError(std::string("HDF5: ") + call + " failed on " + object + (reason.empty() ? "" : " (" + reason + ")"));
+    throw RunError(std::string("HDF5: ") + call + " failed on " + object +
+                   (reason.empty() ? "" : " (" + reason + ")"));
   }
   return id;
 }
@@ -94,10 +95,14 @@ void write_string_attribute(std::int64_t object, const std::string& name, const 
 
 std::string type_name(hid_t type) {
   switch (H5Tget_class(type)) {
-    case H5T_FLOAT: return "float" + std::to_string(8 * H5Tget_size(type));
-    case H5T_INTEGER: return "int" + std::to_string(8 * H5Tget_size(type));
-    case H5T_STRING: return "string";
-    default: return "other";
+    case H5T_FLOAT:
+      return "float" + std::to_string(8 * H5Tget_size(type));
+    case H5T_INTEGER:
+      return "int" + std::to_string(8 * H5Tget_size(type));
+    case H5T_STRING:
+      return "string";
+    default:
+      return "other";
   }
 }
 
@@ -140,10 +145,10 @@ void H5Handle::reset() {
 
 Hdf5File Hdf5File::create(const std::string& path) {
   init_hdf5();
-  return Hdf5File(H5Handle(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "H5Fcreate",
-                                 path),
-                           close_file),
-                  path, Verification::manifest);
+  return Hdf5File(
+      H5Handle(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "H5Fcreate", path),
+               close_file),
+      path, Verification::manifest);
 }
 
 Hdf5File Hdf5File::open(const std::string& path) {
@@ -166,8 +171,9 @@ void Hdf5File::close() {
 
 Hdf5File Hdf5File::update(const std::string& path) {
   init_hdf5();
-  return Hdf5File(H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file),
-                  path, Verification::no_manifest);
+  return Hdf5File(
+      H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file), path,
+      Verification::no_manifest);
 }
 
 H5Handle Hdf5File::ensure_group(const std::string& path) {
@@ -177,29 +183,31 @@ H5Handle Hdf5File::ensure_group(const std::string& path) {
     return H5Handle(check(H5Oopen(file_.get(), path.c_str(), H5P_DEFAULT), "H5Oopen", path), close_object);
   H5Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate", path), close_plist);
   check(H5Pset_create_intermediate_group(lcpl.get(), 1), "H5Pset_create_intermediate_group", path);
-  return H5Handle(check(H5Gcreate2(file_.get(), path.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate2",
-                        path),
-                  close_group);
+  return H5Handle(
+      check(H5Gcreate2(file_.get(), path.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate2", path),
+      close_group);
 }
 
 H5Handle Hdf5File::create_dataset(const std::string& path, std::int64_t type, std::vector<std::uint64_t> dims,
                                   const std::string& unit, const std::string& description) {
   std::vector<hsize_t> hdims(dims.begin(), dims.end());
-  H5Handle space(check(H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr), "H5Screate_simple",
-                       path),
+  H5Handle space(check(H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr),
+                       "H5Screate_simple", path),
                  close_space);
   H5Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate", path), close_plist);
   check(H5Pset_create_intermediate_group(lcpl.get(), 1), "H5Pset_create_intermediate_group", path);
-  H5Handle set(check(H5Dcreate2(file_.get(), path.c_str(), type, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
-                     "H5Dcreate2", path),
-               close_dataset);
+  H5Handle set(
+      check(H5Dcreate2(file_.get(), path.c_str(), type, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+            "H5Dcreate2", path),
+      close_dataset);
   write_string_attribute(set.get(), "unit", unit);
   if (!description.empty()) write_string_attribute(set.get(), "description", description);
   return set;
 }
 
 void Hdf5File::write_raw(const std::string& path, const void* data, std::int64_t type,
-                         std::vector<std::uint64_t> dims, const std::string& unit, const std::string& description) {
+                         std::vector<std::uint64_t> dims, const std::string& unit,
+                         const std::string& description) {
   std::size_t count = 1;
   for (auto d : dims) count *= d;
   H5Handle set = create_dataset(path, type, std::move(dims), unit, description);
@@ -220,15 +228,15 @@ void Hdf5File::Writer::append(const double* data, std::size_t count) {
   check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &n, nullptr),
         "H5Sselect_hyperslab", path_);
   H5Handle memory(check(H5Screate_simple(1, &n, nullptr), "H5Screate_simple", path_), close_space);
-  check(H5Dwrite(set_.get(), H5T_NATIVE_DOUBLE, memory.get(), file_space.get(), H5P_DEFAULT, data), "H5Dwrite",
-        path_);
+  check(H5Dwrite(set_.get(), H5T_NATIVE_DOUBLE, memory.get(), file_space.get(), H5P_DEFAULT, data),
+        "H5Dwrite", path_);
   written_ += count;
 }
 
 void Hdf5File::Writer::finish() {
   if (written_ != size_)
-    throw RunError("HDF5: " + path_ + " got " + std::to_string(written_) + " of its " + std::to_string(size_) +
-                   " values");
+    throw RunError("HDF5: " + path_ + " got " + std::to_string(written_) + " of its " +
+                   std::to_string(size_) + " values");
   const std::int64_t id = set_.release();
   check(H5Dclose(id), "H5Dclose", path_);
 }
@@ -258,10 +266,10 @@ void Hdf5File::set_attribute(const std::string& object, const std::string& name,
   H5Handle obj = ensure_group(object);
   if (H5Aexists(obj.get(), name.c_str()) > 0) check(H5Adelete(obj.get(), name.c_str()), "H5Adelete", name);
   H5Handle space(check(H5Screate(H5S_SCALAR), "H5Screate", name), close_space);
-  H5Handle attr(check(H5Acreate2(obj.get(), name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
-                                 H5P_DEFAULT),
-                      "H5Acreate2", name),
-                close_attr);
+  H5Handle attr(
+      check(H5Acreate2(obj.get(), name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+            "H5Acreate2", name),
+      close_attr);
   check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value), "H5Awrite", name);
 }
 
@@ -289,8 +297,8 @@ herr_t collect_dataset(hid_t root, const char* name, const H5O_info_t* info, voi
 
 std::vector<DatasetInfo> Hdf5File::datasets() const {
   std::vector<DatasetInfo> list;
-  check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect_dataset, &list, H5O_INFO_BASIC), "H5Ovisit",
-        "file");
+  check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect_dataset, &list, H5O_INFO_BASIC),
+        "H5Ovisit", "file");
   return list;
 }
 
@@ -328,7 +336,8 @@ std::vector<double> Hdf5File::read(const std::string& path) const {
   H5Handle space(check(H5Dget_space(set.get()), "H5Dget_space", path), close_space);
   const auto n = H5Sget_simple_extent_npoints(space.get());
   std::vector<double> data(n > 0 ? n : 0);
-  if (n > 0) check(H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "H5Dread", path);
+  if (n > 0)
+    check(H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "H5Dread", path);
   return data;
 }
 

@@ -82,7 +82,8 @@ class Hdf5File {
     std::string path_;
     std::size_t size_, written_ = 0;
   };
-  Writer start(const std::string& path, std::size_t size, const std::string& unit, const std::string& description);
+  Writer start(const std::string& path, std::size_t size, const std::string& unit,
+               const std::string& description);
 
   // Attributes on a group or dataset ("/" for the file); the group is created if missing.
   void set_attribute(const std::string& object, const std::string& name, const std::string& value);
@@ -103,8 +104,8 @@ class Hdf5File {
   Hdf5File(H5Handle file, std::string path, Verification v)
       : file_(std::move(file)), path_(std::move(path)), verification_(v) {}
   H5Handle ensure_group(const std::string& path);
-  void write_raw(const std::string& path, const void* data, std::int64_t type, std::vector<std::uint64_t> dims,
-                 const std::string& unit, const std::string& description);
+  void write_raw(const std::string& path, const void* data, std::int64_t type,
+                 std::vector<std::uint64_t> dims, const std::string& unit, const std::string& description);
   H5Handle create_dataset(const std::string& path, std::int64_t type, std::vector<std::uint64_t> dims,
                           const std::string& unit, const std::string& description);
   H5Handle file_;

@@ -49,10 +49,10 @@ std::vector<Declaration> provenance_datasets();
 std::vector<Declaration> particle_datasets();  // with the initial condition's
 std::vector<Declaration> field_datasets();     // analysis, continuum, comparison, sweep
 
-std::vector<Declaration> run_keys();         // provenance, initial, particles, analysis
+std::vector<Declaration> run_keys();                // provenance, initial, particles, analysis
 std::vector<Declaration> realization_datasets();    // output_realizations.cpp: each realization's series
 std::vector<Declaration> realization_error_keys();  // ... and the analysis' errors from them
-std::vector<Declaration> comparison_keys();  // continuum, comparison, sweep
+std::vector<Declaration> comparison_keys();         // continuum, comparison, sweep
 
 std::vector<Declaration> frame_datasets();  // output_frames.cpp: the animation's record
 std::vector<Declaration> frame_keys();      // and the wave's evolution

@@ -3,10 +3,10 @@
 #include <ctime>
 
 #include "shockgas/app/output/layout_declarations.hpp"
+#include "shockgas/app/records/state_file.hpp"
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/core/initial_stream.hpp"
 #include "shockgas/version.hpp"
-#include "shockgas/app/records/state_file.hpp"
 
 namespace shockgas::app::layout {
 
@@ -187,14 +187,15 @@ std::vector<Declaration> records() {
                       histogram([](const compare::ZHistogram& h, Emitter& out) {
                         out.matrix(h.density, h.t.size(), h.bins);
                       })));
-  d.push_back(dataset(p, "/particles/histogram/exact", "time^(2/3)/length",
-                      "the exact mass-weighted law of z of the sticky gas (r = 0) from this white noise, "
-                      "averaged over each bin (shockgas/compare/cluster_velocity_law.hpp): the fixed point the gas "
-                      "approaches at every r",
-                      "when particles.histogram_bins > 0 and the start is white noise on a lattice",
-                      from_particles([](const ParticleResults& pr, Emitter& out) {
-                        if (!pr.histogram_exact.empty()) out.values(pr.histogram_exact);
-                      })));
+  d.push_back(
+      dataset(p, "/particles/histogram/exact", "time^(2/3)/length",
+              "the exact mass-weighted law of z of the sticky gas (r = 0) from this white noise, "
+              "averaged over each bin (shockgas/compare/cluster_velocity_law.hpp): the fixed point the gas "
+              "approaches at every r",
+              "when particles.histogram_bins > 0 and the start is white noise on a lattice",
+              from_particles([](const ParticleResults& pr, Emitter& out) {
+                if (!pr.histogram_exact.empty()) out.values(pr.histogram_exact);
+              })));
   const char* st = "when particles.spacetime";
   auto spacetime = [](auto f) {
     return [f](const RunResults& r, Emitter& out) {

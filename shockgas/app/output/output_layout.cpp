@@ -128,9 +128,9 @@ void table(std::ostringstream& out, const std::vector<Declaration>& decls, Part 
   }
 }
 
-const std::vector<Part> kParts = {Part::provenance, Part::initial, Part::particles, Part::analysis,
-                                  Part::continuum,  Part::compare, Part::animation, Part::sweep,
-                                  Part::shard};
+const std::vector<Part> kParts = {Part::provenance, Part::initial,   Part::particles,
+                                  Part::analysis,   Part::continuum, Part::compare,
+                                  Part::animation,  Part::sweep,     Part::shard};
 
 }  // namespace
 

@@ -86,8 +86,8 @@ std::vector<Declaration> realization_error_keys() {
               list.push_back({{"t_min", w.t_min},
                               {"t_max", w.t_max},
                               {"exponent", w.exponent.value},
-                              {"jackknife_error", std::isfinite(w.exponent.error) ? Json(w.exponent.error)
-                                                                                  : Json(nullptr)}});
+                              {"jackknife_error",
+                               std::isfinite(w.exponent.error) ? Json(w.exponent.error) : Json(nullptr)}});
             out.json(list);
           }),
       key(p, "analysis.t_dissip_error", "time", "jackknife error of analysis.t_dissip (null: not crossed)",

@@ -46,7 +46,7 @@ struct ParticleResults {
   // criteria (summary: analysis.heaviest_cluster_*); none without an initial condition.
   std::optional<particles::Cluster> heaviest;
   std::vector<particles::Snapshot> frames;  // realization 0 at the animation's frame times (frames.hpp)
-  compare::ZHistogram histogram;  // the ensemble-mean scaled histogram (empty: bins = 0)
+  compare::ZHistogram histogram;            // the ensemble-mean scaled histogram (empty: bins = 0)
   compare::CoolingAnalysis cooling;
   compare::DistributionAnalysis distribution;
   // The exact inviscid references of a white-noise start on a lattice (else none),
@@ -58,7 +58,7 @@ struct ParticleResults {
 
 struct ContinuumRun {
   continuum::ContinuumResult result;
-  std::optional<double> mass_drift;    // sum rho dx at t over its initial value, minus 1 (if rho)
+  std::optional<double> mass_drift;  // sum rho dx at t over its initial value, minus 1 (if rho)
   // L1 distances to the exact solver on the same grid (shockgas/compare/field_distance.hpp):
   // v relative to the exact v's variation about its mean, rho relative to the mass.
   std::optional<compare::L1Distance> l1_v;

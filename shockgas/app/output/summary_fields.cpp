@@ -126,7 +126,8 @@ std::vector<Declaration> comparison() {
                   "O(1), constant in the sticky regime"),
       key(p, "compare.n_shocks_exact", "1",
           "the exact expected number of shocks of mass >= min_mass of Burgers turbulence from this white "
-          "noise (shockgas/compare/shock_mass_law.hpp): what n_shocks of hopf_lax and n_clusters of an r = 0 gas "
+          "noise (shockgas/compare/shock_mass_law.hpp): what n_shocks of hopf_lax and n_clusters of an r = 0 "
+          "gas "
           "approach",
           "when the start is white noise on a lattice",
           [](const RunResults& r, Emitter& out) {

@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "shockgas/app/output/layout_declarations.hpp"
-#include "shockgas/core/initial_stream.hpp"
 #include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app::layout {
@@ -196,8 +196,8 @@ std::vector<Declaration> analysis() {
                       "end of homogeneous cooling read off d ln T / d ln t (null: not crossed)", "",
                       fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_stick); })),
                   "~ {analysis.t_stick_theory}"),
-      key(p, "analysis.t_dissip_theory", "time", "theory: end of the elastic regime, 1/eps, eps = (1 - r)/2", "",
-          fit([](const Cooling& a, const Fit&) { return a.crossovers.t_dissip_theory; })),
+      key(p, "analysis.t_dissip_theory", "time", "theory: end of the elastic regime, 1/eps, eps = (1 - r)/2",
+          "", fit([](const Cooling& a, const Fit&) { return a.crossovers.t_dissip_theory; })),
       key(p, "analysis.t_stick_theory", "time", "theory: end of homogeneous cooling, eps^(-3/2)", "",
           fit([](const Cooling& a, const Fit&) { return a.crossovers.t_stick_theory; })),
       key(p, "analysis.cooling_law_not_determined", "", "why the cooling law could not be fitted",

@@ -1,6 +1,7 @@
 // The checkpoint file (checkpoint.hpp): its bytes, its atomic write and the
 // checks that refuse a damaged or foreign one.
 #include <fcntl.h>
+#include <toml++/toml.h>
 #include <unistd.h>
 
 #include <bit>
@@ -10,13 +11,11 @@
 #include <sstream>
 
 #include "shockgas/app/files/byte_buffer.hpp"
-#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/files/durable_file.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/records/run_state_file.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/version.hpp"
-
-#include <toml++/toml.h>
 
 namespace shockgas::app {
 

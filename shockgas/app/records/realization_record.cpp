@@ -21,9 +21,7 @@ void put_bodies(RecordFields& f, const std::string& prefix, const Bodies& b) {
 
 // Field lookup by name with the malformed cases named.
 // A text as numbers, one character code each (exact as doubles), and back.
-std::vector<double> text_codes(const std::string& text) {
-  return {text.begin(), text.end()};
-}
+std::vector<double> text_codes(const std::string& text) { return {text.begin(), text.end()}; }
 std::string from_codes(const std::vector<double>& codes) {
   std::string text;
   for (double c : codes) text.push_back(static_cast<char>(c));

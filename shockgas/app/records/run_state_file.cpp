@@ -11,8 +11,8 @@
 
 #include "shockgas/app/files/byte_buffer.hpp"
 #include "shockgas/app/files/durable_file.hpp"
-#include "shockgas/core/error.hpp"
 #include "shockgas/app/files/stream_hash.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 

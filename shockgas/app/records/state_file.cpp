@@ -11,8 +11,8 @@
 #include <utility>
 
 #include "shockgas/app/files/durable_file.hpp"
-#include "shockgas/core/error.hpp"
 #include "shockgas/app/files/stream_hash.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 

@@ -19,8 +19,8 @@ namespace shockgas::app {
 namespace {
 
 using namespace std::chrono_literals;
-constexpr auto kPoll = 20ms;   // how soon an interrupt reaches the child
-constexpr auto kGrace = 2s;    // SIGTERM, then SIGKILL after this
+constexpr auto kPoll = 20ms;  // how soon an interrupt reaches the child
+constexpr auto kGrace = 2s;   // SIGTERM, then SIGKILL after this
 
 int status_code(int status) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : 1;

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <regex>
 
-#include "shockgas/app/report/child_process.hpp"
 #include "shockgas/app/files/durable_file.hpp"
+#include "shockgas/app/report/child_process.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {

@@ -13,8 +13,8 @@
 
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
-#include "shockgas/app/report/html_page.hpp"
 #include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/report/html_page.hpp"
 #include "shockgas/app/report/report.hpp"
 #include "shockgas/core/error.hpp"
 

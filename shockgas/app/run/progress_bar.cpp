@@ -88,8 +88,8 @@ void ProgressBar::draw(double fraction, double sim_time) {
     std::snprintf(line, sizeof line, "\r%-18s [%s] %3.0f%%  t = %-10.4g  %.3g time units/s  eta %s s  ",
                   stage_.c_str(), bar.c_str(), 100 * fraction, sim_time, rate, eta);
   } else {
-    std::snprintf(line, sizeof line, "%s: %3.0f%%  t = %.4g  %.3g time units/s  elapsed %.1f s\n", stage_.c_str(),
-                  100 * fraction, sim_time, rate, elapsed);
+    std::snprintf(line, sizeof line, "%s: %3.0f%%  t = %.4g  %.3g time units/s  elapsed %.1f s\n",
+                  stage_.c_str(), 100 * fraction, sim_time, rate, elapsed);
   }
   if (line_open_) std::fputs("\n", stderr);  // the phase's time follows on a line of its own
   line_open_ = false;

@@ -85,7 +85,7 @@ class ProgressBar {
   std::thread announcer_;
   std::condition_variable phase_ended_;
   int unwinding_ = 0;  // std::uncaught_exceptions() when constructed
-  std::mutex mutex_;  // engines may report from worker threads
+  std::mutex mutex_;   // engines may report from worker threads
 };
 
 }  // namespace shockgas::app

@@ -9,16 +9,16 @@
 #include <fstream>
 #include <sstream>
 
-#include "shockgas/app/files/durable_file.hpp"
-#include "shockgas/app/records/state_file.hpp"
 #include "shockgas/app/directory/run_target.hpp"
+#include "shockgas/app/files/durable_file.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
+#include "shockgas/app/records/state_file.hpp"
 #include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/initial_stream.hpp"
 #include "shockgas/particles/simulate.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 
@@ -34,8 +34,8 @@ constexpr double kProcessBase = 26e6;  // the program and its libraries, residen
 // ensemble's, scaled and written: 5.0 at R = 1), a space-time record R + 1
 // times (1.2 at R = 1, 2.8 at R = 2).
 constexpr double kHistogramCopies = 3, kSpacetimeCopies = 1;
-constexpr double kCellResultBytes = 24;   // x, v, rho kept per cell and solver
-constexpr double kSeriesColumns = 10;     // the time series of a run (run_result.hpp)
+constexpr double kCellResultBytes = 24;  // x, v, rho kept per cell and solver
+constexpr double kSeriesColumns = 10;    // the time series of a run (run_result.hpp)
 // On disk (tests/app/test_resources.cpp holds the total against the bytes real
 // runs wrote): result.h5's metadata and attributes (55 kB at the default
 // scene), summary.json, report.md and report.html without pictures (30 kB),
@@ -110,7 +110,8 @@ void continuum_memory(const Scene& s, std::vector<ResourceItem>& items) {
 double frame_bytes(const Scene& s) {
   if (!s.output.animation) return 0;
   const double particles = s.has_particles ? d(s.initial.N) * kBodyBytes : 0;
-  const double fields = s.has_continuum ? d(s.continuum.cells) * d(s.continuum.solvers.size()) * kCellResultBytes : 0;
+  const double fields =
+      s.has_continuum ? d(s.continuum.cells) * d(s.continuum.solvers.size()) * kCellResultBytes : 0;
   return d(s.output.animation_frames) * (particles + fields);
 }
 
@@ -155,10 +156,12 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
     items.push_back(
         {"continuum.cells", "the initial condition on the continuum's grid", cells * kInitialCellBytes});
   if (s.has_continuum && s.output.fields)
-    items.push_back({"continuum.cells", "the continuum fields", cells * d(s.continuum.solvers.size()) * kCellResultBytes});
+    items.push_back({"continuum.cells", "the continuum fields",
+                     cells * d(s.continuum.solvers.size()) * kCellResultBytes});
   if (s.has_continuum && s.has_compare)
     items.push_back({"continuum.cells", "the particles on the continuum's grid", cells * kCompareCellBytes});
-  if (s.output.animation) items.push_back({"output.animation_frames", "the frames of the animation", frame_bytes(s)});
+  if (s.output.animation)
+    items.push_back({"output.animation_frames", "the frames of the animation", frame_bytes(s)});
   items.push_back({"", "metadata, summary.json, report.md, report.html", kFileOverhead});
   if (plots && s.output.plots)
     items.push_back({"output.plots", "the plots, and again in report.html", kPlotsBytes});
@@ -278,7 +281,8 @@ double ResourceEstimate::total() const {
 }
 
 const ResourceItem& ResourceEstimate::largest() const {
-  return *std::max_element(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.bytes < b.bytes; });
+  return *std::max_element(items.begin(), items.end(),
+                           [](const auto& a, const auto& b) { return a.bytes < b.bytes; });
 }
 
 ResourceEstimate estimate_memory(const Scene& scene) {
@@ -296,7 +300,8 @@ ResourceEstimate estimate_memory(const Scene& scene) {
   }
   for (auto& i : biggest) e.items.push_back(std::move(i));
   if (runs.size() > 1)
-    e.items.push_back({"sweep.variants", "the initial conditions of every variant, built up front", initial_conditions});
+    e.items.push_back(
+        {"sweep.variants", "the initial conditions of every variant, built up front", initial_conditions});
   return e;
 }
 

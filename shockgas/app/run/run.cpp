@@ -2,20 +2,19 @@
 // for in order (particles, continuum, comparison), each written as soon as it is
 // done, then summary.json, report.md, the plots and the manifest, all into the
 // staging directory that replaces the output directory at the end.
-#include "shockgas/app/run/run_internal.hpp"
-
 #include <filesystem>
 
+#include "shockgas/app/directory/run_directory.hpp"
+#include "shockgas/app/directory/run_target.hpp"
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/output/output_layout.hpp"
 #include "shockgas/app/report/plots.hpp"
-#include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/app/report/report.hpp"
 #include "shockgas/app/report/report_html.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/app/run/resources.hpp"
-#include "shockgas/app/directory/run_directory.hpp"
-#include "shockgas/app/directory/run_target.hpp"
+#include "shockgas/app/run/run_internal.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/interrupt.hpp"
@@ -128,8 +127,8 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
   }
   if (scene.output.animation) {
     progress.phase("frames: " + std::to_string(scene.output.animation_frames) + " for the animation");
-    r.frames = run_frames(scene, initial, r.particles ? r.particles->frames : std::vector<particles::Snapshot>{},
-                          progress);
+    r.frames = run_frames(scene, initial,
+                          r.particles ? r.particles->frames : std::vector<particles::Snapshot>{}, progress);
     sink(r, Part::animation);
   }
   progress.finish();
@@ -145,12 +144,15 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
   RunResults r;
   {
     Hdf5File h5 = Hdf5File::create((dir / "result.h5").string());
-    r = compute_parts(scene, initial, progress, [&](const RunResults& partial, Part part) {
-      write_part(h5, partial, part);
-      summarize_part(summary, partial, part);
-      if (also) also(partial, part);
-      throw_if_aborted();
-    }, source);
+    r = compute_parts(
+        scene, initial, progress,
+        [&](const RunResults& partial, Part part) {
+          write_part(h5, partial, part);
+          summarize_part(summary, partial, part);
+          if (also) also(partial, part);
+          throw_if_aborted();
+        },
+        source);
     progress.phase("writing result.h5, summary.json, report.md");
     h5.close();
   }

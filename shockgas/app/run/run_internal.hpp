@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "shockgas/app/output/output_layout.hpp"
-#include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/app/output/run_results.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/app/run/run_options.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -60,13 +60,14 @@ void draw_plots(const std::filesystem::path& dir, bool animation, ProgressBar& p
 
 // A [sweep] scene into dir (existing and empty): each variant into
 // dir/<k>-<label>/, then the side-by-side table, plots and manifest into dir.
-void run_sweep(const Scene& scene, SweepPlan& plan, const std::filesystem::path& dir, const RunOptions& options,
-               const EnsembleSource& source = {});
+void run_sweep(const Scene& scene, SweepPlan& plan, const std::filesystem::path& dir,
+               const RunOptions& options, const EnsembleSource& source = {});
 
 // Runs write(staging) into a run directory for out (run_directory.hpp: checked,
 // locked, staged) and moves it into place when write returns; returns out. An
 // InputError from write is located at the scene's key.
-std::string into_run_directory(const std::filesystem::path& out, const Scene& scene, const RunOptions& options,
+std::string into_run_directory(const std::filesystem::path& out, const Scene& scene,
+                               const RunOptions& options,
                                const std::function<void(const std::filesystem::path& staging)>& write);
 
 }  // namespace shockgas::app

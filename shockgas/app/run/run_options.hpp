@@ -9,9 +9,9 @@
 namespace shockgas::app {
 
 struct RunOptions {
-  std::string out_dir;    // results directory; empty = out/<scene name>
-  bool progress = true;   // progress on stderr for runs longer than a second
-  bool plots = true;      // make plots (also needs scene output.plots)
+  std::string out_dir;   // results directory; empty = out/<scene name>
+  bool progress = true;  // progress on stderr for runs longer than a second
+  bool plots = true;     // make plots (also needs scene output.plots)
   // A shard (docs/cluster.md): only these realizations of each ensemble ("A:B",
   // half-open), and only these variants of a sweep; written for `shockgas merge`.
   std::string realizations;
@@ -26,7 +26,7 @@ struct RunOptions {
   // the fraction of the stage done in [0, 1] and the simulated time reached.
   // Called from the run's threads, one call at a time; a host's own display.
   std::function<void(const std::string& stage, double fraction, double sim_time)> on_progress;
-  bool force = false;     // replace a directory that holds another scene's results
+  bool force = false;  // replace a directory that holds another scene's results
 };
 
 }  // namespace shockgas::app

@@ -8,13 +8,13 @@
 
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/output/output_layout.hpp"
 #include "shockgas/app/report/plots.hpp"
 #include "shockgas/app/report/report.hpp"
 #include "shockgas/app/report/report_html.hpp"
 #include "shockgas/app/run/run_internal.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
 

@@ -1,8 +1,8 @@
 // Stage 2: the continuum solvers, side by side, each measured against the exact
 // solver when the scene runs it too (its L1 distance, per unit length and
 // relative: shockgas/compare/field_distance.hpp) and against its own initial mass (the drift).
-#include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/app/output/run_results.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/continuum/solve.hpp"
 

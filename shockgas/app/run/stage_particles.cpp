@@ -6,14 +6,14 @@
 #include <algorithm>
 
 #include "shockgas/app/output/frames.hpp"
-#include "shockgas/core/interrupt.hpp"
-#include "shockgas/app/run/progress_bar.hpp"
-#include "shockgas/core/cores.hpp"
 #include "shockgas/app/output/run_results.hpp"
+#include "shockgas/app/records/state_file.hpp"
+#include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
 #include "shockgas/compare/heaviest.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
-#include "shockgas/app/records/state_file.hpp"
+#include "shockgas/core/cores.hpp"
+#include "shockgas/core/interrupt.hpp"
 
 namespace shockgas::app {
 
@@ -82,9 +82,10 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   r.exact = compare::white_noise_references(scene.initial);
   if (r.exact && r.histogram.bins > 0)
     r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
-  r.errors = compare::jackknife_analysis(r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r,
-                                         scene.particles.t_end, scene.compare.fit_window, r.histogram,
-                                         r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
+  r.errors =
+      compare::jackknife_analysis(r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r,
+                                  scene.particles.t_end, scene.compare.fit_window, r.histogram,
+                                  r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
   return r;
 }
 

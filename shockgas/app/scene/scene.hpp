@@ -34,21 +34,22 @@ constexpr std::array<EnumName<FrameSpacing>, 2> enum_names(FrameSpacing) {
 
 // Scene table [output].
 struct OutputParams {
-  bool plots = true;   // needs /usr/bin/python3 with matplotlib, h5py
+  bool plots = true;  // needs /usr/bin/python3 with matplotlib, h5py
   bool fields = true;
   bool animation = false;  // record frames; animation.mp4 and .gif (shockgas/app/output/frames.hpp)
   std::size_t animation_frames = 60;
   FrameSpacing animation_spacing = FrameSpacing::linear;
   double animation_t_min = 0;  // first frame after t = 0 of log spacing; 0 = t_end / 1000
-  double checkpoint_minutes = 10;  // save finished realizations this often (shockgas/app/records/checkpoint.hpp); 0 = on signals only
+  double checkpoint_minutes =
+      10;  // save finished realizations this often (shockgas/app/records/checkpoint.hpp); 0 = on signals only
 };
 
 struct Scene {
-  std::string name;                  // scene name ([scene] name, else the file's stem)
-  std::string description;           // what the scene shows
-  std::string expected_runtime;      // wall time on a 2-core machine, as text
-  std::string path;                  // file it came from
-  std::string text;                  // the scene text as given (before overrides)
+  std::string name;                    // scene name ([scene] name, else the file's stem)
+  std::string description;             // what the scene shows
+  std::string expected_runtime;        // wall time on a 2-core machine, as text
+  std::string path;                    // file it came from
+  std::string text;                    // the scene text as given (before overrides)
   std::vector<std::string> overrides;  // --set key=value, in order
 
   InitialParams initial;

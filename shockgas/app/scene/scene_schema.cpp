@@ -39,18 +39,20 @@ ParameterTable<OutputParams> output_table() {
   t.add(&P::plots, "plots", "", "make PNG plots (and the animation's movie when animation = true)");
   t.add(&P::fields, "fields", "", "store the continuum fields in result.h5");
   t.add(&P::animation, "animation", "",
-        "record frames (particles and every solver's fields at each frame time) and make animation.mp4 and .gif");
+        "record frames (particles and every solver's fields at each frame time) and make animation.mp4 and "
+        ".gif");
   t.add(&P::animation_frames, "animation_frames", "1", "frames of the animation, the first at t = 0",
         allowed(at_least(2)));
   t.add(&P::animation_spacing, "animation_spacing", "",
         "frame times equally spaced in [0, t_end], or t = 0 then log-spaced in [animation_t_min, t_end]");
   t.add(&P::animation_t_min, "animation_t_min", "time",
         "first frame after t = 0 when log-spaced; 0 = t_end / 1000", allowed(at_least(0)));
-  t.add(&P::checkpoint_minutes, "checkpoint_minutes", "min",
-        "save the finished realizations to checkpoint.bin, and the running ones' states beside it, this often "
-        "(and on SIGTERM, SIGINT) for "
-        "`shockgas run --resume`; 0 = only on those signals",
-        allowed(at_least(0)));
+  t.add(
+      &P::checkpoint_minutes, "checkpoint_minutes", "min",
+      "save the finished realizations to checkpoint.bin, and the running ones' states beside it, this often "
+      "(and on SIGTERM, SIGINT) for "
+      "`shockgas run --resume`; 0 = only on those signals",
+      allowed(at_least(0)));
   return t;
 }
 
@@ -176,7 +178,8 @@ std::string node_text(const toml::node& node) {
   else
     node.visit([&](const auto& n) { out << n; });
   std::string text = out.str();
-  if (text.size() > kLongest) text = text.substr(0, kLongest) + "... (" + std::to_string(text.size()) + " characters)";
+  if (text.size() > kLongest)
+    text = text.substr(0, kLongest) + "... (" + std::to_string(text.size()) + " characters)";
   return text;
 }
 

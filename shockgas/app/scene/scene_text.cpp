@@ -3,8 +3,8 @@
 #include <cctype>
 #include <sstream>
 
-#include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/app/scene/scene.hpp"
+#include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/continuum/registry.hpp"
 
 namespace shockgas::app {
@@ -60,7 +60,8 @@ const char* yes_no(bool b) { return b ? "yes" : ""; }
 std::string solver_table() {
   std::ostringstream out;
   out << "\n## Continuum solvers\n\nThe names `continuum.solvers` and `compare.solver` accept, as registered "
-         "(shockgas/continuum/registry.hpp).\n\n| solver | method | density | shocks | uses nu | exact | default |\n"
+         "(shockgas/continuum/registry.hpp).\n\n| solver | method | density | shocks | uses nu | exact | "
+         "default |\n"
          "|---|---|---|---|---|---|---|\n";
   for (const auto& s : continuum::registered_solvers())
     out << "| `" << s.name << "` | " << cell(s.summary) << " | " << yes_no(s.density) << " | "
