@@ -1,11 +1,15 @@
 // Rules of the repository that a reader relies on: each solver's name is written
 // in one source only (its registration), sources cite only documents of the
-// repository, and no source file outgrows what can be read at once.
+// repository, includes run one way down the layers, and no source file outgrows
+// what can be read at once.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -101,6 +105,66 @@ TEST(SourceRules, SourcesCiteOnlyDocumentsOfTheRepository) {
       EXPECT_TRUE(fs::exists(kRoot / doc)) << path << " cites " << doc << ", which does not exist";
     }
   }
+}
+
+// The layers of docs/design.md, as scripts/dev/draw_layers.py draws them: a module
+// includes only modules of a lower rank (particles and continuum share one, so
+// neither includes the other), app's rooms only rooms before them in kRooms, and
+// nothing includes the facade shockgas/shockgas.hpp, which may include anything.
+const std::map<std::string, int> kModules = {{"core", 0},    {"particles", 1}, {"continuum", 1},
+                                             {"compare", 2}, {"studies", 3},   {"app", 4}};
+const std::vector<std::string> kRooms = {"files",  "scene", "records",  "directory", "output", "input",
+                                         "report", "run",   "ensemble", "jobs",      "cli"};
+
+// "core", "app/run", "shockgas.hpp" (the facade), or "" (a file of no folder: the
+// generated shockgas/version.hpp), for a path below shockgas/.
+std::string layer_of(const std::string& path) {
+  const auto slash = path.find('/');
+  if (slash == std::string::npos) return path == "shockgas.hpp" ? path : "";
+  const std::string module = path.substr(0, slash);
+  const auto second = path.find('/', slash + 1);
+  if (module != "app" || second == std::string::npos) return module;
+  return path.substr(0, second);
+}
+
+// Why an include from one layer into another runs against the order, or "" when it does not.
+std::string against_the_order(const std::string& from, const std::string& to) {
+  if (to == "shockgas.hpp") return "the facade is included by no part of shockgas";
+  if (from == "shockgas.hpp" || to.empty() || from == to) return "";
+  const std::string m_from = from.substr(0, from.find('/')), m_to = to.substr(0, to.find('/'));
+  for (const auto& m : {m_from, m_to})
+    if (!kModules.count(m)) return m + " is in no layer: add it to the order (docs/design.md)";
+  if (m_from != m_to) return kModules.at(m_to) < kModules.at(m_from) ? "" : m_to + " is not below " + m_from;
+  const auto room = [](const std::string& layer) {
+    return std::find(kRooms.begin(), kRooms.end(), layer.substr(layer.find('/') + 1)) - kRooms.begin();
+  };
+  for (const auto& l : {from, to})
+    if (room(l) == static_cast<std::ptrdiff_t>(kRooms.size()))
+      return l + " is no room of app: add it to the order";
+  return room(to) < room(from) ? "" : to + " comes after " + from + " in the rooms' order";
+}
+
+TEST(SourceRules, IncludesRunDownTheLayers) {
+  EXPECT_EQ(against_the_order("particles", "continuum"), "continuum is not below particles");
+  EXPECT_EQ(against_the_order("app/run", "app/report"), "");
+  EXPECT_NE(against_the_order("app/files", "app/cli"), "");
+  const std::regex include(R"re(^\s*#\s*include\s*["<]shockgas/([^">]+)[">])re");
+  int includes = 0;
+  for (const auto& path : files({"shockgas"}, {".cpp", ".hpp", ".h"})) {
+    const std::string from = layer_of(fs::relative(path, kRoot / "shockgas").generic_string());
+    std::istringstream text(read_file(path));
+    int line_number = 0;
+    for (std::string line; std::getline(text, line);) {
+      ++line_number;
+      std::smatch m;
+      if (!std::regex_search(line, m, include)) continue;
+      ++includes;
+      const std::string why = against_the_order(from, layer_of(m[1].str()));
+      EXPECT_EQ(why, "") << fs::relative(path, kRoot).string() << ":" << line_number << " includes shockgas/"
+                         << m[1].str() << ": " << why;
+    }
+  }
+  EXPECT_GT(includes, 400);  // the includes were found at all
 }
 
 // House style: one concept per file, about 400 lines at most.
