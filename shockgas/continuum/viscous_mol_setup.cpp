@@ -119,4 +119,10 @@ ContinuumResult mol_result(const MolProblem& m, std::span<const double> y) {
   return r;
 }
 
+ContinuumResult mol_initial_result(const MolProblem& m, const std::string& integrator) {
+  ContinuumResult r = mol_result(m, m.y0);
+  r.method_note = integrator + " at t = 0: the initial cell averages";
+  return r;
+}
+
 }  // namespace shockgas::continuum

@@ -52,4 +52,7 @@ constexpr double kMaxMolStiffness = 4e7;
 // The result at t_end from the final state; the caller adds stats and the note.
 ContinuumResult mol_result(const MolProblem& m, std::span<const double> y);
 
+// The result at t_end = 0 (no integration): the initial cell averages, so noted for the integrator.
+ContinuumResult mol_initial_result(const MolProblem& m, const std::string& integrator);
+
 }  // namespace shockgas::continuum
