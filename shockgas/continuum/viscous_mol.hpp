@@ -57,8 +57,9 @@ void viscous_burgers_rhs(const ViscousBurgersGrid& g, std::span<const double> y,
 // Throw InputError for nu <= 0 (continuum.nu), t_end < 0 (continuum.t_end), too few
 // cells (continuum.cells); RunError naming the solver, cell and time if a value turns
 // non-finite, and naming the SUNDIALS call if the integrator fails.
-// stats: "steps", "rhs_evaluations" (cvode; arkode: "rhs_explicit", "rhs_implicit"),
-// "nonlinear_iterations", "linear_iterations", "error_test_failures", "preconditioner_setups".
+// stats: "steps", "rhs_evaluations" (cvode; arkode: "rhs_explicit", "rhs_implicit",
+// "step_attempts"), "nonlinear_iterations", "linear_iterations", "error_test_failures",
+// "preconditioner_setups".
 ContinuumResult solve_cvode(const InitialField& f, const ContinuumParams& p, double t_end,
                             const ProgressCallback& progress = {});
 ContinuumResult solve_arkode(const InitialField& f, const ContinuumParams& p, double t_end,
