@@ -60,7 +60,7 @@ const char* yes_no(bool b) { return b ? "yes" : ""; }
 std::string solver_table() {
   std::ostringstream out;
   out << "\n## Continuum solvers\n\nThe names `continuum.solvers` and `compare.solver` accept, as registered "
-         "(shockgas/continuum/registry.hpp).\n\n| solver | method | density | shocks | uses nu | exact | "
+         "(../shockgas/continuum/registry.hpp).\n\n| solver | method | density | shocks | uses nu | exact | "
          "default |\n"
          "|---|---|---|---|---|---|---|\n";
   for (const auto& s : continuum::registered_solvers())
