@@ -336,7 +336,8 @@ class EventEngine {
     double& v = body_[i].v;
     double& u = body_[j].v;
     const bool sub = v - u < rule_.delta;
-    dissipated += bounce_equal(v, u, m0_, sub ? 1.0 : rule_.r);
+    const double r = rule_.restitution(sub ? CollisionKind::elastic : CollisionKind::inelastic);
+    dissipated += bounce_equal(v, u, m0_, r);
     return sub;
   }
   // Body j = right(i) joins body i at time t (Linked): velocities, masses and
