@@ -20,13 +20,16 @@
 //    threshold has nothing to bypass and delta does not apply.
 //  * r > 0, g < delta: sub-threshold. Elastic (r = 1) by default, or, with
 //    subthreshold = "sticky", a merge.
-//  * r > 0, g >= delta: an inelastic collision.
+//  * r > 0, g >= delta: an inelastic collision, of restitution r, or r(g) where
+//    the rule has a restitution law (restitution_laws.hpp).
 // A merge is a true aggregation: one body of mass mL + mR at the centre-of-mass
 // velocity (mL v + mR u) / (mL + mR), losing mu g^2 / 2. Point particles with
 // r = 0 but no merge would collide infinitely often inside a cluster.
 #include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 namespace shockgas::particles {
 
@@ -36,18 +39,23 @@ enum class CollisionKind : std::uint8_t {
   merge = 2,      // r = 0, or r > 0 and g < delta with sticky sub-threshold
 };
 
+// A velocity-dependent restitution: r(g) in (0, 1] of an inelastic collision
+// with approach speed g >= delta, in place of the constant r.
+using RestitutionLaw = std::function<double(double g)>;
+
 // The rule's parameters, fixed for a run.
 struct CollisionRule {
   double r = 0.9;                    // restitution [1], 0 <= r <= 1
   double delta = 1e-2;               // sub-threshold velocity [length/time], >= 0; r > 0 only
   bool sticky_subthreshold = false;  // sub-threshold collisions merge instead of bouncing (r > 0)
+  RestitutionLaw law = {};           // r(g) of the inelastic collisions (r > 0); empty: the constant r
 
   // True when some collision of this rule can merge bodies.
   bool can_merge() const { return r == 0.0 || (sticky_subthreshold && delta > 0.0); }
 
   // Inelastic collapse needs inelastic collisions at arbitrarily small approach
-  // speeds: delta = 0 and 0 < r < 1.
-  bool collapse_possible() const { return delta == 0.0 && r > 0.0 && r < 1.0; }
+  // speeds: delta = 0 and 0 < r < 1 (or a law, whose r(g) may be below 1).
+  bool collapse_possible() const { return delta == 0.0 && r > 0.0 && (r < 1.0 || law); }
 
   // True when every collision of this rule is a merge: r = 0.
   bool merges_only() const { return r == 0.0; }
@@ -59,8 +67,22 @@ struct CollisionRule {
     return CollisionKind::inelastic;
   }
 
-  // Restitution of a non-merging collision of this kind.
-  double restitution(CollisionKind kind) const { return kind == CollisionKind::elastic ? 1.0 : r; }
+  // Restitution of a non-merging collision of this kind and approach speed g.
+  // HasLaw: whether law is set, decided once per run outside the engine's loop
+  // (EventEngine::run_until), so that the constant rule's collisions test nothing.
+  template <bool HasLaw>
+  double restitution(CollisionKind kind, double g) const {
+    if (kind == CollisionKind::elastic) return 1.0;
+    if constexpr (HasLaw)
+      return law(g);
+    else
+      return r;
+  }
+  // The same for a rule without a law.
+  double restitution(CollisionKind kind) const {
+    assert(!law);
+    return restitution<false>(kind, 0.0);
+  }
 };
 
 // Velocities after a bouncing collision with restitution r (unequal masses).

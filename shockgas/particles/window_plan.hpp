@@ -241,10 +241,13 @@ class WindowPlanner {
 // inelastic collapse must be detected.
 inline std::string window_obstacle(std::size_t n, bool equal_masses, const CollisionRule& rule) {
   if (rule.collapse_possible())
-    return "inelastic collapse is possible (delta = 0, 0 < r < 1): detecting it needs the global time "
-           "order; windows would need a collapse test per domain";
+    return "inelastic collapse is possible (delta = 0 and 0 < r < 1, or a restitution law): detecting it "
+           "needs the global time order; windows would need a collapse test per domain";
   if (n < WindowPlanner<false>::min_domains * WindowPlanner<false>::min_domain_bodies)
     return "fewer than 1024 bodies: too few to split";
+  if (rule.law && !rule.merges_only())
+    return "a restitution law r(g): the windows' step computes the two bounces of a constant r once; "
+           "windows would need r(g) per collision in DomainStepper";
   if (rule.merges_only() || (equal_masses && !rule.can_merge())) return "";
   const char* need =
       "; windows would need a bound on how far a velocity can leave its range in a window (or cuts checked "

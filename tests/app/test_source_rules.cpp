@@ -1,7 +1,7 @@
-// Rules of the repository that a reader relies on: each solver's name is written
-// in one source only (its registration), sources cite only documents of the
-// repository, includes run one way down the layers, and no source file outgrows
-// what can be read at once.
+// Rules of the repository that a reader relies on: each solver's and restitution
+// law's name is written in one source only (its registration, or its declaration),
+// sources cite only documents of the repository, includes run one way down the
+// layers, and no source file outgrows what can be read at once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +17,7 @@
 
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/particles/params.hpp"
+#include "shockgas/particles/restitution_laws.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -76,11 +77,12 @@ TEST(SourceRules, EachSolverNameIsWrittenInOneSourceOnly) {
   std::map<std::string, std::set<std::string>> where;
   std::vector<std::string> names = continuum::solver_names();
   for (const auto& n : enum_choices<particles::ParticleSolver>()) names.push_back(n);
+  for (const auto& n : particles::restitution_law_names()) names.push_back(n);
   for (const auto& n : names) where[n];
   for (const auto& path : files(kSourceFolders, {".cpp", ".hpp", ".h"}))
     for (const auto& literal : string_literals(read_file(path)))
       if (where.count(literal)) where[literal].insert(fs::relative(path, kRoot).string());
-  EXPECT_EQ(names.size(), 9u);  // 7 continuum solvers, 2 particle solvers
+  EXPECT_EQ(names.size(), 10u);  // 7 continuum solvers, 2 particle solvers, 1 restitution law
   for (const auto& [name, in] : where) {
     std::string list;
     for (const auto& f : in) list += " " + f;

@@ -27,6 +27,8 @@ void particles_part(std::ostream& out, const Scene& scene, const particles::Ense
     out << " (every collision merges)";
   else
     out << ", delta = " << brief(p.delta) << " (" << name_of(p.subthreshold) << " below it)";
+  if (p.restitution_law != particles::kConstantRestitution)
+    out << ", restitution law `" << p.restitution_law << "`";
   out << ", " << p.realizations << " realization(s), solver `" << name_of(p.solver) << "`.\n";
   out << "- " << e.total_collisions << " collisions in " << brief(e.wall_seconds) << " s ("
       << brief(std::round(rate)) << " per second).\n";
