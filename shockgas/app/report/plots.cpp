@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The plotting scripts' exit codes (scripts/plot_result.py): 3 a library is
+// The plotting scripts' exit codes (plots/plot_result.py): 3 a library is
 // missing, 4 a picture could not be written.
 constexpr int kMissingLibrary = 3, kCannotWrite = 4;
 
@@ -49,11 +49,12 @@ void remove_partial_pictures(const fs::path& dir) {
 
 }  // namespace
 
+fs::path plots_dir() { return fs::path(SHOCKGAS_SOURCE_DIR) / "plots"; }
+
 std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
                             const std::string& what, const std::string& log, const std::string& within) {
   const char* env = env_override ? std::getenv(env_override) : nullptr;
-  const std::string python = "/usr/bin/python3",
-                    path = env ? env : std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/" + script;
+  const std::string python = "/usr/bin/python3", path = env ? env : (plots_dir() / script).string();
   if (!fs::exists(python) || !fs::exists(path))
     return "shockgas: warning: no " + what + " (" + (fs::exists(python) ? path : python) +
            " not found; run scripts/setup)\n";

@@ -1,7 +1,12 @@
-"""The runs kept for docs/paper.md (data/paper-runs/), declared once, both ways:
-scripts/collect_paper_run.py writes them, the paper's scripts read them.
+"""The files of shockgas's runs, read in one place: a run directory (summary.json,
+result.h5), the runs kept for docs/paper.md (data/paper-runs/) and the CSV tables
+that `shockgas bench`, `shockgas tail` and bench/particles_bench write. Every
+script reads them here: summary.json is opened by read_summary alone, a CSV
+table by read_csv alone.
 
-One directory per particle run (a scene, or one variant of a sweep):
+A kept run is one directory per particle run (a scene, or one variant of a
+sweep), written by scripts/paper/collect_paper_run.py (write_series,
+write_histogram below: the format is declared once, both ways):
   summary.json   as the run wrote it;
   T.csv          t, T (ensemble mean), T_stderr, and T_<k> for realization k when
                  the run has at most MAX_REALIZATION_COLUMNS; empty where a
@@ -9,6 +14,9 @@ One directory per particle run (a scene, or one variant of a sweep):
   histogram.csv  t, z, density (ensemble mean), and when kept density_stderr (the
                  standard error over realizations) and exact (the exact
                  mass-weighted law of the sticky gas averaged over the bin).
+
+Only the standard library at import (tests/tools/check_summary.py runs under
+any python3); numpy and h5py are imported by the functions that need them.
 """
 import csv
 import json
@@ -16,9 +24,8 @@ import math
 import os
 from collections import defaultdict
 
-import numpy as np
-
 SUMMARY = "summary.json"
+RESULT = "result.h5"
 SERIES = "T.csv"
 HISTOGRAM = "histogram.csv"
 MAX_REALIZATION_COLUMNS = 100
@@ -26,6 +33,43 @@ MAX_REALIZATION_COLUMNS = 100
 # The units of the kept quantities (docs/output.md): T is a velocity squared.
 UNIT_T = "length^2/time^2"
 UNIT_T_SCALED = "length^2/time^(4/3)"  # T t^(2/3)
+
+
+def read_summary(d, first_variant=False, missing=None):
+    """A run's summary.json (of run directory d); with first_variant, a sweep's
+    first variant's summary. Where d holds none: `missing` when given, else the
+    error of the missing file."""
+    path = os.path.join(d, SUMMARY)
+    if missing is not None and not os.path.exists(path):
+        return missing
+    with open(path) as f:
+        s = json.load(f)
+    if first_variant and "analysis" not in s and s.get("variants"):
+        s = s["variants"][0]["summary"]
+    return s
+
+
+def open_result(d):
+    """The result file of run directory d, open for reading (h5py)."""
+    import h5py
+
+    return h5py.File(os.path.join(d, RESULT), "r")
+
+
+def number(text):
+    """A CSV cell as a float; an empty cell (not reached, not applicable) is nan."""
+    return float(text) if text not in ("", None) else math.nan
+
+
+def read_csv(path, numbers=False, missing=None):
+    """The rows of a CSV table with a header line, each a dict by column name:
+    text cells, or with numbers=True every cell a float (number()). A table that
+    does not exist: `missing` when given, else the error of the missing file."""
+    if missing is not None and not os.path.exists(path):
+        return missing
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return [{k: number(v) for k, v in row.items()} for row in rows] if numbers else rows
 
 
 def run_dirs(root):
@@ -36,23 +80,19 @@ def run_dirs(root):
             if os.path.isfile(os.path.join(root, d, SUMMARY))]
 
 
-def read_summary(d, first_variant=False):
-    """A run's summary.json; with first_variant, a sweep's first variant's summary."""
-    with open(os.path.join(d, SUMMARY)) as f:
-        s = json.load(f)
-    if first_variant and "analysis" not in s and s.get("variants"):
-        s = s["variants"][0]["summary"]
-    return s
-
-
-def _number(text):
-    return float(text) if text else math.nan
+def particle_runs(root):
+    """(directory, summary) of every run directory under root (root included)
+    that holds a result file and whose summary has particles, in path order."""
+    for d, _, files in sorted(os.walk(root)):
+        if SUMMARY in files and RESULT in files:
+            s = read_summary(d)
+            if "particles" in s:
+                yield d, s
 
 
 def read_series(d):
-    """The samples a run reached: one dict per row of T.csv, every column a float."""
-    with open(os.path.join(d, SERIES)) as f:
-        return [{k: _number(v) for k, v in row.items()} for row in csv.DictReader(f) if row["T"]]
+    """The samples a kept run reached: one dict per row of T.csv, every column a float."""
+    return [row for row in read_csv(os.path.join(d, SERIES), numbers=True) if not math.isnan(row["T"])]
 
 
 def T_series(d):
@@ -70,14 +110,15 @@ def realization_columns(rows):
 def read_histogram(d):
     """histogram.csv by sample time: {t: [row, ...]}, each row a dict of floats."""
     rows = defaultdict(list)
-    with open(os.path.join(d, HISTOGRAM)) as f:
-        for row in csv.DictReader(f):
-            rows[float(row["t"])].append({k: float(v) for k, v in row.items()})
+    for row in read_csv(os.path.join(d, HISTOGRAM), numbers=True):
+        rows[row["t"]].append(row)
     return rows
 
 
 def write_series(h5, path):
     """T.csv from a result file (result.h5 layout: docs/output.md)."""
+    import numpy as np
+
     t = h5["particles/t"][:]
     cols = {"t": t, "T": h5["particles/T"][:], "T_stderr": h5["particles/T_stderr"][:]}
     if "particles/realizations/T" in h5:
@@ -94,6 +135,8 @@ def write_series(h5, path):
 
 def write_histogram(h5, path):
     """histogram.csv from a result file, when the run kept a histogram."""
+    import numpy as np
+
     if "particles/histogram/density" not in h5:
         return
     z, t = h5["particles/histogram/z"][:], h5["particles/histogram/t"][:]

@@ -1,22 +1,21 @@
 #!/usr/bin/python3
 """Plots of a shockgas result directory, read only from its result files.
 
-Usage: /usr/bin/python3 scripts/plot_result.py DIR
-Writes DIR/*.png (scripts/shockplot/: one module per picture), each whole or not
-at all. Exit code 3 when matplotlib or h5py is missing; 4, with one line "cannot
-write PATH: REASON" on stderr, when a picture cannot be written (a full disk).
+Usage: /usr/bin/python3 plots/plot_result.py DIR
+Writes DIR/*.png (plots/shockplot/pictures.py: one module per picture), each
+whole or not at all. Exit code 3 when matplotlib or h5py is missing; 4, with one
+line "cannot write PATH: REASON" on stderr, when a picture cannot be written (a
+full disk).
 """
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 try:
     import matplotlib
 
     matplotlib.use("Agg")
     import h5py  # noqa: F401 (draw_all reads with it: missing, exit 3 like matplotlib)
-    from shockplot import draw_all
-    from shockplot.common import CannotWrite
+    from shockplot.pictures import draw_all
+    from shockplot.saving import CannotWrite
 except ImportError as exc:  # the command turns this into a warning
     print(f"plot_result.py: {exc}", file=sys.stderr)
     sys.exit(3)

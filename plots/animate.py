@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The animation of a shockgas run, read only from its result.h5 (/animation).
 
-Usage: /usr/bin/python3 scripts/animate.py DIR
+Usage: /usr/bin/python3 plots/animate.py DIR
 Writes DIR/animation.mp4 (ffmpeg, H.264), DIR/animation.gif and DIR/animation.png
 (the last frame), each whole or not at all (by way of NAME.partial). Left: the particles as dots (clusters, coloured by mass) over
 every solver's velocity and density at the same time; right: space-time, the
@@ -18,7 +18,7 @@ import subprocess
 import sys
 
 try:
-    import h5py
+    import h5py  # noqa: F401 (open_result reads with it: missing, exit 3 like matplotlib)
     import matplotlib
 
     matplotlib.use("Agg")
@@ -26,10 +26,9 @@ try:
     import numpy as np
     from matplotlib.colors import LogNorm, Normalize
     from matplotlib.lines import Line2D
-
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    from animation_data import Record, with_unit
-    from shockplot.common import CannotWrite, write_whole
+    from shockplot.animation_data import Record, with_unit
+    from shockplot.run_files import RESULT, open_result
+    from shockplot.saving import CannotWrite, save, write_whole
 except ImportError as exc:  # the command turns this into a warning
     print(f"animate.py: {exc}", file=sys.stderr)
     sys.exit(3)
@@ -270,9 +269,10 @@ class Movie:
         return np.asarray(canvas.buffer_rgba())
 
     def save_still(self, path):
+        """The frame shown as a picture (animation.png): 1280 x 720, as the movie's."""
         for a in self._dynamic():
             a.set_animated(False)
-        self.fig.savefig(path, dpi=DPI, format="png")
+        save(self.fig, path, RESULT, dpi=DPI, tight=False)
 
 
 def time_text(t):
@@ -370,7 +370,7 @@ def gif_with_pillow(movie, n, fps, gif):
 
 def main():
     out_dir = sys.argv[1]
-    with h5py.File(os.path.join(out_dir, "result.h5"), "r") as f:
+    with open_result(out_dir) as f:
         if "animation" not in f:
             print("animate.py: no /animation in result.h5 (output.animation = false)", file=sys.stderr)
             sys.exit(2)
@@ -389,7 +389,7 @@ def main():
             os.remove(paths["mp4"])  # an older run's movie must not stand beside this one's frames
         gif_with_pillow(movie, n, fps, paths["gif"])
     movie.update(n - 1)
-    written(paths["png"], movie.save_still)
+    movie.save_still(paths["png"])
 
 
 if __name__ == "__main__":

@@ -1,24 +1,22 @@
-"""The plots of a shockgas result directory, read only from its result files
-(result.h5, summary.json). figures() builds them (the tests inspect these);
-draw_all() writes them as PNGs. One module per picture."""
-import json
+"""The pictures of a run directory, read only from its result files (result.h5,
+summary.json): figures() builds them (the tests inspect these), draw_all()
+writes them as PNGs. One module per picture."""
 import os
 
 from .clusters import figure_clusters
-from .common import is_gas, save
+from .common import is_gas
 from .distribution import figure_distribution
 from .evolution import figure_evolution
 from .few_bodies import figure_few_bodies
 from .fields import figure_fields
 from .regimes import figure_regimes
+from .run_files import RESULT, SUMMARY, open_result, read_summary
+from .saving import save
 from .spacetime import figure_spacetime
 from .sweep import figure_sweep_distribution, figure_sweep_temperature
 from .temperature import figure_temperature
 
-
-def read_summary(out_dir):
-    path = os.path.join(out_dir, "summary.json")
-    return json.load(open(path)) if os.path.exists(path) else {}
+SOURCE = f"{RESULT}, {SUMMARY}"  # what the pictures are drawn from (PNG text Source)
 
 
 def figures(f, summary):
@@ -47,9 +45,7 @@ def figures(f, summary):
 
 
 def draw_all(out_dir):
-    import h5py  # here, not above: the package's other users (bench charts, shockplot.common) need no h5py
-
-    summary = read_summary(out_dir)
-    with h5py.File(os.path.join(out_dir, "result.h5"), "r") as f:
+    summary = read_summary(out_dir, missing={})
+    with open_result(out_dir) as f:
         for name, fig in figures(f, summary).items():
-            save(fig, out_dir, name)
+            save(fig, os.path.join(out_dir, name), SOURCE)
