@@ -14,11 +14,14 @@ write_histogram below: the format is declared once, both ways):
   histogram.csv  t, z, density (ensemble mean), and when kept density_stderr (the
                  standard error over realizations) and exact (the exact
                  mass-weighted law of the sticky gas averaged over the bin).
+Beside the runs of a figure, a comparison of them (collapse*.json, by
+scripts/paper/fig4_collapse.py: write_comparison, read_comparison).
 
 Only the standard library at import (tests/tools/check_summary.py runs under
 any python3); numpy and h5py are imported by the functions that need them.
 """
 import csv
+import glob
 import json
 import math
 import os
@@ -27,6 +30,7 @@ from collections import defaultdict
 SUMMARY = "summary.json"
 RESULT = "result.h5"
 SERIES = "T.csv"
+COMPARISONS = "collapse*.json"  # of the kept runs under one directory
 HISTOGRAM = "histogram.csv"
 MAX_REALIZATION_COLUMNS = 100
 
@@ -157,3 +161,19 @@ def write_histogram(h5, path):
             for j, zj in enumerate(z):
                 row = [ti, zj, density[i, j]] + [value(i, j) for value in columns.values()]
                 w.writerow([repr(float(x)) for x in row])
+
+
+def write_comparison(result, path):
+    """A comparison of kept runs (a dict of numbers and lists) as JSON at path."""
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w") as f:
+        json.dump(result, f, indent=1)
+
+
+def read_comparisons(root):
+    """(file name, comparison) of every COMPARISONS file directly under root, by name."""
+    found = []
+    for path in sorted(glob.glob(os.path.join(root, COMPARISONS))):
+        with open(path) as f:
+            found.append((os.path.basename(path), json.load(f)))
+    return found

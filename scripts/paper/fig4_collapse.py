@@ -31,7 +31,6 @@ histogram is normalised), so chi2/dof is an indicator, not a test.
 """
 import argparse
 import itertools
-import json
 import math
 import os
 import sys
@@ -153,9 +152,7 @@ def main():
     ap.add_argument("--t-min", type=float, default=1e3, help="earliest sample time compared (default 1e3)")
     a = ap.parse_args()
     result = collapse(a.run_dir, a.t_min)
-    os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
-    with open(a.out, "w") as f:
-        json.dump(result, f, indent=1)
+    run_files.write_comparison(result, a.out)
     for g in result["groups"]:
         where = "r = %g" % g["r"] if "r" in g else ("t = %g" % g["t"] if "t" in g else "all")
         print("%-6s %-10s D = %.4f +- %.4f  noise floor %.4f" % (g["kind"], where, g["distance"], g["error"],

@@ -17,15 +17,13 @@ fig4/  collapse*.json (scripts/paper/fig4_collapse.py): the L1 distance of the s
 A directory that is missing is skipped.
 """
 import argparse
-import glob
-import json
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
 import plot_fig2_runs  # noqa: E402
-from shockplot.run_files import T_series, read_summary, run_dirs  # noqa: E402
+from shockplot.run_files import T_series, read_comparisons, read_summary, run_dirs  # noqa: E402
 
 WINDOWS = [(1e2, 1e4), (1e3, 1e5), (1e4, 1e5)]
 
@@ -118,11 +116,9 @@ def fig2(root):
 
 
 def fig4(root):
-    for path in sorted(glob.glob(os.path.join(root, "collapse*.json"))):
-        with open(path) as f:
-            c = json.load(f)
+    for name, c in read_comparisons(root):
         print("`%s`: %d × N = %.0e, r = %s, t = %s, bins of %.2f in z" % (
-            os.path.basename(path), c["realizations"], c["N"], ", ".join("%g" % r for r in c["r"]),
+            name, c["realizations"], c["N"], ", ".join("%g" % r for r in c["r"]),
             ", ".join("%g" % t for t in c["t"]), c["bin_width"]))
         print()
         print("| distributions compared | pairs | L1 distance | noise floor |")
