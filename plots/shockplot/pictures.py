@@ -19,33 +19,48 @@ from .temperature import figure_temperature
 SOURCE = f"{RESULT}, {SUMMARY}"  # what the pictures are drawn from (PNG text Source)
 
 
+def called_for(f, summary):
+    """Every picture the result calls for, {file name: build}, build(f, summary)
+    giving its figure (None: too little data to draw). Nothing is drawn here."""
+    wanted = {}
+    if "sweep" in f:
+        wanted["temperature.png"] = figure_sweep_temperature
+        wanted["velocity_distribution.png"] = lambda f, summary: figure_sweep_distribution(f)
+    if "particles/T" in f:
+        wanted["temperature.png"] = figure_temperature
+    if not is_gas(summary):
+        wanted["temperature.png"] = lambda f, summary: figure_few_bodies(f)
+    if "particles/histogram" in f:
+        wanted["velocity_distribution.png"] = lambda f, summary: figure_distribution(f)
+    if "particles/spacetime" in f:
+        wanted["spacetime.png"] = lambda f, summary: figure_spacetime(f)
+    if "continuum" in f:
+        wanted["fields.png"] = figure_fields
+    if "particles/n_clusters" in f or "compare/cluster_mass_edges" in f:
+        wanted["clusters.png"] = figure_clusters
+    if "animation/evolution" in f:
+        wanted["evolution.png"] = figure_evolution
+    if "particles/analysis" in f:
+        wanted["regimes.png"] = figure_regimes
+    return wanted
+
+
 def figures(f, summary):
     """Every picture the result calls for: {file name: matplotlib figure}."""
-    drawn = {}
-    if "sweep" in f:
-        drawn["temperature.png"] = figure_sweep_temperature(f, summary)
-        drawn["velocity_distribution.png"] = figure_sweep_distribution(f)
-    if "particles/T" in f:
-        drawn["temperature.png"] = figure_temperature(f, summary)
-    if not is_gas(summary):
-        drawn["temperature.png"] = figure_few_bodies(f)
-    if "particles/histogram" in f:
-        drawn["velocity_distribution.png"] = figure_distribution(f)
-    if "particles/spacetime" in f:
-        drawn["spacetime.png"] = figure_spacetime(f)
-    if "continuum" in f:
-        drawn["fields.png"] = figure_fields(f, summary)
-    if "particles/n_clusters" in f or "compare/cluster_mass_edges" in f:
-        drawn["clusters.png"] = figure_clusters(f, summary)
-    if "animation/evolution" in f:
-        drawn["evolution.png"] = figure_evolution(f, summary)
-    if "particles/analysis" in f:
-        drawn["regimes.png"] = figure_regimes(f, summary)
+    drawn = {name: build(f, summary) for name, build in called_for(f, summary).items()}
     return {name: fig for name, fig in drawn.items() if fig is not None}
 
 
+def draw(f, summary, out_dir, name):
+    """Writes the picture `name` (one of called_for's) into out_dir, if it has data to show."""
+    fig = called_for(f, summary)[name](f, summary)
+    if fig is not None:
+        save(fig, os.path.join(out_dir, name), SOURCE)
+
+
 def draw_all(out_dir):
+    """Every picture of run directory out_dir, one after the other."""
     summary = read_summary(out_dir, missing={})
     with open_result(out_dir) as f:
-        for name, fig in figures(f, summary).items():
-            save(fig, os.path.join(out_dir, name), SOURCE)
+        for name in called_for(f, summary):
+            draw(f, summary, out_dir, name)

@@ -8,6 +8,7 @@ import matplotlib
 import matplotlib.pyplot as plt
 
 DPI = 110  # the run's pictures
+PAD = 0.1  # inches around a cropped picture (matplotlib's savefig.pad_inches)
 SOFTWARE = f"shockgas (plots/shockplot, matplotlib {matplotlib.__version__})"
 
 
@@ -55,7 +56,11 @@ def save(fig, path, source, dpi=DPI, tight=True):
     if title:
         metadata["Title"] = title
     try:
+        # The crop of bbox_inches="tight", measured here: savefig then skips the
+        # whole draw it makes first to measure it (the same pixels, a draw less).
+        fig.set_dpi(dpi)  # measured at the resolution it is written at
+        crop = fig.get_tightbbox(fig.canvas.get_renderer()).padded(PAD) if tight else None
         save_whole(path, lambda partial: fig.savefig(partial, format="png", dpi=dpi, metadata=metadata,
-                                                     bbox_inches="tight" if tight else None))
+                                                     bbox_inches=crop))
     finally:
         plt.close(fig)
