@@ -14,12 +14,10 @@ import signal
 import sys
 import traceback
 
-import matplotlib
-
 from .movie_files import draw_animation
 from .pictures import called_for, draw
 from .run_files import open_result, read_summary
-from .saving import DPI, CannotWrite
+from .saving import CannotWrite
 
 ANIMATION = "animation"
 # What a job costs, roughly (the queue hands the costliest out first).
@@ -72,7 +70,6 @@ def _die_with(parent):
 def _work(out_dir, names, queue, report, who):
     """Takes job after job (one byte: its index in names) until the queue is
     empty; writes a line "CODE<tab>MESSAGE" to `report` for each failure."""
-    matplotlib.rcParams["figure.dpi"] = DPI  # laid out at the resolution it is saved at: text measured once
     summary = read_summary(out_dir, missing={})
     with open_result(out_dir) as f:
         while True:
