@@ -2,6 +2,7 @@
 #include "shockgas/app/report/report.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "shockgas/compare/theory.hpp"
@@ -123,6 +124,19 @@ void comparison_part(std::ostream& out, const Scene& scene, const Comparison& cm
 }
 
 }  // namespace
+
+std::string phase_times_text(const std::vector<std::pair<std::string, double>>& phases) {
+  std::ostringstream out;
+  out << "## Time of each phase\n\n"
+      << "Wall-clock time of each phase of this run, named as its progress lines name them.\n\n"
+      << "| phase | wall time |\n|---|---|\n";
+  char seconds[32];
+  for (const auto& [name, time] : phases) {
+    std::snprintf(seconds, sizeof seconds, "%.2f s", time);
+    out << "| " << name << " | " << seconds << " |\n";
+  }
+  return out.str() + "\n";
+}
 
 std::string report_text(const RunResults& r) {
   const Scene& scene = *r.scene;

@@ -1,7 +1,8 @@
 // Running a scene: the initial condition built once, every part the scene asks
 // for in order (particles, continuum, comparison), each written as soon as it is
-// done, then summary.json, report.md, the plots and the manifest, all into the
-// staging directory that replaces the output directory at the end.
+// done, then summary.json, the plots, report.md (with the time of each phase)
+// and the manifest, all into the staging directory that replaces the output
+// directory at the end.
 #include <filesystem>
 
 #include "shockgas/app/directory/run_directory.hpp"
@@ -64,14 +65,10 @@ InputError located(const InputError& e, const Scene& scene) {
 }
 
 void draw_plots(const fs::path& dir, bool animation, ProgressBar& progress, const std::string& within) {
-  const auto draw = [&](const char* what, std::string (*script)(const std::string&, const std::string&)) {
-    progress.phase(what);
-    const std::string said = script(dir.string(), within);
-    progress.end_phase();
-    progress.say(said);
-  };
-  draw("plots", make_plots);
-  if (animation) draw("animation", make_animation);
+  progress.phase(animation ? "plots, animation" : "plots");
+  const std::string said = make_plots(dir.string(), animation, within);
+  progress.end_phase();
+  progress.say(said);
 }
 
 // Only the continuum needs realization 0's bodies whole (its deposit); the
@@ -153,15 +150,20 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
           throw_if_aborted();
         },
         source);
-    progress.phase("writing result.h5, summary.json, report.md");
+    progress.phase("writing result.h5, summary.json");
     h5.close();
   }
   write_file(dir / "summary.json", summary.dump(2) + "\n");
-  write_file(dir / "report.md", report_text(r));
   if (options.plots && scene.output.plots)
     draw_plots(dir, scene.output.animation, progress,
                variant != std::string::npos ? dir.filename().string() : "");
-  progress.phase("writing report.html, manifest.json");
+  progress.end_phase();
+  auto phases = progress.phase_times();
+  if (r.particles)
+    phases.insert(phases.begin(), {"particles: simulation", r.particles->ensemble.wall_seconds});
+  const std::string report = report_text(r) + phase_times_text(phases);
+  progress.phase("writing report.md, report.html, manifest.json");
+  write_file(dir / "report.md", report);
   write_report_html(dir);
   write_manifest(dir, scene.name);
   return reduce(r, std::move(summary));

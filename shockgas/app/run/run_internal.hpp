@@ -53,8 +53,9 @@ struct SweepPlan {
 };
 SweepPlan plan_sweep(const Scene& scene);
 
-// The plots of a result directory, and its animation: each a phase of progress,
-// what their scripts say told after it (plots.hpp); within as there.
+// The plots of a result directory, with its animation when asked: one phase of
+// progress ("plots", "plots, animation"), drawn by one process, what it says
+// told after it (plots.hpp); within as there.
 void draw_plots(const std::filesystem::path& dir, bool animation, ProgressBar& progress,
                 const std::string& within = "");
 

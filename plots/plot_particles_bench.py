@@ -2,9 +2,9 @@
 """Chart of particles_bench's CSV: whole-process rate (per CPU second) and peak
 memory against N, and the thread scaling of one realization (wall clock).
 
-    /usr/bin/python3 scripts/plot_particles_bench.py particles_bench.csv particles_bench.png
+    /usr/bin/python3 plots/plot_particles_bench.py particles_bench.csv particles_bench.png
 """
-import csv
+import os
 import statistics
 import sys
 
@@ -12,11 +12,12 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from shockplot.run_files import read_csv  # noqa: E402
+from shockplot.saving import save  # noqa: E402
 
 
 def read(path):
-    with open(path, newline="") as f:
-        rows = [r for r in csv.DictReader(f) if r["ok"] == "1"]
+    rows = [r for r in read_csv(path) if r["ok"] == "1"]
     for r in rows:
         for key in ("N", "threads", "collisions"):
             r[key] = int(r[key])
@@ -72,7 +73,7 @@ def main(csv_path, png_path):
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(png_path, dpi=110)
+    save(fig, png_path, os.path.basename(csv_path), dpi=110, tight=False)
     print("wrote", png_path)
 
 

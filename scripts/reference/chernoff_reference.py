@@ -15,12 +15,12 @@ Writes three tables into tests/compare/data/ (or the directory given):
                           x < 0, which needs no residue, and c = 1.1 * 2^(2/3) x^2 + 0.3 for
                           x >= 0), with mpmath's own Airy function and quadrature.
   cluster_mass_reference.csv  the mass-weighted cluster velocity density P_mass(u) of
-                          cluster_velocity_law.hpp from scripts/exact_laws.py (SciPy's
+                          cluster_velocity_law.hpp from scripts/reference/exact_laws.py (SciPy's
                           Airy function and zeros, the zero sum with the density of the
                           far zeros instead of a small-mu expansion).
 
 Run with Debian's Python (it has numpy, scipy and mpmath); about 4 minutes:
-    /usr/bin/python3 scripts/chernoff_reference.py [out_dir]
+    /usr/bin/python3 scripts/reference/chernoff_reference.py [out_dir]
 """
 import os
 import sys
@@ -75,14 +75,14 @@ def write_cluster(path):
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     import exact_laws
     with open(path, "w") as f:
-        f.write("# u,P_mass(u)  (scripts/exact_laws.py, scipy %s)\n" % __import__("scipy").__version__)
+        f.write("# u,P_mass(u)  (scripts/reference/exact_laws.py, scipy %s)\n" % __import__("scipy").__version__)
         for u in U_POINTS:
             f.write("%s,%.15g\n" % (repr(float(u)), exact_laws.cluster_mass_density(u)))
 
 
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "tests", "compare", "data")
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "..", "tests", "compare", "data")
     os.makedirs(out, exist_ok=True)
     write_airy(os.path.join(out, "airy_reference.csv"))
     write_g(os.path.join(out, "chernoff_g_reference.csv"))

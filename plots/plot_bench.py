@@ -6,29 +6,25 @@ each whole or not at all. Exit code 3 if matplotlib is missing (the command turn
 that into a warning); 4, with one line "cannot write PATH: REASON" on stderr, when
 a chart cannot be written (a full disk).
 """
-import csv
 import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 try:
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from shockplot.common import CannotWrite, save_whole
+    from shockplot.run_files import read_csv
+    from shockplot.saving import CannotWrite, save
 except ImportError as exc:
     print(f"plot_bench.py: {exc}", file=sys.stderr)
     sys.exit(3)
 
 
 def read(directory, name):
-    path = os.path.join(directory, name)
-    if not os.path.exists(path):
-        return None
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+    """The rows of DIR/name (text cells); none when the study did not run."""
+    return read_csv(os.path.join(directory, name), missing=[])
 
 
 def num(row, key):
@@ -43,13 +39,11 @@ def positive(xs, ys, keep_order=False):
     return [p[0] for p in pts], [p[1] for p in pts]
 
 
-def save(fig, directory, name):
-    """DIR/name.png, whole or not at all; CannotWrite when the system refuses it."""
+def chart(fig, directory, name, table):
+    """DIR/name.png drawn from DIR/table, whole or not at all (saving.save);
+    CannotWrite when the system refuses it."""
     fig.tight_layout()
-    try:
-        save_whole(os.path.join(directory, name + ".png"), lambda partial: fig.savefig(partial, format="png", dpi=90))
-    finally:
-        plt.close(fig)
+    save(fig, os.path.join(directory, name + ".png"), table, dpi=90, tight=False)
 
 
 def grouped(rows, key):
@@ -84,7 +78,7 @@ def work_precision(directory, name, error, title):
         ax.grid(True, which="both", alpha=0.3)
         if ax.lines:
             ax.legend(fontsize=6)
-    save(fig, directory, name + ("" if error == "l1" else "_" + error))
+    chart(fig, directory, name + ("" if error == "l1" else "_" + error), name + ".csv")
 
 
 def particles_cost(directory):
@@ -104,7 +98,7 @@ def particles_cost(directory):
         ax.set_ylabel("wall time [s]")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
-    save(fig, directory, "particles_cost")
+    chart(fig, directory, "particles_cost", "particles_cost.csv")
 
 
 def particles_statistics(directory):
@@ -122,7 +116,7 @@ def particles_statistics(directory):
     ax.set_ylabel("statistical error")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
-    save(fig, directory, "particles_statistics")
+    chart(fig, directory, "particles_statistics", "particles_statistics.csv")
 
 
 def stability_cfl(directory):
@@ -149,7 +143,7 @@ def stability_cfl(directory):
         ax.set_ylabel("max_n (TV_n+1 - TV_n) / TV_0")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
-    save(fig, directory, "stability_cfl")
+    chart(fig, directory, "stability_cfl", "stability_cfl.csv")
 
 
 def stability_viscous(directory):
@@ -177,7 +171,7 @@ def stability_viscous(directory):
         ax.grid(True, which="both", alpha=0.3)
         if ax.lines:
             ax.legend(fontsize=6)
-    save(fig, directory, "stability_viscous")
+    chart(fig, directory, "stability_viscous", "stability_viscous.csv")
 
 
 def stability_hopf_cole(directory):
@@ -199,7 +193,7 @@ def stability_hopf_cole(directory):
     ax.set_ylabel("velocity error [length/time]")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
-    save(fig, directory, "stability_hopf_cole")
+    chart(fig, directory, "stability_hopf_cole", "stability_hopf_cole.csv")
 
 
 def stability_collapse(directory):
@@ -221,7 +215,7 @@ def stability_collapse(directory):
     for ax in axes:
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
-    save(fig, directory, "stability_collapse")
+    chart(fig, directory, "stability_collapse", "stability_collapse.csv")
 
 
 def stability_threshold(directory):
@@ -238,7 +232,7 @@ def stability_threshold(directory):
     ax.set_ylabel("time [time]")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=7)
-    save(fig, directory, "stability_threshold")
+    chart(fig, directory, "stability_threshold", "stability_threshold.csv")
 
 
 def main():

@@ -2,10 +2,10 @@
 """Fig. 2 from the kept runs (data/paper-runs/fig2, docs/paper.md): does T(t)
 depend on the threshold delta or on what happens below it?
 
-    scripts/plot_fig2_runs.py data/paper-runs/fig2 --out docs/img/paper
+    scripts/paper/plot_fig2_runs.py data/paper-runs/fig2 --out docs/img/paper
 
 Each directory under the root holds T.csv and summary.json of one run
-(scripts/collect_paper_run.py): the variants of fig2.toml (one realization each,
+(scripts/paper/collect_paper_run.py): the variants of fig2.toml (one realization each,
 r = 0.9), and the exact hull (r = 0) of fig1-hull.toml with t_end = 10^6 and the
 same seed, whose realization 0 is the same initial state as the variants'.
 Draws fig2-paper-size.png:
@@ -23,14 +23,17 @@ Draws fig2-paper-size.png:
 import argparse
 import math
 import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from shockplot import kept_runs  # noqa: E402
-from shockplot.common import label as axis_label, save  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
+from shockplot import run_files  # noqa: E402
+from shockplot.common import label as axis_label  # noqa: E402
+from shockplot.saving import save  # noqa: E402
 
 EXACT_T_T23 = 0.2128531785  # shockgas/compare/cluster_velocity_law.hpp, D = 1/3
 T_START = 100.0
@@ -40,9 +43,9 @@ STYLE = {("elastic", 0.01): ("C0", "-"), ("sticky", 0.01): ("C1", "--"),
 
 def load(d):
     """One kept run: its parameters, T(t) of realization 0 and every realization's T."""
-    s = kept_runs.read_summary(d)
-    rows = kept_runs.read_series(d)
-    columns = kept_runs.realization_columns(rows)
+    s = run_files.read_summary(d)
+    rows = run_files.read_series(d)
+    columns = run_files.realization_columns(rows)
     p = s["particles"]
     rule = "hull" if p["solver"] == "hull" else (
         "sticky" if any(o.endswith("subthreshold=sticky") for o in s["overrides"]) else "elastic")
@@ -98,7 +101,7 @@ def main():
     ap.add_argument("root")
     ap.add_argument("--out", default=".")
     a = ap.parse_args()
-    runs = [load(d) for d in kept_runs.run_dirs(a.root)]
+    runs = [load(d) for d in run_files.run_dirs(a.root)]
     hull = next(r for r in runs if r["rule"] == "hull")
     variants = [r for r in runs if r is not hull]
     fig, (left, right) = plt.subplots(1, 2, figsize=(11.5, 4.6))
@@ -140,7 +143,7 @@ def main():
         ax.set_xlim(t_min, t_max)
         ax.set_xlabel(axis_label("time $t$", "time"))
     left.set_yscale("log")
-    left.set_ylabel(axis_label("$T\\,t^{2/3}$", kept_runs.UNIT_T_SCALED))
+    left.set_ylabel(axis_label("$T\\,t^{2/3}$", run_files.UNIT_T_SCALED))
     left.set_title("r = 0.9, N = %.0e, realization 0" % hull["N"])
     left.legend(fontsize=7)
     right.axhline(0, color="k", lw=0.8)
@@ -149,7 +152,8 @@ def main():
     right.legend(fontsize=7)
     fig.tight_layout()
     os.makedirs(a.out, exist_ok=True)
-    save(fig, a.out, "fig2-paper-size.png")
+    save(fig, os.path.join(a.out, "fig2-paper-size.png"),
+         f"{run_files.SERIES}, {run_files.SUMMARY} of the kept runs in {a.root}")
 
 
 if __name__ == "__main__":

@@ -2,7 +2,7 @@
 """The numbers docs/paper.md quotes for Figs. 1, 2 and 4 at the paper's size,
 as Markdown tables, from the kept runs (data/paper-runs/) alone.
 
-    scripts/paper_tables.py data/paper-runs
+    scripts/paper/paper_tables.py data/paper-runs
 
 fig1/  each run's exponent of T(t) on the windows docs/paper.md uses, with its
        jackknife error over realizations (analysis.T_exponent_windows), T t^(2/3)
@@ -11,21 +11,19 @@ fig2/  each run's least-squares exponent per decade (one realization: no error
        over realizations; the exact hull's realizations give the scatter of one
        realization) and its T against that of the exact sticky gas (r = 0) of the
        same initial state (realization 0 of the hull);
-fig4/  collapse*.json (scripts/fig4_collapse.py): the L1 distance of the scaled
+fig4/  collapse*.json (scripts/paper/fig4_collapse.py): the L1 distance of the scaled
        distributions over t, over r and over both, its jackknife error and the
        distance noise alone would give.
 A directory that is missing is skipped.
 """
 import argparse
-import glob
-import json
 import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
 import plot_fig2_runs  # noqa: E402
-from shockplot.kept_runs import T_series, read_summary, run_dirs  # noqa: E402
+from shockplot.run_files import T_series, read_comparisons, read_summary, run_dirs  # noqa: E402
 
 WINDOWS = [(1e2, 1e4), (1e3, 1e5), (1e4, 1e5)]
 
@@ -118,11 +116,9 @@ def fig2(root):
 
 
 def fig4(root):
-    for path in sorted(glob.glob(os.path.join(root, "collapse*.json"))):
-        with open(path) as f:
-            c = json.load(f)
+    for name, c in read_comparisons(root):
         print("`%s`: %d × N = %.0e, r = %s, t = %s, bins of %.2f in z" % (
-            os.path.basename(path), c["realizations"], c["N"], ", ".join("%g" % r for r in c["r"]),
+            name, c["realizations"], c["N"], ", ".join("%g" % r for r in c["r"]),
             ", ".join("%g" % t for t in c["t"]), c["bin_width"]))
         print()
         print("| distributions compared | pairs | L1 distance | noise floor |")

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Fig. 1 at the paper's size from the kept runs (data/paper-runs/fig1, docs/paper.md).
 
-    scripts/plot_fig1_runs.py data/paper-runs/fig1 --out docs/img/paper
+    scripts/paper/plot_fig1_runs.py data/paper-runs/fig1 --out docs/img/paper
 
-Reads each run's T.csv and summary.json (scripts/collect_paper_run.py) and draws
+Reads each run's T.csv and summary.json (scripts/paper/collect_paper_run.py) and draws
 two pictures, each of two panels:
   left   T t^(2/3) against t, with the standard error over realizations, and the
          exact continuum value of the sticky gas 0.17571 (4D)^(2/3) = 0.2129 (D = 1/3);
@@ -17,14 +17,17 @@ A run that is not kept is left out of its picture.
 import argparse
 import math
 import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from shockplot import kept_runs  # noqa: E402
-from shockplot.common import label as axis_label, save  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
+from shockplot import run_files  # noqa: E402
+from shockplot.common import label as axis_label  # noqa: E402
+from shockplot.saving import save  # noqa: E402
 
 EXACT_T_T23 = 0.2128531785  # shockgas/compare/cluster_velocity_law.hpp, D = 1/3
 R0_RUNS = [  # directory, legend, colour
@@ -47,12 +50,12 @@ def draw(root, runs, title, out_dir, file_name, log_y=False):
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4))
     for k, (name, label, colour) in enumerate(kept):
         d = os.path.join(root, name)
-        series = [(t, T, e) for t, T, e in kept_runs.T_series(d) if t >= 10]
+        series = [(t, T, e) for t, T, e in run_files.T_series(d) if t >= 10]
         scale = [t ** (2.0 / 3.0) for t, _, _ in series]
         left.errorbar([t for t, _, _ in series], [T * s for (_, T, _), s in zip(series, scale)],
                       yerr=[e * s for (_, _, e), s in zip(series, scale)], fmt="o-", ms=2.5, lw=0.8,
                       color=colour, label=label)
-        windows = [w for w in kept_runs.read_summary(d, first_variant=True)["analysis"]["T_exponent_windows"]
+        windows = [w for w in run_files.read_summary(d, first_variant=True)["analysis"]["T_exponent_windows"]
                    if abs(w["t_max"] / w["t_min"] - 10) < 1e-6]
         shift = 1 + 0.06 * (k - (len(kept) - 1) / 2)
         right.errorbar([math.sqrt(w["t_min"] * w["t_max"]) * shift for w in windows],
@@ -63,7 +66,7 @@ def draw(root, runs, title, out_dir, file_name, log_y=False):
     if log_y:
         left.set_yscale("log")
     left.set_xlabel(axis_label("time $t$", "time"))
-    left.set_ylabel(axis_label("$T\\,t^{2/3}$", kept_runs.UNIT_T_SCALED))
+    left.set_ylabel(axis_label("$T\\,t^{2/3}$", run_files.UNIT_T_SCALED))
     left.set_title(title + ": T t^(2/3), error over realizations")
     left.legend(fontsize=7)
     right.axhline(-2.0 / 3.0, color="k", ls="--", lw=1, label="-2/3")
@@ -73,7 +76,7 @@ def draw(root, runs, title, out_dir, file_name, log_y=False):
     right.set_title("exponent per decade, jackknife error over realizations")
     right.legend(fontsize=7)
     fig.tight_layout()
-    save(fig, out_dir, file_name)
+    save(fig, os.path.join(out_dir, file_name), f"{run_files.SERIES}, {run_files.SUMMARY} of the kept runs in {root}")
 
 
 def main():

@@ -3,7 +3,7 @@
 Phi(z) of several restitutions r and times t are, with jackknife errors over the
 realizations and the distance that noise alone would give (docs/paper.md, Figure 4).
 
-    scripts/fig4_collapse.py RUN_DIR --out data/paper-runs/fig4/collapse.json [--t-min 1e3]
+    scripts/paper/fig4_collapse.py RUN_DIR --out data/paper-runs/fig4/collapse.json [--t-min 1e3]
 
 RUN_DIR is a sweep of a scene over r (fig4.toml): every variant starts from the
 same initial states, realization by realization, and its result.h5 keeps each
@@ -31,31 +31,28 @@ histogram is normalised), so chi2/dof is an indicator, not a test.
 """
 import argparse
 import itertools
-import json
 import math
 import os
+import sys
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
+from shockplot import run_files  # noqa: E402
 
 MIN_REALIZATIONS = 20
 
 
 def variants(run_dir):
-    """(r, result.h5 path) of every particle run under RUN_DIR, by r."""
-    found = []
-    for d, _, files in sorted(os.walk(run_dir)):
-        if "summary.json" in files and "result.h5" in files and d != os.path.normpath(run_dir):
-            with open(os.path.join(d, "summary.json")) as f:
-                s = json.load(f)
-            if "particles" in s:
-                found.append((s["particles"]["r"], os.path.join(d, "result.h5"), s))
+    """(r, run directory, summary) of every particle run under RUN_DIR (not RUN_DIR itself), by r."""
+    found = [(s["particles"]["r"], d, s) for d, s in run_files.particle_runs(run_dir)
+             if d != os.path.normpath(run_dir)]
     return sorted(found, key=lambda v: v[0])
 
 
-def read_histograms(path):
-    """t (times), dz, and an array [realization, time, bin] of densities."""
-    with h5py.File(path, "r") as h5:
+def read_histograms(d):
+    """t (times), dz, and an array [realization, time, bin] of densities of run directory d."""
+    with run_files.open_result(d) as h5:
         t = h5["particles/histogram/t"][:]
         z = h5["particles/histogram/z"][:]
         rows = h5["particles/realizations/histogram_density"][:]
@@ -110,8 +107,8 @@ def collapse(run_dir, t_min):
         raise SystemExit("no particle runs with result.h5 under %s" % run_dir)
     data = {}
     dz = times = None
-    for r, path, _ in runs:
-        t, dz, h = read_histograms(path)
+    for r, d, _ in runs:
+        t, dz, h = read_histograms(d)
         times = [float(x) for x in t if x >= t_min * (1 - 1e-12)]
         data[r] = {float(x): h[:, k, :] for k, x in enumerate(t) if x >= t_min * (1 - 1e-12)}
     n = min(h.shape[0] for per_t in data.values() for h in per_t.values())
@@ -155,9 +152,7 @@ def main():
     ap.add_argument("--t-min", type=float, default=1e3, help="earliest sample time compared (default 1e3)")
     a = ap.parse_args()
     result = collapse(a.run_dir, a.t_min)
-    os.makedirs(os.path.dirname(os.path.abspath(a.out)), exist_ok=True)
-    with open(a.out, "w") as f:
-        json.dump(result, f, indent=1)
+    run_files.write_comparison(result, a.out)
     for g in result["groups"]:
         where = "r = %g" % g["r"] if "r" in g else ("t = %g" % g["t"] if "t" in g else "all")
         print("%-6s %-10s D = %.4f +- %.4f  noise floor %.4f" % (g["kind"], where, g["distance"], g["error"],

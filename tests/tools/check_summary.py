@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks a run's summary.json against a scene's stored expectations.
 
-Usage: check_summary.py EXPECTED.json SUMMARY.json
+Usage: check_summary.py EXPECTED.json RUN_DIR   (its summary.json, read by
+plots/shockplot/run_files.py; any python3, no numpy needed)
 
 EXPECTED.json: {"checks": [{"key": "compare.n_shocks", ...}, ...]} where each
 check has a dotted key into the summary and one or more of
@@ -12,7 +13,11 @@ Prints one line per check and "N passed, N failed"; exits 1 on any failure.
 """
 import json
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
+from shockplot.run_files import read_summary  # noqa: E402
 
 
 def lookup(summary, dotted):
@@ -52,7 +57,7 @@ def check(summary, c):
 
 def main():
     expected = json.load(open(sys.argv[1]))
-    summary = json.load(open(sys.argv[2]))
+    summary = read_summary(sys.argv[2])
     passed = failed = 0
     for c in expected["checks"]:
         ok, detail = check(summary, c)

@@ -1,4 +1,4 @@
-"""The frames of a shockgas run as scripts/animate.py draws them, read once from
+"""The frames of a shockgas run as plots/animate.py draws them, read once from
 result.h5 (/animation, see docs/output.md): the particles' clusters per frame and
 every solver's fields, with their labels, colours and units from the file.
 

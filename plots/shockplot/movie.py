@@ -1,42 +1,21 @@
-#!/usr/bin/python3
-"""The animation of a shockgas run, read only from its result.h5 (/animation).
+"""The animation's frames (plots/animate.py, and the run's plots with
+--animation): one figure of 1280 x 720 pixels updated in place frame after
+frame. Left: the particles as dots (clusters, coloured by mass) over every
+solver's velocity and density at the same time; right: space-time, the exact
+(else the first) solver's density with the paths of the heaviest clusters.
+Frames are read once from result.h5 (animation_data.py)."""
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.colors import LogNorm, Normalize
+from matplotlib.lines import Line2D
 
-Usage: /usr/bin/python3 scripts/animate.py DIR
-Writes DIR/animation.mp4 (ffmpeg, H.264), DIR/animation.gif and DIR/animation.png
-(the last frame), each whole or not at all (by way of NAME.partial). Left: the particles as dots (clusters, coloured by mass) over
-every solver's velocity and density at the same time; right: space-time, the
-exact (else the first) solver's density with the paths of the heaviest
-clusters. Exit code 3 when matplotlib, h5py or numpy is missing; without ffmpeg
-only the GIF (by Pillow) and the PNG are written, with a warning. Exit code 4, with
-the line "cannot write PATH: REASON", when the system refuses a file (a full disk).
-"""
-import errno
-import os
-import re
-import shutil
-import subprocess
-import sys
-
-try:
-    import h5py
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-    from matplotlib.colors import LogNorm, Normalize
-    from matplotlib.lines import Line2D
-
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    from animation_data import Record, with_unit
-    from shockplot.common import CannotWrite, write_whole
-except ImportError as exc:  # the command turns this into a warning
-    print(f"animate.py: {exc}", file=sys.stderr)
-    sys.exit(3)
+from .animation_data import with_unit
+from .decimate import decimated
+from .mass_dots import MassDots
+from .run_files import RESULT
+from .saving import save
 
 WIDTH, HEIGHT, DPI = 1280, 720, 100  # 720p: sharp on a projector, small as a file
-GIF_WIDTH = 800
-SECONDS = 8.0  # target length of the movie
 FEW_BODIES = 200  # up to this many bodies, the space-time panel draws every one's path
 TRAIL_CLUSTERS = 12  # else the paths of this many heaviest clusters (of 5 particles or more)
 CMAP = "viridis"  # cluster mass
@@ -75,7 +54,7 @@ class Movie:
         rec = self.rec
         self.lines = []
         for fl in rec.fields.values():
-            (lv,) = self.av.plot(fl["x"], fl["v"][0], label=fl["label"], **fl["style"])
+            (lv,) = decimated(self.av.plot(fl["x"], fl["v"][0], label=fl["label"], **fl["style"]))
             lr = None
             if fl["rho"] is not None:  # no baseline: no edge down to 0 at the domain's ends
                 lr = self.ar.stairs(fl["rho_bins"][0], rec.edges, baseline=None, **fl["style"])
@@ -120,11 +99,12 @@ class Movie:
             self.ar.set_ylim(0, rmax * 1.1)
 
     def _draw_particles(self):
-        self.dots = self.hist = None
+        self.dots = self.hist = self.mass_dots = None
         if self.rec.clusters is None:
             self.acb.set_visible(False)
             return
         self.dots = self.av.scatter([], [], s=[], c=[], cmap=CMAP, norm=self.norm, edgecolors="none", zorder=8)
+        self.mass_dots = MassDots(self.av, self.dots)
         if isinstance(self.norm, LogNorm):
             cb = self.fig.colorbar(self.dots, cax=self.acb)
             cb.set_label(with_unit("cluster mass", self.rec.clusters["m_unit"]), fontsize=11)
@@ -207,9 +187,7 @@ class Movie:
         if rec.clusters is not None:
             (x, v, m), particle_t = rec.cluster_frame(k)
             order = np.argsort(m)  # the heaviest on top
-            self.dots.set_offsets(np.column_stack([x[order], v[order]]))
-            self.dots.set_sizes(self._dot_sizes(m[order]))
-            self.dots.set_array(m[order])
+            self.mass_dots.update(x[order], v[order], m[order], self._dot_sizes(m[order]))
             if self.hist is not None:
                 self.hist.set_data(values=rec.particle_density(k))
             self._trail(k)
@@ -227,174 +205,66 @@ class Movie:
         self.av.set_ylim(-1.1 * vmax, 1.1 * vmax)
 
     def _trail(self, k):
-        # a few bodies: every path; many: the heaviest clusters' (a row of
-        # particles at each frame time would hide the picture)
-        c = self.rec.clusters
-        pts = []
-        for i, (x, _, m) in enumerate(c["frames"]):
-            ti = c["t"][i]
-            if ti > self.rec.t[k] or (self.rec.spacing_log and ti <= 0):
-                continue
-            top = np.arange(len(m))
-            if len(m) > FEW_BODIES:
-                top = np.argsort(m)[-TRAIL_CLUSTERS:]
-                top = top[m[top] >= 5 * c["m0"]]
-            pts.append(np.column_stack([x[top], np.full(len(top), ti), m[top]]))
+        pts = [p for ti, p in self._trail_points() if ti <= self.rec.t[k]]
         if pts:
             p = np.concatenate(pts)
             self.trail.set_offsets(p[:, :2])
             self.trail.set_array(p[:, 2])
 
-    def _dynamic(self):
-        """What changes from frame to frame outside the velocity panel."""
+    def _trail_points(self):
+        """(t, [x, t, m] rows) of each particle frame's trail points, found once.
+        A few bodies: every path; many: the heaviest clusters' (a row of
+        particles at each frame time would hide the picture)."""
+        if getattr(self, "trail_points", None) is None:
+            c = self.rec.clusters
+            self.trail_points = []
+            for i, (x, _, m) in enumerate(c["frames"]):
+                ti = c["t"][i]
+                if self.rec.spacing_log and ti <= 0:
+                    continue
+                top = np.arange(len(m))
+                if len(m) > FEW_BODIES:
+                    top = np.argsort(m)[-TRAIL_CLUSTERS:]
+                    top = top[m[top] >= 5 * c["m0"]]
+                self.trail_points.append((ti, np.column_stack([x[top], np.full(len(top), ti), m[top]])))
+        return self.trail_points
+
+    def _moving(self):
+        """What changes from frame to frame, in the order it is drawn: the
+        velocity panel's lines and dots by their zorder, then the densities, the
+        title, the space-time panel's time line and trail."""
+        inside = [lv for _, lv, _ in self.lines] + (self.mass_dots.artists() if self.mass_dots else [])
         parts = [lr for _, _, lr in self.lines if lr is not None] + [self.title, self.now]
-        return parts + [a for a in (self.hist, self.trail) if a is not None]
+        return sorted(inside, key=lambda a: a.get_zorder()) + parts + [a for a in (self.hist, self.trail)
+                                                                        if a is not None]
 
     def rgba(self):
-        """The frame's pixels. The static rest (space-time image, colour bars,
-        legend, the density axes) is drawn once and restored; each frame redraws
-        the velocity panel (whose axis may follow the frame) and what moves."""
+        """The frame's pixels. What does not move (the panels with their axes,
+        the space-time image, colour bars, legend) is drawn once and restored;
+        each frame draws what moves, and the velocity axis when it follows the
+        frames (zoom)."""
         canvas = self.fig.canvas
         if self.background is None:
-            for a in self._dynamic():
+            for a in self._moving():
                 a.set_animated(True)
-            self.av.set_visible(False)
+            self.av.yaxis.set_visible(not self.zoom)
             canvas.draw()
             self.background = canvas.copy_from_bbox(self.fig.bbox)
-            self.av.set_visible(True)
+            self.av.yaxis.set_visible(True)
         canvas.restore_region(self.background)
         renderer = canvas.get_renderer()
-        self.av.draw(renderer)
-        for a in self._dynamic():
+        if self.zoom:
+            self.av.yaxis.draw(renderer)
+        for a in self._moving():
             a.draw(renderer)
         return np.asarray(canvas.buffer_rgba())
 
     def save_still(self, path):
-        for a in self._dynamic():
+        """The frame shown as a picture (animation.png): 1280 x 720, as the movie's."""
+        for a in self._moving():
             a.set_animated(False)
-        self.fig.savefig(path, dpi=DPI, format="png")
+        save(self.fig, path, RESULT, dpi=DPI, tight=False)
 
 
 def time_text(t):
     return f"{t:,.0f}" if t >= 100 else f"{t:.3g}"
-
-
-def frames_per_second(n):
-    return int(np.clip(round(n / SECONDS), 4, 24))
-
-
-def written(path, write):
-    """write_whole(path, write): a file whole or not at all. CannotWrite when the
-    system refused it (an OSError with a reason, or an encoder that failed on a
-    disk with no room left)."""
-    try:
-        write_whole(path, write)
-    except (OSError, EncoderFailed) as exc:
-        said = getattr(exc, "said", "") or ""
-        if isinstance(exc, OSError) and exc.errno not in (errno.EPIPE, None):
-            raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
-        no_space = os.strerror(errno.ENOSPC)
-        if no_space in said or os.statvfs(os.path.dirname(os.path.abspath(path))).f_bavail == 0:
-            raise CannotWrite(f"cannot write {path}: {no_space}") from exc
-        raise
-
-
-class EncoderFailed(Exception):
-    """ffmpeg ended with an error: `said` is what it wrote on stderr."""
-
-    def __init__(self, message, said):
-        super().__init__(message + (": " + said.strip().splitlines()[-1] if said.strip() else ""))
-        self.said = said
-
-
-def ffmpeg(args, partial, fmt, stdin=None):
-    """ffmpeg ARGS -f FMT PARTIAL, its stderr kept for the reason of a failure."""
-    cmd = ["ffmpeg", "-loglevel", "error", "-y"] + args + ["-f", fmt, partial]
-    return subprocess.Popen(cmd, stdin=stdin if stdin is not None else subprocess.DEVNULL,
-                            stderr=subprocess.PIPE)
-
-
-def finished(proc):
-    """ffmpeg's end: EncoderFailed on a non-zero status, and also on an "Error ..."
-    line with status 0, which ffmpeg returns when it cannot write the trailer or
-    close the file (a full disk): the file is then cut short. ffmpeg 5 starts the
-    line with "Error", later versions after the muxer's "[out#0/mp4 @ 0x...] "."""
-    said = proc.stderr.read().decode(errors="replace")
-    if proc.wait() != 0:
-        raise EncoderFailed(f"ffmpeg failed (exit {proc.returncode})", said)
-    if any(re.match(r"(\[[^]]*\] )?Error\b", line) for line in said.splitlines()):
-        raise EncoderFailed("ffmpeg failed (exit 0, with errors)", said)
-    if said:
-        sys.stderr.write(said)
-
-
-def encode_mp4(movie, n, fps, path):
-    def write(partial):
-        proc = ffmpeg(["-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{WIDTH}x{HEIGHT}", "-framerate", str(fps),
-                       "-i", "-", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "23",
-                       "-movflags", "+faststart"], partial, "mp4", stdin=subprocess.PIPE)
-        try:
-            for k in range(n):
-                movie.update(k)
-                proc.stdin.write(movie.rgba().tobytes())
-        except BrokenPipeError:
-            pass  # ffmpeg stopped: its status and message say why
-        finally:
-            try:
-                proc.stdin.close()
-            except BrokenPipeError:
-                pass
-        finished(proc)
-
-    written(path, write)
-
-
-def gif_from_mp4(mp4, gif, fps):
-    palette = "split[a][b];[a]palettegen=stats_mode=diff[p];[b][p]paletteuse=dither=bayer:bayer_scale=4"
-    written(gif, lambda partial: finished(ffmpeg(
-        ["-i", mp4, "-vf", f"fps={fps},scale={GIF_WIDTH}:-1:flags=lanczos,{palette}", "-loop", "0"],
-        partial, "gif")))
-
-
-def gif_with_pillow(movie, n, fps, gif):
-    from PIL import Image
-
-    images = []
-    for k in range(n):
-        movie.update(k)
-        img = Image.fromarray(movie.rgba()[:, :, :3])
-        images.append(img.resize((GIF_WIDTH, GIF_WIDTH * HEIGHT // WIDTH)).convert("P", palette=Image.ADAPTIVE))
-    written(gif, lambda partial: images[0].save(partial, format="GIF", save_all=True, append_images=images[1:],
-                                                duration=int(1000 / fps), loop=0))
-
-
-def main():
-    out_dir = sys.argv[1]
-    with h5py.File(os.path.join(out_dir, "result.h5"), "r") as f:
-        if "animation" not in f:
-            print("animate.py: no /animation in result.h5 (output.animation = false)", file=sys.stderr)
-            sys.exit(2)
-        rec = Record(f)
-    movie = Movie(rec)
-    n = len(rec.t)
-    fps = frames_per_second(n)
-    paths = {kind: os.path.join(out_dir, "animation." + kind) for kind in ("mp4", "gif", "png")}
-    if shutil.which("ffmpeg"):
-        encode_mp4(movie, n, fps, paths["mp4"])
-        gif_from_mp4(paths["mp4"], paths["gif"], fps)
-    else:
-        print("animate.py: warning: ffmpeg not found (run scripts/setup): no animation.mp4; the GIF by Pillow",
-              file=sys.stderr)
-        if os.path.exists(paths["mp4"]):
-            os.remove(paths["mp4"])  # an older run's movie must not stand beside this one's frames
-        gif_with_pillow(movie, n, fps, paths["gif"])
-    movie.update(n - 1)
-    written(paths["png"], movie.save_still)
-
-
-if __name__ == "__main__":
-    try:
-        main()
-    except CannotWrite as exc:  # the command ends the run with this line
-        print(f"animate.py: {exc}", file=sys.stderr)
-        sys.exit(4)

@@ -17,7 +17,7 @@ Here Ai comes from scipy.special.airye (AMOS), the zeros from scipy.special.ai_z
 K by the direct sum over 20000 zeros and the density of the rest (no small-mu
 expansion), the integrals by the trapezoidal rule and Gauss-Legendre.
 
-Run it to print a few values:  /usr/bin/python3 scripts/exact_laws.py
+Run it to print a few values:  /usr/bin/python3 scripts/reference/exact_laws.py
 """
 import numpy as np
 from scipy.special import ai_zeros, airye, gamma, gammaincc

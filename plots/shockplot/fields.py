@@ -7,6 +7,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .common import CLUSTER, INITIAL, PARTICLES, SHOCK, attr, finish, label, solver_style, unit
+from .decimate import decimated
 
 
 def solvers(f):
@@ -60,9 +61,9 @@ def window_with_shocks(f, groups, most=50):
 def draw_solvers(av, ar, groups):
     for name, g in groups:
         style = solver_style(g, name)
-        av.plot(g["x"][:], g["v"][:], **style)
+        decimated(av.plot(g["x"][:], g["v"][:], **style))
         if has_density(g):  # solvers without a density are absent from the density panel
-            ar.plot(g["x"][:], g["rho"][:], **style)
+            decimated(ar.plot(g["x"][:], g["rho"][:], **style))
 
 
 def draw_particles(av, ar, cmp):
@@ -70,8 +71,8 @@ def draw_particles(av, ar, cmp):
     x = cmp["x"][:]
     occupied = cmp["occupied"][:] > 0 if "occupied" in cmp else cmp["rho_particles"][:] > 0
     text = "particles: momentum / mass and mass / dx in the cells holding mass"
-    av.plot(x[occupied], cmp["v_particles"][:][occupied], **PARTICLES, label=text)
-    ar.plot(x[occupied], cmp["rho_particles"][:][occupied], **PARTICLES, label=text)
+    decimated(av.plot(x[occupied], cmp["v_particles"][:][occupied], **PARTICLES, label=text))
+    decimated(ar.plot(x[occupied], cmp["rho_particles"][:][occupied], **PARTICLES, label=text))
 
 
 def draw_clusters_and_shocks(ar, cmp, solver):
@@ -105,9 +106,9 @@ def draw_initial(av, ar, f, beside):
         return
     x0 = f["initial/cells/x"][:]
     if beside:
-        av.plot(x0, f["initial/cells/v"][:], **INITIAL, label="initial condition (t = 0)")
+        decimated(av.plot(x0, f["initial/cells/v"][:], **INITIAL, label="initial condition (t = 0)"))
     if ar is not None:
-        ar.plot(x0, f["initial/cells/rho"][:], **INITIAL, label="initial condition (t = 0)")
+        decimated(ar.plot(x0, f["initial/cells/rho"][:], **INITIAL, label="initial condition (t = 0)"))
 
 
 def has_density(g):
@@ -129,7 +130,7 @@ def figure_fields(f, summary):
     a0 = axes.pop(0) if separate else None
     av, ar = axes[0], axes[1] if len(axes) > 1 else None
     if separate:
-        a0.plot(f["initial/cells/x"][:], f["initial/cells/v"][:], color="0.45", lw=0.5)
+        decimated(a0.plot(f["initial/cells/x"][:], f["initial/cells/v"][:], color="0.45", lw=0.5))
         a0.set_ylabel(label("$v_0$", unit(f["initial/cells/v"])))
         a0.set_title("initial condition (t = 0): velocity, cell averages", fontsize=9)
     draw_initial(av, ar, f, beside)

@@ -12,10 +12,10 @@ hopf_lax field of realization 0 on 1618034 cells) and draws, in z = (v - <v>) t^
          law dashed for comparison;
   below  the same on a logarithmic scale.
 
-The laws come from scripts/exact_laws.py (SciPy), an implementation independent of the
+The laws come from scripts/reference/exact_laws.py (SciPy), an implementation independent of the
 C++ one (they agree to ~1e-10, tests/compare/data/cluster_mass_reference.csv).
 
-    /usr/bin/python3 scripts/plot_exact_laws.py [BUILD_DIR] [OUT_PNG]
+    /usr/bin/python3 scripts/reference/plot_exact_laws.py [BUILD_DIR] [OUT_PNG]
     (defaults: build, docs/img/paper/exact-laws.png; about 10 s of runs plus 10 s of laws)
 """
 import os
@@ -23,19 +23,21 @@ import subprocess
 import sys
 import tempfile
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import exact_laws  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
+from shockplot.run_files import RESULT, open_result  # noqa: E402
+from shockplot.saving import save  # noqa: E402
 
 D = 1.0 / 3.0  # sigma^2 l for velocities uniform on [-1, 1] at unit spacing
 T_END = 1000.0
-SCENE = """# written by scripts/plot_exact_laws.py
+SCENE = """# written by scripts/reference/plot_exact_laws.py
 [scene]
 description = "white noise, r = 0, t = 1000: the exact velocity laws over the data"
 expected_runtime = "about 10 s"
@@ -64,7 +66,7 @@ def run(build, workdir):
         f.write(SCENE)
     out = os.path.join(workdir, "out")
     subprocess.run([os.path.join(build, "shockgas"), "run", scene, "--out", out, "-q", "--no-plots"], check=True)
-    return os.path.join(out, "result.h5")
+    return out
 
 
 def eulerian_histogram(f, edges):
@@ -77,7 +79,7 @@ def eulerian_histogram(f, edges):
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
     out_png = sys.argv[2] if len(sys.argv) > 2 else os.path.join("docs", "img", "paper", "exact-laws.png")
-    with tempfile.TemporaryDirectory() as workdir, h5py.File(run(build, workdir), "r") as f:
+    with tempfile.TemporaryDirectory() as workdir, open_result(run(build, workdir)) as f:
         hist = f["particles/histogram"]
         z_mass = np.asarray(hist["z"])
         row = int(np.argmin(np.abs(np.asarray(hist["t"]) - T_END)))
@@ -111,7 +113,7 @@ def main():
     fig.suptitle(r"white noise, $D = \sigma^2 \ell = 1/3$, $N = 10^6$, $t = 1000$: the exact laws have no free parameter")
     fig.tight_layout()
     os.makedirs(os.path.dirname(out_png) or ".", exist_ok=True)
-    fig.savefig(out_png, dpi=110)
+    save(fig, out_png, f"{RESULT} of the scene above, scripts/reference/exact_laws.py", tight=False)
     print(out_png)
 
 

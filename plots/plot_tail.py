@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Charts of `shockgas tail` (docs/paper.md, the tail of Phi(z)).
 
-    scripts/plot_tail.py DIR [DIR ...] --out docs/img/paper
+    plots/plot_tail.py DIR [DIR ...] --out docs/img/paper
 
 Each DIR holds tail_phi.csv, tail_windows.csv and tail_runs.csv of one study
 (one restitution, one or more sizes N). Draws, for the largest N of each r:
@@ -16,7 +16,6 @@ and over all DIRs and sizes:
 Reads only the CSV files.
 """
 import argparse
-import csv
 import math
 import os
 from collections import defaultdict
@@ -25,12 +24,20 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from shockplot.run_files import read_csv  # noqa: E402
+from shockplot.saving import save  # noqa: E402
+
+PHI, WINDOWS = "tail_phi.csv", "tail_windows.csv"
 
 
 def read(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return [{k: (float(v) if v != "" else math.nan) for k, v in r.items()} for r in rows]
+    """A table of the tail study, every cell a float (nan where empty)."""
+    return read_csv(path, numbers=True)
+
+
+def write(fig, out, name, source):
+    fig.tight_layout()
+    save(fig, os.path.join(out, name), source, dpi=120, tight=False)
 
 
 def by(rows, *keys):
@@ -68,9 +75,7 @@ def plot_phi(phi, r, N, out):
     ax.set_ylabel("ln(-ln Phi(z))")
     ax.set_title("r = %g: N = %.0e per realization, mass weighted, folded" % (r, N))
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "tail-phi-r%s.png" % tag(r)), dpi=120)
-    plt.close(fig)
+    write(fig, out, "tail-phi-r%s.png" % tag(r), PHI)
 
 
 def plot_local(phi, r, N, out):
@@ -93,9 +98,7 @@ def plot_local(phi, r, N, out):
     ax.set_ylabel("local exponent a(z)")
     ax.set_title("r = %g: N = %.0e per realization; bins with >= 25 clusters" % (r, N))
     ax.legend(fontsize=8, loc="upper left")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "tail-local-r%s.png" % tag(r)), dpi=120)
-    plt.close(fig)
+    write(fig, out, "tail-local-r%s.png" % tag(r), PHI)
 
 
 def plot_windows(studies, out):
@@ -122,9 +125,7 @@ def plot_windows(studies, out):
     ax.set_ylabel("slope of ln(-ln Phi) on ln|z|, |z| in [1, 2]")
     ax.set_title("tail exponent on [1, 2] (jackknife errors); exp(-c|z|^3) would give 3")
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "tail-windows.png"), dpi=120)
-    plt.close(fig)
+    write(fig, out, "tail-windows.png", WINDOWS)
 
 
 def main():
@@ -135,11 +136,11 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     studies, largest = [], {}  # largest: r -> (N, its rows of tail_phi.csv)
     for d in a.dirs:
-        phi = read(os.path.join(d, "tail_phi.csv"))
+        phi = read(os.path.join(d, PHI))
         r, N = phi[0]["r"], max(p["N"] for p in phi)
         if N > largest.get(r, (0, None))[0]:
             largest[r] = (N, [p for p in phi if p["N"] == N])
-        studies.append((r, read(os.path.join(d, "tail_windows.csv"))))
+        studies.append((r, read(os.path.join(d, WINDOWS))))
     for r, (N, rows) in largest.items():
         plot_phi(rows, r, N, a.out)
         plot_local(rows, r, N, a.out)

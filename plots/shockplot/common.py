@@ -1,10 +1,9 @@
-"""What every figure shares: reading the result file, axis labels with their
-units, the styles (the exact solution black and dashed, each solver in the
-label and colour its registration wrote), one legend per figure, and saving."""
-import os
+"""What every figure shares: reading the result file's attributes, axis labels
+with their units, the styles (the exact solution black and dashed, each solver
+in the label and colour its registration wrote), one legend per figure (saving:
+saving.py)."""
 import re
 
-import matplotlib.pyplot as plt
 import numpy as np
 
 # The exact solution, wherever it is drawn: black, dashed, named "exact".
@@ -128,44 +127,3 @@ def finish(fig, axes, columns=2, fontsize=8):
     """Lays the panels out and puts the figure's one legend below them."""
     fig.tight_layout()
     return figure_legend(fig, axes, columns, fontsize)
-
-
-class CannotWrite(Exception):
-    """A picture that could not be written: "cannot write PATH: REASON"."""
-
-
-def write_whole(path, write):
-    """Calls write(partial) for path's NAME.partial, then renames it to path: a file
-    whole or not at all. On a failure the partial file is removed and the error
-    goes on."""
-    partial = path + ".partial"
-    try:
-        write(partial)
-        os.replace(partial, path)
-    except BaseException:
-        if os.path.exists(partial):
-            os.remove(partial)
-        raise
-
-
-def save_whole(path, write):
-    """write_whole(path, write), a refusal of the system (a full disk) raised as
-    CannotWrite("cannot write PATH: REASON")."""
-    try:
-        write_whole(path, write)
-    except OSError as exc:
-        raise CannotWrite(f"cannot write {path}: {exc.strerror or exc}") from exc
-
-
-def save(fig, out_dir, name):
-    """Writes the figure as out_dir/name, whole or not at all (write_whole); the first
-    title names the picture (PNG tEXt Title). CannotWrite when the system refuses
-    the file (a full disk)."""
-    title = fig._suptitle.get_text() if fig._suptitle is not None else ""
-    title = title or next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
-    try:
-        save_whole(os.path.join(out_dir, name),
-                   lambda partial: fig.savefig(partial, format=os.path.splitext(name)[1][1:], dpi=110,
-                                               bbox_inches="tight", metadata={"Title": title} if title else None))
-    finally:
-        plt.close(fig)

@@ -3,9 +3,9 @@
 velocity distribution Phi(z), z = (v - <v>) t^(1/3), of r = 0, 0.5, 0.9 at the
 late sample times, over the exact mass-weighted law of the sticky gas.
 
-    scripts/plot_fig4_runs.py data/paper-runs/fig4 --out docs/img/paper [--runs events-r0-R50 ...]
+    scripts/paper/plot_fig4_runs.py data/paper-runs/fig4 --out docs/img/paper [--runs events-r0-R50 ...]
 
-Each run directory holds histogram.csv (scripts/collect_paper_run.py: t, z,
+Each run directory holds histogram.csv (scripts/paper/collect_paper_run.py: t, z,
 density, and when kept density_stderr and exact). Draws fig4-paper-size.png:
   left   Phi(z) on a log scale, every run at every t >= --t-min, and the exact
          law's bin means (black, dashed);
@@ -16,22 +16,25 @@ density, and when kept density_stderr and exact). Draws fig4-paper-size.png:
 import argparse
 import glob
 import os
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from shockplot import kept_runs  # noqa: E402
-from shockplot.common import label as axis_label, save  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "plots"))
+from shockplot import run_files  # noqa: E402
+from shockplot.common import label as axis_label  # noqa: E402
+from shockplot.saving import save  # noqa: E402
 
 COLOURS = {0.0: "C3", 0.5: "C2", 0.9: "C0"}
 MARKERS = ["o", "s", "^", "v", "D"]
 
 
 def read(d):
-    s = kept_runs.read_summary(d)
-    return s["particles"]["r"], s["particles"]["realizations"], s["initial"]["N"], kept_runs.read_histogram(d)
+    s = run_files.read_summary(d)
+    return s["particles"]["r"], s["particles"]["realizations"], s["initial"]["N"], run_files.read_histogram(d)
 
 
 def main():
@@ -76,7 +79,8 @@ def main():
     right.legend(fontsize=6, ncol=2)
     fig.tight_layout()
     os.makedirs(a.out, exist_ok=True)
-    save(fig, a.out, "fig4-paper-size.png")
+    save(fig, os.path.join(a.out, "fig4-paper-size.png"),
+         f"{run_files.HISTOGRAM}, {run_files.SUMMARY} of the kept runs in {a.root}")
 
 
 if __name__ == "__main__":
