@@ -12,8 +12,9 @@
 #include <vector>
 
 #include "shockgas/app/files/durable_file.hpp"
-#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/files/file_problem.hpp"
 #include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/output/result_reader.hpp"
 #include "shockgas/app/report/html_page.hpp"
 #include "shockgas/app/report/report.hpp"
 #include "shockgas/core/error.hpp"
@@ -120,8 +121,8 @@ std::string figures_table(const Json& summary) {
 
 std::map<std::string, std::string> provenance(const fs::path& dir) {
   std::map<std::string, std::string> attrs;
-  for (const auto& [name, value] : Hdf5File::open((dir / "result.h5").string()).attributes("/"))
-    attrs[name] = value;
+  const ResultContents file = read_result(dir / "result.h5");
+  for (const auto& [name, value] : file.attributes_of("/")) attrs[name] = value;
   return attrs;
 }
 
@@ -231,7 +232,12 @@ std::string scene_section(const std::map<std::string, std::string>& p, const std
 Json read_summary(const fs::path& dir) {
   std::ifstream in(dir / "summary.json");
   if (!in) throw RunError("report.html: no summary.json in " + dir.string());
-  return Json::parse(in);
+  try {
+    return Json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw FileProblem("summary.json", (dir / "summary.json").string(), "damaged",
+                      "not JSON as a run writes it (a syntax error at byte " + std::to_string(e.byte) + ")");
+  }
 }
 
 }  // namespace
