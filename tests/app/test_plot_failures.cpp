@@ -96,16 +96,25 @@ int run_with_frames(const TwoRuns& s) {
 TEST(PlotFailures, AnInterruptedAnimationLeavesNothingWriting) {
   const TwoRuns s = alpha_done(fresh_dir("animate-stopped"));
   ASSERT_EQ(run_with_frames(s), 0);
-  const fs::path script = s.root / "writing_animation.py", partial = s.out / "animation.mp4.partial";
+  // The script draws into the directory it is given (animate's staging
+  // directory) and says where its file is.
+  const fs::path script = s.root / "writing_animation.py", where = s.root / "partial.path";
   write_text(
       script,
       "import subprocess, sys, time\n"
+      "partial = sys.argv[1] + '/animation.mp4.partial'\n"
       "subprocess.Popen(['sh', '-c', 'trap \"\" TERM; while :; do echo x >> \"$0\"; sleep 0.02; done', "
-      "sys.argv[1] + '/animation.mp4.partial'])\n"
-      "time.sleep(60)\n");
+      "partial])\n"
+      "open('" +
+          where.string() +
+          "', 'w').write(partial)\n"
+          "time.sleep(60)\n");
   Child animate({"animate", s.out.string()}, with_env({{"SHOCKGAS_ANIMATE_SCRIPT", script.string()}}));
-  for (int k = 0; k < 500 && !fs::exists(partial); ++k)
+  fs::path partial;
+  for (int k = 0; k < 500 && (partial.empty() || !fs::exists(partial)); ++k) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    partial = read_text(where);
+  }
   ASSERT_TRUE(fs::exists(partial)) << animate.err();
   kill(animate.pid(), SIGTERM);
   EXPECT_EQ(animate.wait(), 128 + SIGTERM) << animate.err();
