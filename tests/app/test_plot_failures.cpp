@@ -45,6 +45,25 @@ TEST(PlotFailures, AFailedScriptIsOneWarningAndItsMessagesAreKeptInPlotsLog) {
   EXPECT_FALSE(fs::exists(s.out / "half.png.partial"));
 }
 
+// Plots that fail for memory half-way (finding of a hostile pass: under ulimit
+// -v two of three pictures and exit 0, the report silent about the third): the
+// report says that pictures are missing, and where the script's words are.
+TEST(PlotFailures, TheReportSaysThatPicturesAreMissing) {
+  const TwoRuns s = alpha_done(fresh_dir("plot-missing"));
+  const fs::path script = s.root / "failing_plot.py";
+  write_text(script,
+             "import os, sys\n"
+             "open(os.path.join(sys.argv[1], 'whole.png'), 'w').write('picture')\n"
+             "raise MemoryError()\n");
+  const auto [code, err] = run_child({"run", s.b.string(), "--out", s.out.string(), "-q", "--force"},
+                                     with_env({{"SHOCKGAS_PLOT_SCRIPT", script.string()}}));
+  EXPECT_EQ(code, 0) << err;
+  EXPECT_NE(read_text(s.out / "report.html")
+                .find("The plotting script failed: 1 picture was drawn before it stopped, and the others "
+                      "are missing."),
+            std::string::npos);
+}
+
 // What a script that succeeds says (a warning of its own) still reaches stderr.
 TEST(PlotFailures, WhatASucceedingScriptSaysIsPassedOn) {
   const TwoRuns s = alpha_done(fresh_dir("plot-says"));

@@ -178,13 +178,21 @@ std::string animation_section(const fs::path& dir) {
          "<code>shockgas animate</code>.</figcaption>\n</figure>\n";
 }
 
+// The plots drawn; where the plotting script failed (plots.log, plots.hpp),
+// a run that promised plots says that some may be missing, and why.
 std::string plots_section(const fs::path& dir) {
   std::vector<fs::path> pngs;
   for (const auto& f : fs::directory_iterator(dir))
     if (f.path().extension() == ".png" && f.path().filename() != "animation.png") pngs.push_back(f.path());
-  if (pngs.empty()) return "";
+  const bool failed = fs::exists(dir / "plots.log");
+  if (pngs.empty() && !failed) return "";
   std::sort(pngs.begin(), pngs.end());
   std::string out = "<h2 id=\"plots\">Plots</h2>\n";
+  if (failed)
+    out += "<p class=\"warning\">The plotting script failed: " + std::to_string(pngs.size()) + " picture" +
+           (pngs.size() == 1 ? " was" : "s were") +
+           " drawn before it stopped, and the others are missing. What it said is kept in "
+           "<code>plots.log</code> beside this report.</p>\n";
   for (const auto& png : pngs) {
     const std::string caption = html::png_title(png).value_or(png.stem().string());
     out += "<figure>\n<img alt=\"" + html::escape(caption) + "\" src=\"" + html::data_uri(png, "image/png") +
