@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -96,6 +97,16 @@ double domain_length(const InitialParams& p) {
 
 void validate(const InitialParams& p) {
   initial_parameters().check(p);
+  // Sums over the bodies stay finite (positions i L / N, the momentum, the
+  // temperature sum m v^2): bounds far beyond any physics, refused here rather
+  // than as an infinity inside the work, under a name the scene never wrote.
+  const double n = std::max(static_cast<double>(p.N), 1.0), most = std::numeric_limits<double>::max() / 64;
+  require(p.L <= most / n, "initial.L", p.L,
+          "at most " + to_text(most / n, 3) + " for initial.N = " + std::to_string(p.N) +
+              " (the positions, up to N L, must stay within the range of doubles)");
+  require(p.amplitude <= std::sqrt(most / n), "initial.amplitude", p.amplitude,
+          "at most " + to_text(std::sqrt(most / n), 3) + " for initial.N = " + std::to_string(p.N) +
+              " (the temperature, a sum of N v^2, must stay within the range of doubles)");
   if (p.velocities == Velocities::file) {
     require(!p.file.empty() && std::filesystem::is_regular_file(p.file), "initial.file", p.file,
             "an existing text file with columns x v [m] (velocities = \"file\")");

@@ -56,7 +56,8 @@ ParameterTable<ParticleParams> declare() {
             "no limit (event engine only)",
         allowed(at_least(0)));
   t.add(&P::max_wall_seconds, "max_wall_seconds", "s",
-        "stop a realization after this wall-clock time; 0 = no limit (event engine only)",
+        "stop a realization after this wall-clock time (and fail a continuum solve of the scene that takes "
+        "longer); 0 = no limit (event engine only)",
         allowed(at_least(0)));
   return t;
 }

@@ -169,6 +169,19 @@ TEST(SourceRules, IncludesRunDownTheLayers) {
   EXPECT_GT(includes, 400);  // the includes were found at all
 }
 
+// The HDF5 library may crash inside a damaged file: every reader of a result
+// file goes through result_reader.hpp, which runs the library in a child
+// process (finding: `animate`, `merge` and the Python module's load opened
+// the file themselves, and segfaulted).
+TEST(SourceRules, EveryResultFileIsReadThroughTheResultReader) {
+  for (const auto& path : files(kSourceFolders, {".cpp", ".hpp"})) {
+    const std::string name = path.filename().string();
+    if (name == "result_reader.cpp" || name == "hdf5_file.cpp" || name == "hdf5_file.hpp") continue;
+    EXPECT_EQ(read_file(path).find("Hdf5File::open("), std::string::npos)
+        << path << " opens a result file itself: read it with read_result (result_reader.hpp)";
+  }
+}
+
 // House style: one concept per file, about 400 lines at most.
 TEST(SourceRules, NoSourceFileIsLongerThanAboutFourHundredLines) {
   std::vector<std::string> folders = kSourceFolders;

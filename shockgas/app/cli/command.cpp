@@ -270,7 +270,7 @@ int run_command(int argc, char** argv) {
     report_for_job("shockgas: run failed: out of memory" + unchanged + "\n");
     return kExitFailure;
   } catch (const std::exception& e) {
-    report_for_job("shockgas: run failed: " + with_staging_as_target(e.what()) + unchanged + "\n");
+    report_for_job("shockgas: run failed: " + printable(with_staging_as_target(e.what())) + unchanged + "\n");
     return kExitFailure;
   }
 }

@@ -2,11 +2,17 @@
 
 #include <hdf5.h>
 
+#include <mutex>
 #include <utility>
 
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
+
+std::recursive_mutex& hdf5_calls() {
+  static std::recursive_mutex calls;
+  return calls;
+}
 
 namespace {
 
@@ -139,11 +145,13 @@ H5Handle& H5Handle::operator=(H5Handle&& o) noexcept {
 std::int64_t H5Handle::release() { return std::exchange(id_, -1); }
 
 void H5Handle::reset() {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   if (id_ >= 0 && close_) close_(id_);
   id_ = -1;
 }
 
 Hdf5File Hdf5File::create(const std::string& path) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   init_hdf5();
   return Hdf5File(
       H5Handle(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "H5Fcreate", path),
@@ -151,11 +159,10 @@ Hdf5File Hdf5File::create(const std::string& path) {
       path, Verification::manifest);
 }
 
-Hdf5File Hdf5File::open(const std::string& path) {
-  return open(path, check_result_file(path));  // before HDF5 reads a byte of it
-}
+Hdf5File Hdf5File::open(const std::string& path) { return open(path, check_result_file(path)); }
 
 Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   init_hdf5();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0 && hdf5_says_truncated())
@@ -165,11 +172,13 @@ Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
 }
 
 void Hdf5File::close() {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   const std::int64_t id = file_.release();
   if (id >= 0) check(H5Fclose(id), "H5Fclose", path_);
 }
 
 Hdf5File Hdf5File::update(const std::string& path) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   init_hdf5();
   return Hdf5File(
       H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file), path,
@@ -177,6 +186,7 @@ Hdf5File Hdf5File::update(const std::string& path) {
 }
 
 H5Handle Hdf5File::ensure_group(const std::string& path) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   if (path == "/" || path.empty())
     return H5Handle(check(H5Gopen2(file_.get(), "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
   if (H5Lexists(file_.get(), path.c_str(), H5P_DEFAULT) > 0)
@@ -190,6 +200,7 @@ H5Handle Hdf5File::ensure_group(const std::string& path) {
 
 H5Handle Hdf5File::create_dataset(const std::string& path, std::int64_t type, std::vector<std::uint64_t> dims,
                                   const std::string& unit, const std::string& description) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<hsize_t> hdims(dims.begin(), dims.end());
   H5Handle space(check(H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr),
                        "H5Screate_simple", path),
@@ -208,6 +219,7 @@ H5Handle Hdf5File::create_dataset(const std::string& path, std::int64_t type, st
 void Hdf5File::write_raw(const std::string& path, const void* data, std::int64_t type,
                          std::vector<std::uint64_t> dims, const std::string& unit,
                          const std::string& description) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::size_t count = 1;
   for (auto d : dims) count *= d;
   H5Handle set = create_dataset(path, type, std::move(dims), unit, description);
@@ -221,6 +233,7 @@ Hdf5File::Writer Hdf5File::start(const std::string& path, std::size_t size, cons
 
 // Each piece a hyperslab of the file's dataset, written from the caller's memory.
 void Hdf5File::Writer::append(const double* data, std::size_t count) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   if (count == 0) return;
   if (written_ + count > size_) throw RunError("HDF5: more values than " + path_ + " holds");
   const hsize_t offset = written_, n = count;
@@ -234,6 +247,7 @@ void Hdf5File::Writer::append(const double* data, std::size_t count) {
 }
 
 void Hdf5File::Writer::finish() {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   if (written_ != size_)
     throw RunError("HDF5: " + path_ + " got " + std::to_string(written_) + " of its " +
                    std::to_string(size_) + " values");
@@ -258,11 +272,13 @@ void Hdf5File::write_matrix(const std::string& path, const std::vector<double>& 
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, const std::string& value) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   H5Handle obj = ensure_group(object);
   write_string_attribute(obj.get(), name, value);
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, double value) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   H5Handle obj = ensure_group(object);
   if (H5Aexists(obj.get(), name.c_str()) > 0) check(H5Adelete(obj.get(), name.c_str()), "H5Adelete", name);
   H5Handle space(check(H5Screate(H5S_SCALAR), "H5Screate", name), close_space);
@@ -296,6 +312,7 @@ herr_t collect_dataset(hid_t root, const char* name, const H5O_info_t* info, voi
 }  // namespace
 
 std::vector<DatasetInfo> Hdf5File::datasets() const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<DatasetInfo> list;
   check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect_dataset, &list, H5O_INFO_BASIC),
         "H5Ovisit", "file");
@@ -312,6 +329,7 @@ herr_t collect_group(hid_t, const char* name, const H5O_info_t* info, void* out)
 }  // namespace
 
 std::vector<std::string> Hdf5File::groups() const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<std::string> list;
   check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect_group, &list, H5O_INFO_BASIC), "H5Ovisit",
         "file");
@@ -319,6 +337,7 @@ std::vector<std::string> Hdf5File::groups() const {
 }
 
 std::vector<std::pair<std::string, std::string>> Hdf5File::attributes(const std::string& object) const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<std::pair<std::string, std::string>> out;
   H5Handle obj(check(H5Oopen(file_.get(), object.c_str(), H5P_DEFAULT), "H5Oopen", object), close_object);
   H5O_info_t info;
@@ -332,6 +351,7 @@ std::vector<std::pair<std::string, std::string>> Hdf5File::attributes(const std:
 }
 
 std::vector<double> Hdf5File::read(const std::string& path) const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   H5Handle set(check(H5Dopen2(file_.get(), path.c_str(), H5P_DEFAULT), "H5Dopen2", path), close_dataset);
   H5Handle space(check(H5Dget_space(set.get()), "H5Dget_space", path), close_space);
   const auto n = H5Sget_simple_extent_npoints(space.get());

@@ -1,8 +1,13 @@
 #pragma once
 // The one wrapper of the HDF5 C API in shockgas: RAII handles, every call
-// checked (a failure throws RunError naming the call and the object).
+// checked (a failure throws RunError naming the call and the object). Every
+// call holds hdf5_calls(), so that a child process forked to read a file
+// (result_reader.hpp) never starts while another thread is inside the
+// library. A result file is read through result_reader.hpp, never opened
+// here directly: the library may crash inside a damaged file.
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,6 +15,9 @@
 #include "shockgas/app/directory/result_check.hpp"
 
 namespace shockgas::app {
+
+// Held by every call into the HDF5 library (above).
+std::recursive_mutex& hdf5_calls();
 
 // Owns one HDF5 identifier and closes it with the matching H5*close.
 class H5Handle {
@@ -44,14 +52,14 @@ class Hdf5File {
  public:
   // Creates (truncates) a file for writing.
   static Hdf5File create(const std::string& path);
-  // Opens an existing result file read-only, after check_result_file()
-  // (result_check.hpp): FileProblem (exit 2) for a missing, damaged,
-  // truncated or unreadable file, before or instead of a crash inside HDF5.
-  static Hdf5File open(const std::string& path);
-  // Opens an existing file to add to it (RunError if it cannot be opened).
-  static Hdf5File update(const std::string& path);
-  // The same for a file check_result_file() has passed with this verdict.
+  // Opens an existing file read-only that check_result_file() (result_check.hpp)
+  // has passed with this verdict: FileProblem for a file the library refuses.
+  // For result_reader.cpp, which does so where a crash cannot hurt, and tests.
   static Hdf5File open(const std::string& path, Verification checked);
+  // The same after check_result_file(): for tests, on files they made.
+  static Hdf5File open(const std::string& path);
+  // Opens an existing file to add to it (RunError if it cannot be opened; tests).
+  static Hdf5File update(const std::string& path);
   // Whether open() checked the file against its manifest.
   bool verified() const { return verification_ == Verification::manifest; }
   const std::string& path() const { return path_; }

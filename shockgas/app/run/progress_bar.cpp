@@ -8,6 +8,7 @@
 #include <exception>
 
 #include "shockgas/app/files/fault.hpp"
+#include "shockgas/core/thread_start.hpp"
 
 namespace shockgas::app {
 
@@ -120,7 +121,7 @@ void ProgressBar::phase(const std::string& name) {
     announce();
     return;
   }
-  announcer_ = std::thread([this] {
+  announcer_ = start_thread([this] {
     std::unique_lock<std::mutex> held(mutex_);
     if (!phase_ended_.wait_until(held, process_start + kSilent, [this] { return !in_phase_; })) announce();
   });

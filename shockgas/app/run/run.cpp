@@ -3,7 +3,10 @@
 // done, then summary.json, the plots, report.md (with the time of each phase)
 // and the manifest, all into the staging directory that replaces the output
 // directory at the end.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/directory/run_target.hpp"
@@ -82,12 +85,52 @@ InitialCondition build_initial(const Scene& scene) {
   }
 }
 
+namespace {
+
+// The largest speed of realization 0: of its bodies where they are held, else
+// the bound of its velocities (uniform ones; Gaussian ones to 40 sd) [length/time].
+double top_speed(const InitialCondition& initial) {
+  if (initial.holds_bodies()) {
+    double v = 0;
+    for (const double u : initial.bodies().v) v = std::max(v, std::abs(u));
+    return v;
+  }
+  const InitialParams& p = initial.params();
+  return p.velocities == Velocities::gaussian ? 40 * p.amplitude : p.amplitude;
+}
+
+// Times whose travel t max|v| leaves the range of doubles, and a threshold
+// whose cluster gap sqrt(delta t) does: refused before any work under the
+// scene's key (the exact hull and the clusters refused them after the work,
+// as "t" and "cluster.max_gap").
+void check_reach(const Scene& scene, const InitialCondition& initial) {
+  const double most = std::numeric_limits<double>::max() / 8, v = top_speed(initial),
+               x = 2 * initial.length();
+  const auto reach = [&](const std::string& key, double t) {
+    require(v == 0 || t * v < most - x, key, t,
+            "at most " + to_text((most - x) / v, 3) + " for these bodies (max |v| = " + to_text(v, 3) +
+                "): x + t v must stay within the range of doubles");
+  };
+  if (scene.has_particles) {
+    reach("particles.t_end", scene.particles.t_end);
+    require(
+        scene.particles.delta * scene.particles.t_end < most, "particles.delta", scene.particles.delta,
+        "at most " + to_text(most / scene.particles.t_end, 3) +
+            " for particles.t_end: the clusters' gap sqrt(delta t) must stay within the range of doubles");
+  }
+  if (scene.has_continuum) reach("continuum.t_end", scene.continuum_t_end());
+}
+
+}  // namespace
+
 // Every solver's own limits (CFL bound, cells against nu, ...) are checked by its
 // registered preflight, without solving, and the particle engine checks a
 // requested schedule against the initial bodies, so that bad input stops the
-// run before any work and before anything is written.
+// run before any work and before anything is written; so are times and
+// thresholds beyond the range of doubles.
 void preflight(const Scene& scene, const InitialCondition& initial) {
   try {
+    check_reach(scene, initial);
     if (scene.has_particles && scene.particles.solver == particles::ParticleSolver::events &&
         scene.particles.schedule == particles::Schedule::windows)
       particles::check_schedule(initial, scene.particles);
@@ -169,9 +212,9 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
   return reduce(r, std::move(summary));
 }
 
-std::string into_run_directory(const fs::path& out, const Scene& scene, const RunOptions& options,
+std::string into_run_directory(RunDirectory& dir, const fs::path& out, const Scene& scene,
+                               const RunOptions& options,
                                const std::function<void(const fs::path& staging)>& write) {
-  RunDirectory dir(out, scene.name, options.force);
   try {
     write(dir.staging());
   } catch (const InputError& e) {  // a rule checked where the work starts (the engine's own)
