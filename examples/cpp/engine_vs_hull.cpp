@@ -35,7 +35,8 @@ int main() {
       same = engine.m[i] == exact.m[i] && std::abs(engine.x[i] - exact.x[i]) < 1e-9 &&
              std::abs(engine.v[i] - exact.v[i]) < 1e-9;
     std::printf("shockgas %s: %zu bodies at t = %g: engine %zu clusters, exact hull %zu: %s\n",
-                sg::library_version(), bodies.size(), t, engine.size(), exact.size(), same ? "agree" : "DIFFER");
+                sg::library_version(), bodies.size(), t, engine.size(), exact.size(),
+                same ? "agree" : "DIFFER");
     return same ? 0 : 1;
   } catch (const sg::InputError& e) {
     std::printf("refused: %s\n", e.what());

@@ -37,7 +37,8 @@ std::optional<fs::path> data_dir(std::string* tried) {
     return std::nullopt;
   }
   const fs::path here = running_file().parent_path();
-  const std::vector<fs::path> places = {here / "share" / "shockgas", here.parent_path() / "share" / "shockgas"};
+  const std::vector<fs::path> places = {here / "share" / "shockgas",
+                                        here.parent_path() / "share" / "shockgas"};
   std::string list;
   for (const auto& place : places) {
     if (holds_plots(place)) return place.lexically_normal();
