@@ -90,9 +90,11 @@ const ParameterTable<InitialParams>& initial_parameters() {
   return table;
 }
 
+double ring_length(double L, std::size_t N) { return L == 0 ? static_cast<double>(N) : L; }
+
 double domain_length(const InitialParams& p) {
   if (p.velocities == Velocities::expression) return p.domain;
-  return p.L > 0 ? p.L : static_cast<double>(p.N);
+  return ring_length(p.L, p.N);
 }
 
 void validate(const InitialParams& p) {

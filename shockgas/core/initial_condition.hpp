@@ -55,7 +55,11 @@ struct InitialField {
   bool from_bodies() const { return !v0; }
 };
 
-// Domain length of the scene: domain for expressions, else L (or N if L = 0).
+// The ring's length for N bodies: L, or N (mean spacing 1) where L = 0. The one
+// rule of initial.L, for scenes, simulate(bodies, L, ...) and the Python module.
+double ring_length(double L, std::size_t N);
+
+// Domain length of the scene: domain for expressions, else ring_length(L, N).
 double domain_length(const InitialParams& p);
 
 // The particles of realization `realization` (positions in [0, length)).

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "shockgas/app/files/data_dir.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/records/state_file.hpp"
@@ -36,7 +37,9 @@ std::vector<std::pair<std::string, fs::path>> protected_directories() {
   std::error_code ec;
   dirs.emplace_back("the current directory", fs::current_path(ec));
   if (const char* home = std::getenv("HOME"); home && *home) dirs.emplace_back("the home directory", home);
-  dirs.emplace_back("the source tree", SHOCKGAS_SOURCE_DIR);
+  // The folder shockgas reads its plots from: in a build tree they link into the sources.
+  if (const auto data = data_dir())
+    dirs.emplace_back("shockgas's own files", fs::weakly_canonical(*data / "plots", ec).parent_path());
   for (auto& [what, dir] : dirs) dir = fs::weakly_canonical(dir, ec);
   return dirs;
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <regex>
 
+#include "shockgas/app/files/data_dir.hpp"
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/report/child_process.hpp"
 #include "shockgas/core/error.hpp"
@@ -49,13 +50,16 @@ void remove_partial_pictures(const fs::path& dir) {
 
 }  // namespace
 
-fs::path plots_dir() { return fs::path(SHOCKGAS_SOURCE_DIR) / "plots"; }
-
 std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
                             const std::string& what, const std::string& log, const std::string& within,
                             const std::vector<std::string>& args) {
   const char* env = env_override ? std::getenv(env_override) : nullptr;
-  const std::string python = "/usr/bin/python3", path = env ? env : (plots_dir() / script).string();
+  std::string tried;
+  const auto data = data_dir(&tried);
+  if (!env && !data)
+    return "shockgas: warning: no " + what + " (the plotting package is in none of " + tried +
+           "; set SHOCKGAS_DATA_DIR to the folder holding plots/)\n";
+  const std::string python = "/usr/bin/python3", path = env ? env : (*data / "plots" / script).string();
   if (!fs::exists(python) || !fs::exists(path))
     return "shockgas: warning: no " + what + " (" + (fs::exists(python) ? path : python) +
            " not found; run scripts/setup)\n";
