@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace shockgas {
 
@@ -57,10 +58,22 @@ InputError InputError::located(const std::string& where) const {
   return InputError(key_, value_, allowed_, where);
 }
 
+// The shortest text that reads back as `value`.
 std::string to_text(double value) {
   char buf[64];
+#if defined(__cpp_lib_to_chars)
   auto res = std::to_chars(buf, buf + sizeof buf, value);
   return std::string(buf, res.ptr);
+#else
+  // Without std::to_chars for doubles (libc++ 14, the lab's WebAssembly build):
+  // the fewest %g digits that read back to the same double.
+  for (int digits = 1; digits < 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+    if (std::strtod(buf, nullptr) == value) return buf;
+  }
+  std::snprintf(buf, sizeof buf, "%.17g", value);
+  return buf;
+#endif
 }
 
 std::string to_text(double value, int digits) {

@@ -134,13 +134,19 @@ Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization) {
     stream.next(p.N, b.x.data(), b.v.data(), b.m.data());
     return b;
   }
-  const Expression v0(p.v0, "initial.v0"), rho0(p.rho0, "initial.rho0");
-  const double dx = domain_length(p) / p.N;
-  for (std::size_t i = 0; i < p.N; ++i) {
-    const double x = (i + 0.5) * dx;
-    b.push_back(x, v0(x), rho0(x) * dx);
-  }
+  b = lattice_bodies(make_initial_field(p, realization), p.N);
   if (p.remove_mean) subtract_mean(b);
+  return b;
+}
+
+Bodies lattice_bodies(const InitialField& f, std::size_t N) {
+  Bodies b;
+  b.reserve(N);
+  const double dx = f.length / N;
+  for (std::size_t i = 0; i < N; ++i) {
+    const double x = (i + 0.5) * dx;
+    b.push_back(x, f.v0(x), f.rho0(x) * dx);
+  }
   return b;
 }
 

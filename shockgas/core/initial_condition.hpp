@@ -67,6 +67,12 @@ double domain_length(const InitialParams& p);
 // rho0(x) * length / N and velocities v0(x).
 Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization = 0);
 
+// N bodies on the lattice of pointwise data f (f.v0 and f.rho0 given, L =
+// f.length): positions x_i = (i + 1/2) L / N, velocities v0(x_i), masses
+// rho0(x_i) L / N. What make_initial_bodies gives for velocities = "expression"
+// (before remove_mean), and the lab's scenes (lab/engine/lab_scenes.hpp).
+Bodies lattice_bodies(const InitialField& f, std::size_t N);
+
 // The continuum's view of realization `realization`: the expressions when
 // velocities = "expression", else the particles as point masses.
 InitialField make_initial_field(const InitialParams& p, std::uint64_t realization = 0);

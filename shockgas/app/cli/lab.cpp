@@ -1,0 +1,46 @@
+#include "shockgas/app/cli/lab.hpp"
+
+#include <system_error>
+
+#include "shockgas/core/error.hpp"
+#include "shockgas/lab_files.hpp"
+
+namespace shockgas::app {
+
+namespace fs = std::filesystem;
+
+fs::path lab_directory() {
+  for (const char* dir : {kLabBuildDir, kLabInstallDir}) {
+    std::error_code ec;
+    if (fs::is_regular_file(fs::path(dir) / "index.html", ec)) return dir;
+  }
+  return {};
+}
+
+std::string write_lab(const std::string& out_dir) {
+  const fs::path from = lab_directory();
+  if (from.empty()) {
+    const std::string missing = kLabMissing;
+    if (!missing.empty())
+      throw LabMissing(
+          "the lab was not built: " + missing +
+          "; then configure and build again (cmake -S . -B build && cmake --build build --target lab)");
+    throw LabMissing(std::string("the lab's page was found neither in ") + kLabBuildDir + " nor in " +
+                     kLabInstallDir + ": build it (cmake --build build --target lab) or install it");
+  }
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec) throw RunError("cannot create " + out_dir + ": " + ec.message());
+  for (const fs::directory_entry& f : fs::directory_iterator(from)) {
+    if (!f.is_regular_file()) continue;
+    fs::copy_file(f.path(), fs::path(out_dir) / f.path().filename(), fs::copy_options::overwrite_existing,
+                  ec);
+    if (ec)
+      throw RunError("cannot write " + (fs::path(out_dir) / f.path().filename()).string() + ": " +
+                     ec.message());
+  }
+  const std::string page = (fs::path(out_dir) / "index.html").string();
+  return "the lab in " + out_dir + "/: open " + page + " in a browser (it needs no server and no network)\n";
+}
+
+}  // namespace shockgas::app
