@@ -18,10 +18,10 @@ elseif(NOT EXISTS /usr/share/nodejs/acorn)
 elseif(NOT EXISTS /usr/bin/python3)
   set(SHOCKGAS_LAB_MISSING "/usr/bin/python3 (3.11 or later: tomllib) was not found: install the Debian package 'python3'")
 endif()
-# Where the page is written in the build tree, and where `cmake --install` puts it.
+# Where the page is written in the build tree (beside the links of cmake/Install.cmake:
+# the command finds it as it finds its plots).
 include(GNUInstallDirs)
 set(SHOCKGAS_LAB_BUILD_DIR ${PROJECT_BINARY_DIR}/share/shockgas/lab)
-set(SHOCKGAS_LAB_INSTALL_DIR ${CMAKE_INSTALL_FULL_DATADIR}/shockgas/lab)
 if(SHOCKGAS_LAB_MISSING)
   message(STATUS "shockgas lab: not built: ${SHOCKGAS_LAB_MISSING}")
 else()

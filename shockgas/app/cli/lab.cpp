@@ -2,6 +2,7 @@
 
 #include <system_error>
 
+#include "shockgas/app/files/data_dir.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/lab_files.hpp"
 
@@ -10,10 +11,9 @@ namespace shockgas::app {
 namespace fs = std::filesystem;
 
 fs::path lab_directory() {
-  for (const char* dir : {kLabBuildDir, kLabInstallDir}) {
-    std::error_code ec;
-    if (fs::is_regular_file(fs::path(dir) / "index.html", ec)) return dir;
-  }
+  const auto data = data_dir();
+  std::error_code ec;
+  if (data && fs::is_regular_file(*data / "lab" / "index.html", ec)) return *data / "lab";
   return {};
 }
 
@@ -25,8 +25,10 @@ std::string write_lab(const std::string& out_dir) {
       throw LabMissing(
           "the lab was not built: " + missing +
           "; then configure and build again (cmake -S . -B build && cmake --build build --target lab)");
-    throw LabMissing(std::string("the lab's page was found neither in ") + kLabBuildDir + " nor in " +
-                     kLabInstallDir + ": build it (cmake --build build --target lab) or install it");
+    std::string tried;
+    const auto data = data_dir(&tried);
+    throw LabMissing("the lab's page is not in " + (data ? (*data / "lab").string() : tried) +
+                     ": build it (cmake --build build --target lab) or install it");
   }
   std::error_code ec;
   fs::create_directories(out_dir, ec);
