@@ -1,7 +1,8 @@
 // Rules of the repository that a reader relies on: each solver's and restitution
 // law's name is written in one source only (its registration, or its declaration),
 // sources cite only documents of the repository, includes run one way down the
-// layers, and no source file outgrows what can be read at once.
+// layers, no source file outgrows what can be read at once, and README's
+// commands are the ones the continuous integration runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -191,6 +192,22 @@ TEST(SourceRules, NoSourceFileIsLongerThanAboutFourHundredLines) {
     const auto lines = std::count(text.begin(), text.end(), '\n');
     EXPECT_LE(lines, 420) << path;
   }
+}
+
+// README's two commands are the ones that run: the quickstart script exists and
+// the continuous integration runs README's test command (the block after it) verbatim.
+TEST(SourceRules, TheContinuousIntegrationRunsTheReadmeTestCommandVerbatim) {
+  const std::string readme = read_file(kRoot / "README.md");
+  const std::string fence = "```sh\n";
+  const auto first = readme.find(fence + "scripts/quickstart\n```");
+  ASSERT_NE(first, std::string::npos) << "README's first command is scripts/quickstart";
+  EXPECT_TRUE(fs::exists(kRoot / "scripts" / "quickstart"));
+  const auto second = readme.find(fence, first + fence.size());
+  ASSERT_NE(second, std::string::npos);
+  const auto begin = second + fence.size();
+  const std::string command = readme.substr(begin, readme.find('\n', begin) - begin);
+  const std::string ci = read_file(kRoot / ".ci" / "run");
+  EXPECT_NE(ci.find("\n" + command + "\n"), std::string::npos) << command;
 }
 
 }  // namespace
