@@ -63,7 +63,7 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
     r.parallel = computed.parallel;
     r.states = std::move(computed.states);
   } else {
-    progress.stage("particles");
+    progress.stage("particles", scene.particles.realizations);
     r.ensemble = particles::run_ensemble(initial, particle_params(scene), progress.callback());
     progress.finish();
     progress.phase(analysis);
