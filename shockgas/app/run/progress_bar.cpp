@@ -43,7 +43,7 @@ void ProgressBar::say_short_phases() {
   for (std::size_t i = 0; i < timed_.size(); ++i) {
     if (said_[i]) continue;
     std::snprintf(seconds, sizeof seconds, " %.2f s", timed_[i].second);
-    line += (line.empty() ? "" : ", ") + timed_[i].first + seconds;
+    line += (line.empty() ? "" : "; ") + timed_[i].first + seconds;  // names hold commas
   }
   if (!line.empty()) std::fprintf(stderr, "phases without a line of their own: %s\n", line.c_str());
 }
