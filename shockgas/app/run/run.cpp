@@ -13,6 +13,7 @@
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/output/theory_scopes.hpp"
 #include "shockgas/app/report/plots.hpp"
 #include "shockgas/app/report/report.hpp"
 #include "shockgas/app/report/report_html.hpp"
@@ -147,6 +148,7 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
   RunResults r;
   r.scene = &scene;
   r.initial = &initial;
+  r.shape = scene_shape(scene, initial);
   sink(r, Part::provenance);
   sink(r, Part::initial);
   if (scene.has_particles) {
