@@ -132,6 +132,10 @@ int do_run(const Arguments& args) {
   const Scene scene = args.resume.empty()
                           ? load_scene(args.scene_path, args.overrides)  // InputError: nothing written
                           : resumed_scene(args, options);
+  if (speaks_for_job())  // rank 0 speaks for an MPI job
+    for (const Scene& s : scene.has_sweep ? expand_sweep(scene) : std::vector<Scene>{scene})
+      if (!s.solver_note.empty())
+        std::cerr << "shockgas: note: " << (scene.has_sweep ? s.name + ": " : "") << s.solver_note << "\n";
   const std::string dir = run_scene(scene, options);
   if (!speaks_for_job()) return kExitOk;  // rank 0 writes and speaks for an MPI job
   std::cout << "results in " << as_directory(dir) << "\n";
