@@ -52,6 +52,7 @@ struct Arguments {
   studies::StudyOptions bench;
   studies::TailStudyOptions tail;
   std::vector<double> tail_sizes;  // --N, read as numbers so that 1e7 is allowed
+  AnimationRequest animation;      // read as text: animate() says what is allowed
 };
 
 // --out "" would name no directory: a run took its default, bench the root.
@@ -187,7 +188,7 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     return kExitOk;
   }
   if (app.got_subcommand("animate")) {
-    animate(args.result_path);
+    animate(args.result_path, args.animation);
     std::cout << "animation in " << as_directory(args.result_path) << "\n";
     return kExitOk;
   }
@@ -241,6 +242,10 @@ int run_command(int argc, char** argv) {
   anim->add_option("DIR", args.result_path,
                    "a run's output directory (its scene has [output] animation = true)")
       ->required();
+  anim->add_option("--fps", args.animation.fps, "frames per second, 1 to 60 (default: 8 s in all, 4 to 24)");
+  anim->add_option("--size", args.animation.size, "WxH in pixels, each even (default 1280x720)");
+  anim->add_option("--frames", args.animation.frames,
+                   "how many of the recorded frames, spread evenly (default: all)");
   auto* bench =
       app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
   bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)")
