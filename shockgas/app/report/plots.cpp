@@ -113,8 +113,10 @@ std::string make_plots(const std::string& dir, bool animation, const std::string
                          within, {"--animation"});
 }
 
-std::string make_animation(const std::string& dir, const std::string& within) {
-  return run_plot_script("animate.py", "SHOCKGAS_ANIMATE_SCRIPT", dir, "animation", "animation.log", within);
+std::string make_animation(const std::string& dir, const std::string& within,
+                           const std::vector<std::string>& args) {
+  return run_plot_script("animate.py", "SHOCKGAS_ANIMATE_SCRIPT", dir, "animation", "animation.log", within,
+                         args);
 }
 
 std::string make_bench_charts(const std::string& dir) {
