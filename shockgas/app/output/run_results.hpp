@@ -122,7 +122,9 @@ using EnsembleSource = std::function<ComputedEnsemble(const Scene&)>;
 
 // The stages (stage_*.cpp). Each takes what earlier stages handed on. The
 // particles stage runs the ensemble here unless a source gives it.
-ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+// shape: scene_shape(scene, initial) (theory_scopes.hpp), computed once per run.
+ParticleResults run_particles(const Scene& scene, const InitialCondition& initial,
+                              const compare::SceneShape& shape, ProgressBar& progress,
                               const EnsembleSource& source = {});
 std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial,
                                         ProgressBar& progress);

@@ -152,7 +152,7 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
   sink(r, Part::provenance);
   sink(r, Part::initial);
   if (scene.has_particles) {
-    r.particles = run_particles(scene, initial, progress, source);
+    r.particles = run_particles(scene, initial, r.shape, progress, source);
     sink(r, Part::particles);
     sink(r, Part::analysis);
     release_records(*r.particles);
@@ -169,7 +169,7 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
   }
   if (scene.output.animation) {
     progress.phase("frames: " + std::to_string(scene.output.animation_frames) + " for the animation");
-    r.frames = run_frames(scene, initial,
+    r.frames = run_frames(scene, initial, r.shape,
                           r.particles ? r.particles->frames : std::vector<particles::Snapshot>{}, progress);
     sink(r, Part::animation);
   }

@@ -51,7 +51,8 @@ std::optional<particles::Cluster> heaviest_cluster(const ParticleResults& r, con
 
 }  // namespace
 
-ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+ParticleResults run_particles(const Scene& scene, const InitialCondition& initial,
+                              const compare::SceneShape& shape, ProgressBar& progress,
                               const EnsembleSource& source) {
   ParticleResults r;
   // A phase of progress, until compute_parts starts the next one.
@@ -77,7 +78,7 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   r.heaviest = heaviest_cluster(r, scene, initial);
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
-  const TimeWindow fit = cooling_fit_window(scene, scene_shape(scene, initial));
+  const TimeWindow fit = cooling_fit_window(scene, shape);
   r.cooling =
       compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r, fit.t_min, fit.t_max);
   r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
