@@ -152,3 +152,14 @@ def test_fig2_draws_each_rule_and_delta_once(monkeypatch, tmp_path):
         assert ax.get_xlabel().endswith("[time]") and ax.get_ylabel()
     right = fig.axes[1].get_legend_handles_labels()[1]
     assert "delta = 0.01, sticky below it, 10 paired" in right
+
+
+def test_departure_time_is_where_the_departure_stays_above_the_threshold():
+    """t_5%: a sample above DEPARTURE followed by one below does not count."""
+    import paper_tables
+
+    above, below = paper_tables.DEPARTURE * 1.2, paper_tables.DEPARTURE * 0.8
+    points = [(1e3, 0.0, 0.0), (2e4, above, 0.0), (3e4, below, 0.0), (5e4, above, 0.0), (1e5, above, 0.0)]
+    assert paper_tables.departure_time(points) == "5.0e+04"
+    assert paper_tables.departure_time(points[:3]) == "> 3e+04"
+    assert paper_tables.departure_time([]) == "–"
