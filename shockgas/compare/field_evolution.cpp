@@ -74,7 +74,7 @@ double relative_change(double a, double a0) { return a0 != 0 ? std::abs(a / a0 -
 }  // namespace
 
 FieldEvolution analyse_field_evolution(const std::vector<continuum::ContinuumResult>& frames,
-                                       double fit_window, double fit_t_min,
+                                       double fit_window, std::optional<double> decay_from,
                                        const ShockDetectionParams& shock_params) {
   require(!frames.empty(), "output.animation_frames", frames.size(), "at least one frame");
   require_above("compare.fit_window", fit_window, 1.0);
@@ -102,7 +102,7 @@ FieldEvolution analyse_field_evolution(const std::vector<continuum::ContinuumRes
     }
   }
   fit_formation(e, figures, smooth_frames, frames.front().length / static_cast<double>(cells));
-  fit_amplitude(e, fit_window, fit_t_min);
+  if (decay_from) fit_amplitude(e, fit_window, *decay_from);
   e.lobe_area_change = 0;
   for (std::size_t k = 0; k < frames.size(); ++k)
     e.lobe_area_change =

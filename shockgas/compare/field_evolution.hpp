@@ -57,9 +57,12 @@ struct FieldEvolution {
 };
 
 // frames: one solver's fields at increasing times (at least one frame, the same
-// grid in all). fit_window > 1. Throws InputError otherwise.
+// grid in all). fit_window > 1. Throws InputError otherwise. decay_from: where a
+// decay law of the amplitude holds, the start of its window (the fit starts
+// there, after the first shock and at t_end / fit_window); nullopt where none
+// holds: no power law describes the amplitude, and none is fitted.
 FieldEvolution analyse_field_evolution(const std::vector<continuum::ContinuumResult>& frames,
-                                       double fit_window, double fit_t_min = 0,
+                                       double fit_window, std::optional<double> decay_from = 0.0,
                                        const ShockDetectionParams& shocks = {});
 
 }  // namespace shockgas::compare

@@ -103,6 +103,21 @@ TEST(FieldEvolution, PeriodicSawtoothDecaysAsOneOverT) {
   EXPECT_NEAR(e.amplitude_fit->exponent, kSawtoothAmplitudeExponent, 1 / (1 + 2 * kPi * 20));
 }
 
+// Where no decay law holds (the sine before its sawtooth is formed: the crest
+// v = 1 starts at x = 1/4 and reaches the shock at x = 1/2 only at t = 1/4, so
+// the amplitude is 1 until then), no power law is fitted; the measured series
+// are the same.
+TEST(FieldEvolution, NoDecayLawNoAmplitudeFit) {
+  const auto f = field([](double x) { return std::sin(2 * kPi * x); });
+  const auto frames = exact_frames(f, 512, linear_times(0.5, 50));
+  const FieldEvolution fitted = analyse_field_evolution(frames, 10);
+  const FieldEvolution e = analyse_field_evolution(frames, 10, std::nullopt);
+  ASSERT_TRUE(fitted.amplitude_fit.has_value());
+  EXPECT_FALSE(e.amplitude_fit.has_value());
+  EXPECT_EQ(e.amplitude, fitted.amplitude);
+  EXPECT_EQ(e.first_shock_time, fitted.first_shock_time);
+}
+
 TEST(FieldEvolution, DataWithAJumpHoldsAShockFromTheStart) {
   const auto f = field([](double x) { return x < 0.5 ? 1.0 : -1.0; });
   const FieldEvolution e = analyse_field_evolution(exact_frames(f, 256, {0.0, 0.1, 0.2}), 10);

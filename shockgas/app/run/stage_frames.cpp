@@ -2,6 +2,7 @@
 // solver's fields at the frame times, and the evolution of the exact solver's.
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "shockgas/app/output/frames.hpp"
 #include "shockgas/app/output/theory_scopes.hpp"
@@ -36,11 +37,12 @@ std::size_t measured_solver(const std::vector<std::string>& solvers) {
   return it == solvers.end() ? 0 : static_cast<std::size_t>(it - solvers.begin());
 }
 
-// Where the amplitude's decay law holds (N-wave or sawtooth, theory_scope.hpp), its window's start; else 0.
-double decay_fit_start(const Scene& scene, const compare::SceneShape& shape) {
+// Where the amplitude's decay law holds (N-wave or sawtooth, theory_scope.hpp),
+// its window's start; nullopt where neither holds.
+std::optional<double> decay_fit_start(const Scene& scene, const compare::SceneShape& shape) {
   for (const compare::Law law : {compare::Law::n_wave_decay, compare::Law::sawtooth_decay})
     if (const compare::Scope s = compare::scope(law, shape, law_time(scene, law)); s.holds) return s.t_min;
-  return 0.0;
+  return std::nullopt;
 }
 
 }  // namespace
