@@ -28,6 +28,10 @@ statistics. chi2 sums (difference / sigma_d)^2 over the bins where at least
 MIN_REALIZATIONS realizations have mass (sigma_d of a sparser bin is itself
 unreliable); bins are treated as independent, which they are only roughly (each
 histogram is normalised), so chi2/dof is an indicator, not a test.
+
+"against_exact": each r and t against the exact mass-weighted law of the r = 0
+sticky gas from this white noise on the same bins (particles/histogram/exact):
+the L1 distance with its jackknife error and noise floor, chi2 and its p-value.
 """
 import argparse
 import itertools
@@ -51,12 +55,43 @@ def variants(run_dir):
 
 
 def read_histograms(d):
-    """t (times), dz, and an array [realization, time, bin] of densities of run directory d."""
+    """t (times), dz, an array [realization, time, bin] of densities of run
+    directory d, and the exact r = 0 law on the same bins (None if not written)."""
     with run_files.open_result(d) as h5:
         t = h5["particles/histogram/t"][:]
         z = h5["particles/histogram/z"][:]
         rows = h5["particles/realizations/histogram_density"][:]
-    return t, z[1] - z[0], rows.reshape(rows.shape[0], len(t), len(z))
+        exact = h5["particles/histogram/exact"][:] if "particles/histogram/exact" in h5 else None
+    return t, z[1] - z[0], rows.reshape(rows.shape[0], len(t), len(z)), exact
+
+
+def chi2_p_value(chi2, dof):
+    """P(X >= chi2) for X chi-squared with dof degrees of freedom: the regularized
+    upper incomplete gamma Q(dof/2, chi2/2) (series below a + 1, continued
+    fraction above; Numerical Recipes, 3rd ed., 6.2)."""
+    a, x = dof / 2.0, chi2 / 2.0
+    if x <= 0:
+        return 1.0
+    log_front = a * math.log(x) - x - math.lgamma(a)
+    if x < a + 1:
+        term = total = 1.0 / a
+        for n in range(1, 10000):
+            term *= x / (a + n)
+            total += term
+            if abs(term) < abs(total) * 1e-15:
+                break
+        return 1.0 - total * math.exp(log_front)
+    b, c, d = x + 1 - a, 1e300, 1 / (x + 1 - a)
+    h = d
+    for n in range(1, 10000):
+        an = -n * (n - a)
+        b += 2
+        d = 1 / (an * d + b)
+        c = b + an / c
+        h *= d * c
+        if abs(d * c - 1) < 1e-15:
+            break
+    return h * math.exp(log_front)
 
 
 def jackknife_error(values_without):
@@ -87,6 +122,24 @@ def pair_statistics(a, b, dz):
     return {"distance": distance, "error": error, "noise_floor": floor, "chi2": chi2, "dof": int(np.count_nonzero(use))}
 
 
+def exact_statistics(a, exact, dz):
+    """One run's per-realization densities a [realization, bin] against the exact
+    law on the same bins: the L1 distance of their mean with its jackknife error
+    and noise floor (as pair_statistics, with the exact law as the second member
+    and no noise of its own), chi2 over the populated bins and its p-value."""
+    n = a.shape[0]
+    d = a - exact[None, :]
+    distance = float(np.sum(np.abs(d.mean(axis=0))) * dz)
+    error = jackknife_error(np.sum(np.abs(leave_one_out_means(d)), axis=1) * dz)
+    sigma = a.std(axis=0, ddof=1) / math.sqrt(n)
+    floor = float(math.sqrt(2 / math.pi) * np.sum(sigma) * dz)
+    use = (np.count_nonzero(a > 0, axis=0) >= MIN_REALIZATIONS) & (sigma > 0)
+    chi2 = float(np.sum((d.mean(axis=0)[use] / sigma[use]) ** 2))
+    dof = int(np.count_nonzero(use))
+    return {"distance": distance, "error": error, "noise_floor": floor, "chi2": chi2, "dof": dof,
+            "p": chi2_p_value(chi2, dof)}
+
+
 def group_statistics(members, dz):
     """Mean over pairs of the pair distance, with jackknife error and noise floor."""
     pairs = list(itertools.combinations(members, 2))
@@ -106,9 +159,10 @@ def collapse(run_dir, t_min):
     if len(runs) < 1:
         raise SystemExit("no particle runs with result.h5 under %s" % run_dir)
     data = {}
-    dz = times = None
+    dz = times = exact = None
     for r, d, _ in runs:
-        t, dz, h = read_histograms(d)
+        t, dz, h, exact_here = read_histograms(d)
+        exact = exact_here if exact is None else exact
         times = [float(x) for x in t if x >= t_min * (1 - 1e-12)]
         data[r] = {float(x): h[:, k, :] for k, x in enumerate(t) if x >= t_min * (1 - 1e-12)}
     n = min(h.shape[0] for per_t in data.values() for h in per_t.values())
@@ -130,6 +184,8 @@ def collapse(run_dir, t_min):
     for t in times:
         for ra, rb in itertools.combinations(rs, 2):
             pairs.append({"t": t, "r_a": ra, "r_b": rb, **pair_statistics(data[ra][t], data[rb][t], dz)})
+    against_exact = [{"t": t, "r": r, **exact_statistics(data[r][t], exact, dz)} for t in times for r in rs] \
+        if exact is not None else []
     own = {r: s["analysis"].get("velocity_collapse_distance") for r, _, s in runs}
     return {
         "run": os.path.basename(os.path.normpath(run_dir)),
@@ -141,6 +197,7 @@ def collapse(run_dir, t_min):
         "bin_width": float(dz),
         "groups": groups,
         "pairs": pairs,
+        "against_exact": against_exact,
         "run_summary_collapse_distance": own,
     }
 
@@ -157,6 +214,9 @@ def main():
         where = "r = %g" % g["r"] if "r" in g else ("t = %g" % g["t"] if "t" in g else "all")
         print("%-6s %-10s D = %.4f +- %.4f  noise floor %.4f" % (g["kind"], where, g["distance"], g["error"],
                                                                 g["noise_floor"]))
+    for e in result["against_exact"]:
+        print("exact  t = %-7g r = %-4g D = %.4f +- %.4f  noise floor %.4f  chi2 %.1f / %d  p = %.3g" % (
+            e["t"], e["r"], e["distance"], e["error"], e["noise_floor"], e["chi2"], e["dof"], e["p"]))
     print("the run's own analysis.velocity_collapse_distance:", result["run_summary_collapse_distance"])
 
 

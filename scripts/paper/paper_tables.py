@@ -17,6 +17,8 @@ fig2/  each run's least-squares exponent per decade (one realization: no error
 fig4/  collapse*.json (scripts/paper/fig4_collapse.py): the L1 distance of the scaled
        distributions over t, over r and over both, its jackknife error and the
        distance noise alone would give.
+log.tsv  the stops and resumes of the long runs, one row per run: its starts,
+       stops and resumes, and what each stop cost (the log's own words).
 A directory that is missing is skipped.
 """
 import argparse
@@ -152,15 +154,47 @@ def fig4(root):
                                                            pm(p["distance"], p["error"], 3), p["noise_floor"],
                                                            p["chi2"], p["dof"]))
         print()
+        if c.get("against_exact"):
+            print("| t | r | L1 distance to the exact r = 0 law | noise floor | χ² / bins | p |")
+            print("|---|---|---|---|---|---|")
+            for e in c["against_exact"]:
+                print("| %g | %g | %s | %.3f | %.0f / %d | %.2g |" % (e["t"], e["r"], pm(e["distance"], e["error"], 3),
+                                                                   e["noise_floor"], e["chi2"], e["dof"], e["p"]))
+            print()
+
+
+def read_log(path):
+    """The rows of log.tsv: (time, run, event, detail); event is start, stop,
+    resume or end(start|resume), detail the command, what a stop lost, or how
+    the process ended."""
+    with open(path, encoding="utf-8") as f:
+        return [tuple((line.rstrip("\n").split("\t") + [""])[:4]) for line in f if line.strip()]
+
+
+def log(path):
+    rows = read_log(path)
+    print("| run | first start (UTC) | last end (UTC) | starts | stops | resumes | ended |")
+    print("|---|---|---|---|---|---|---|")
+    for run in dict.fromkeys(r[1] for r in rows):
+        mine = [r for r in rows if r[1] == run]
+        ends = [r for r in mine if r[2].startswith("end")]
+        count = {e: sum(r[2] == e for r in mine) for e in ("start", "stop", "resume")}
+        print("| `%s` | %s | %s | %d | %d | %d | %s |" % (
+            run, mine[0][0], ends[-1][0] if ends else "–", count["start"], count["stop"], count["resume"],
+            ends[-1][3].split(":")[0] if ends else "running"))
+    print()
+    for t, run, event, detail in rows:
+        if event == "stop":
+            print("- `%s`, %s: %s" % (run, t, detail))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("root", help="data/paper-runs")
     a = ap.parse_args()
-    for name, table in (("fig1", fig1), ("fig2", fig2), ("fig4", fig4)):
+    for name, table in (("fig1", fig1), ("fig2", fig2), ("fig4", fig4), ("log.tsv", log)):
         d = os.path.join(a.root, name)
-        if os.path.isdir(d):
+        if os.path.exists(d):
             print("### %s\n" % name)
             table(d)
             print()

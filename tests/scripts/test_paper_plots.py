@@ -163,3 +163,14 @@ def test_departure_time_is_where_the_departure_stays_above_the_threshold():
     assert paper_tables.departure_time(points) == "5.0e+04"
     assert paper_tables.departure_time(points[:3]) == "> 3e+04"
     assert paper_tables.departure_time([]) == "–"
+
+
+def test_chi2_p_value_is_the_exact_tail_of_the_distribution():
+    """Closed forms: dof = 2, P = exp(-chi2/2); dof = 1, P = erfc(sqrt(chi2/2))."""
+    import math
+
+    import fig4_collapse
+
+    for chi2 in (0.1, 1.0, 3.0, 10.0, 40.0):
+        assert math.isclose(fig4_collapse.chi2_p_value(chi2, 2), math.exp(-chi2 / 2), rel_tol=1e-12)
+        assert math.isclose(fig4_collapse.chi2_p_value(chi2, 1), math.erfc(math.sqrt(chi2 / 2)), rel_tol=1e-10)
