@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "app/checkpoint_fixture.hpp"
+#include "shockgas/app/cli/info.hpp"
 #include "shockgas/app/input/scene_parser.hpp"
 
 namespace shockgas::app {
@@ -78,6 +79,25 @@ TEST_F(Checkpoints, AnotherScenesRunDoesNotReplaceAnInterruptedRun) {
       << said_;
   EXPECT_TRUE(fs::exists(checkpoint_path(path("run"))));
   EXPECT_EQ(command({"run", path("scene.toml"), "--out", path("run"), "-q"}), 0) << said_;
+}
+
+// `info` on a stopped run's directory says how far its checkpoint got and how
+// to continue it (finding of the paper's long runs: it said only that the
+// directory holds no result.h5); a damaged checkpoint is an input error there too.
+TEST_F(Checkpoints, InfoSaysHowFarAStoppedRunGot) {
+  interrupted_run("run", {0, 2});
+  EXPECT_EQ(command({"info", path("run")}), 0) << said_;
+  std::ostringstream out;
+  print_info(path("run"), out);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("a run stopped before its result was written"), std::string::npos) << text;
+  EXPECT_NE(text.find("holds 2 of the 5 realizations finished"), std::string::npos) << text;
+  EXPECT_NE(text.find("continue with: shockgas run --resume " + path("run")), std::string::npos) << text;
+  std::string bytes = bytes_of(checkpoint_path(path("run")));
+  bytes[bytes.size() / 2] ^= 0x10;
+  std::ofstream(checkpoint_path(path("run")), std::ios::binary) << bytes;
+  EXPECT_EQ(command({"info", path("run")}), 2) << said_;
+  EXPECT_NE(said_.find("damaged"), std::string::npos) << said_;
 }
 
 TEST_F(Checkpoints, ADamagedCheckpointIsRefusedAndKept) {

@@ -228,7 +228,8 @@ int run_command(int argc, char** argv) {
   auto* info = app.add_subcommand("info", "What a result file holds, its scene and its provenance");
   info->add_option(
       "RESULT", args.result_path,
-      "result file or run directory, e.g. out/default (every file its manifest.json lists is checked)");
+      "result file or run directory, e.g. out/default (every file its manifest.json lists is checked); "
+      "the directory of a stopped run: how far its checkpoint got");
   info->add_flag("--layout", args.layout,
                  "print every dataset and summary key a run may write (docs/output.md)");
   info->require_option(1);

@@ -5,8 +5,13 @@
 #include <sstream>
 
 #include "shockgas/app/directory/result_check.hpp"
+#include "shockgas/app/ensemble/ensemble_plan.hpp"
+#include "shockgas/app/input/resumed_scene.hpp"
 #include "shockgas/app/output/output_layout.hpp"
 #include "shockgas/app/output/result_reader.hpp"
+#include "shockgas/app/records/checkpoint.hpp"
+#include "shockgas/app/records/run_state_file.hpp"
+#include "shockgas/app/report/report.hpp"
 
 namespace shockgas::app {
 
@@ -49,12 +54,40 @@ std::string describe(const ResultContents& file) {
   return out.str();
 }
 
+std::optional<Slice> slice_of(const std::string& text, const std::string& option) {
+  return text.empty() ? std::nullopt : std::optional(parse_slice(text, option));
+}
+
+// A directory holding a checkpoint and no result (checkpoint.hpp): a run that
+// stopped; how far it got and how to continue it. InputError for a damaged
+// checkpoint or another build's.
+std::string describe_checkpoint(const fs::path& dir) {
+  const Checkpoint c = read_checkpoint(dir);
+  const EnsemblePlan plan(checkpoint_scene(c, nullptr), slice_of(c.realizations, "--realizations"),
+                          slice_of(c.variants, "--variants"));
+  std::size_t saved = 0;
+  std::error_code ec;
+  for (const WorkItem& w : plan.items()) saved += fs::exists(run_state_path(dir, w.ensemble, w.index), ec);
+  std::ostringstream out;
+  out << dir.string() << ": a run stopped before its result was written; its checkpoint (scene \""
+      << printable(checkpoint_scene_name(c)) << "\""
+      << (c.realizations.empty() ? "" : ", realizations " + printable(c.realizations)) << ", shockgas "
+      << printable(c.version) << " " << printable(c.commit) << ") holds " << c.records.size() << " of the "
+      << plan.items().size() << " realizations finished, after " << brief(c.seconds) << " s of computing";
+  if (saved) out << ", and the saved states of " << saved << " running";
+  out << resume_hint(dir) << "\n";
+  return out.str();
+}
+
 }  // namespace
 
 std::string describe_result(const std::string& path) {
   // An output directory without a result file by its own manifest (`shockgas
   // bench`): nothing to describe but its files.
   std::error_code ec;
+  if (fs::is_directory(path, ec) && !fs::exists(fs::path(path) / "result.h5", ec) &&
+      fs::exists(checkpoint_path(path), ec))
+    return describe_checkpoint(path);
   if (fs::is_directory(path, ec) && !fs::exists(fs::path(path) / "result.h5", ec))
     if (const auto manifest = read_manifest(path); manifest && !manifest->find("result.h5"))
       return path + ": the output of \"" + manifest->scene + "\", which has no result file\n";
