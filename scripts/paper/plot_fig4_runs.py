@@ -41,12 +41,12 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("root")
     ap.add_argument("--out", default=".")
-    ap.add_argument("--runs", nargs="*", help="run directories under ROOT (default: every events-*-R50)")
+    ap.add_argument("--runs", nargs="*", help="run directories under ROOT (default: every events-*-R500, the paper's size)")
     ap.add_argument("--t-min", type=float, default=1e3)
     a = ap.parse_args()
-    names = a.runs or [os.path.basename(d) for d in sorted(glob.glob(os.path.join(a.root, "events-*-R50")))]
+    names = a.runs or [os.path.basename(d) for d in sorted(glob.glob(os.path.join(a.root, "events-*-R500")))]
     runs = sorted((read(os.path.join(a.root, n)) for n in names), key=lambda run: run[0])
-    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.6))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 5.2))
     exact = None
     for r, realizations, N, rows in runs:
         times = [t for t in sorted(rows) if t >= a.t_min * (1 - 1e-9)]
@@ -72,11 +72,11 @@ def main():
     left.set_xlabel(z_label)
     left.set_ylabel(axis_label(r"$\Phi(z)$, mass weighted", "time^(2/3)/length"))
     left.set_title("Fig. 4: %s" % ", ".join(sizes))
-    left.legend(fontsize=6, ncol=2)
+    left.legend(fontsize=6, ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.14))  # below: data fill the axes
     right.set_xlabel(z_label)
     right.set_ylabel(axis_label(r"$\Phi$ / exact $- 1$", "1"))
     right.set_title("against the exact law, standard error over realizations")
-    right.legend(fontsize=6, ncol=2)
+    right.legend(fontsize=6, ncol=4, loc="upper center", bbox_to_anchor=(0.5, -0.14))  # below: data fill the axes
     fig.tight_layout()
     os.makedirs(a.out, exist_ok=True)
     save(fig, os.path.join(a.out, "fig4-paper-size.png"),

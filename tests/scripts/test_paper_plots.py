@@ -174,3 +174,26 @@ def test_chi2_p_value_is_the_exact_tail_of_the_distribution():
     for chi2 in (0.1, 1.0, 3.0, 10.0, 40.0):
         assert math.isclose(fig4_collapse.chi2_p_value(chi2, 2), math.exp(-chi2 / 2), rel_tol=1e-12)
         assert math.isclose(fig4_collapse.chi2_p_value(chi2, 1), math.erfc(math.sqrt(chi2 / 2)), rel_tol=1e-10)
+
+
+def test_the_long_runs_log_holds_every_stop_and_its_resume():
+    """data/paper-runs/log.tsv: every run ends with exit 0 after its last stop; a
+    stop is followed by a resume or a fresh start of the same run; Fig. 4's shards
+    together hold realizations 0..499 once."""
+    import re
+
+    import paper_tables
+
+    rows = paper_tables.read_log(os.path.join(RUNS, "log.tsv"))
+    covered = []
+    for run in dict.fromkeys(r[1] for r in rows):
+        events = [(e, detail) for _, name, e, detail in rows if name == run]
+        assert events[-1][0].startswith("end") and events[-1][1].startswith("exit 0"), (run, events[-1])
+        for k, (event, _) in enumerate(events):
+            if event == "stop":
+                assert events[k + 1][0] in ("start", "resume"), (run, events[k + 1])
+        starts = [d for e, d in events if e == "start"]
+        shard = re.search(r"--realizations (\d+):(\d+)", starts[-1]) if starts else None
+        if run.startswith("fig4-shard") and shard:
+            covered.extend(range(int(shard.group(1)), int(shard.group(2))))
+    assert sorted(covered) == list(range(500))
