@@ -7,6 +7,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstring>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -27,10 +28,21 @@ std::string shape_text(const std::vector<std::uint64_t>& shape) {
   return s + (shape.size() == 1 ? ",)" : ")");
 }
 
+std::string intact_text(Verification v) {
+  switch (v) {
+    case Verification::manifest:
+      return "  (intact: size and SHA-256 as its manifest.json records)";
+    case Verification::own_checksum:
+      return "  (intact: size and SHA-256 as its first 512 bytes record)";
+    case Verification::no_manifest:
+      break;
+  }
+  return "";
+}
+
 std::string describe(const Hdf5File& file, const std::string& path) {
   std::ostringstream out;
-  out << path << (file.verified() ? "  (intact: size and SHA-256 as its manifest.json records)" : "")
-      << "\n\nprovenance:\n";
+  out << path << intact_text(file.verification()) << "\n\nprovenance:\n";
   std::string scene_text, resolved;
   for (const auto& [name, value] : file.attributes("/")) {
     if (name == "scene_text")
@@ -78,16 +90,17 @@ std::string collect(int fd) {
   return text;
 }
 
-// A file without a manifest is read in a child process: the HDF5 library may
-// crash inside a damaged file, and then only the child dies.
-std::string describe_isolated(const fs::path& file) {
+// The answer of job(), run in a child process on a file that may be damaged:
+// the HDF5 library may crash inside it, and then only the child dies. Its
+// failures come back as a FileProblem of the file.
+std::string isolated(const fs::path& file, const std::function<std::string()>& job) {
   int fds[2];
   if (pipe(fds) != 0) throw RunError(std::string("pipe: ") + std::strerror(errno));
   const pid_t child = fork();
   if (child == 0) {
     close(fds[0]);
     try {
-      answer(fds[1], "O" + describe(Hdf5File::open(file.string(), Verification::no_manifest), file.string()));
+      answer(fds[1], "O" + job());
     } catch (const FileProblem& e) {
       answer(fds[1], "E" + e.problem() + '\0' + e.detail());
     } catch (const std::exception& e) {
@@ -115,6 +128,43 @@ std::string describe_isolated(const fs::path& file) {
                            "), and it has no manifest.json to check it against");
 }
 
+std::string describe_isolated(const fs::path& file) {
+  return isolated(file, [&] {
+    const Hdf5File h5 = Hdf5File::open(file.string(), Verification::no_manifest);
+    h5.check_every_chunk();
+    return describe(h5, file.string());
+  });
+}
+
+// Where the damage of a file that failed its checksum lies, read in a child
+// process: the datasets whose chunks fail their Fletcher32 checksums, or the
+// library's reason where it cannot read the file's structure.
+std::string damaged_parts(const fs::path& file) {
+  try {
+    return isolated(file, [&] {
+      std::string names;
+      for (const UnreadableDataset& d :
+           Hdf5File::open(file.string(), Verification::no_manifest).unreadable_datasets())
+        names += (names.empty() ? "" : ", ") + d.path + " (" + d.reason + ")";
+      return names.empty() ? "every dataset reads back whole: the damage lies in its metadata, attributes or "
+                             "unused bytes"
+                           : "dataset " + names;
+    });
+  } catch (const FileProblem& e) {
+    return "its HDF5 structure: " + e.detail();
+  }
+}
+
+// check_result_file(file), a damage named where it lies (damaged_parts).
+Verification checked_naming_damage(const fs::path& file) {
+  try {
+    return check_result_file(file);
+  } catch (const FileProblem& e) {
+    if (e.problem() != "damaged") throw;
+    throw result_problem(file.string(), "damaged", e.detail() + "; " + damaged_parts(file));
+  }
+}
+
 }  // namespace
 
 std::string describe_result(const std::string& path) {
@@ -125,9 +175,14 @@ std::string describe_result(const std::string& path) {
     if (const auto manifest = read_manifest(path); manifest && !manifest->find("result.h5"))
       return path + ": the output of \"" + manifest->scene + "\", which has no result file\n";
   const fs::path file = result_file_of(path);
-  const Verification checked = check_result_file(file);
-  if (checked == Verification::manifest)
-    return describe(Hdf5File::open(file.string(), Verification::manifest), file.string());
+  const Verification checked = checked_naming_damage(file);
+  if (checked != Verification::no_manifest) {
+    // Its bytes are as written; every chunk is still read, its Fletcher32 checked
+    // (a chunk damaged before its file's checksum was taken).
+    const Hdf5File h5 = Hdf5File::open(file.string(), checked);
+    h5.check_every_chunk();
+    return describe(h5, file.string());
+  }
   std::cerr << "shockgas: warning: " << unverified_warning(file) << "\n";
   return describe_isolated(file);
 }

@@ -89,7 +89,7 @@ ShardHeader read_shard_header(const std::string& dir) {
   if (!is_shard) throw InputError("shard", to_text(dir), allowed + " (this one holds a whole run)");
   h.shard = attribute_map(h5, "/shard");
   h.overrides = nlohmann::json::parse(h.shard.at("overrides")).get<std::vector<std::string>>();
-  h.verified = h5.verified() ? Verification::manifest : Verification::no_manifest;
+  h.verified = h5.verification();
   return h;
 }
 

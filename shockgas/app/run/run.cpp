@@ -9,6 +9,7 @@
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/output/xdmf_file.hpp"
 #include "shockgas/app/report/plots.hpp"
 #include "shockgas/app/report/report.hpp"
 #include "shockgas/app/report/report_html.hpp"
@@ -156,6 +157,7 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
     progress.phase("writing result.h5, summary.json, report.md");
     h5.close();
   }
+  write_xdmf(dir.string());
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   write_file(dir / "report.md", report_text(r));
   if (options.plots && scene.output.plots)
