@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "shockgas/core/bodies.hpp"
+#include "shockgas/particles/collision.hpp"
 
 namespace shockgas::bench {
 
@@ -76,9 +77,7 @@ class BaselineEngine {
     x_[j] = j == 0 ? x_[i] - L_ : x_[i];
     t_[j] = t;
     const double g = v_[i] - v_[j];
-    const double dv = 0.5 * (1.0 + (g < delta_ ? 1.0 : r_)) * g;
-    v_[i] -= dv;
-    v_[j] += dv;
+    particles::bounce_equal(v_[i], v_[j], 1.0, g < delta_ ? 1.0 : r_);
     ++stamp_[i];
     ++stamp_[j];
   }

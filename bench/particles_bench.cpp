@@ -16,7 +16,7 @@
 // about 40 minutes). Thread scaling: N = 10^6 to t = 10^3 (10^4 with --full) on
 // 1, 2, ... usable cores, K runs each (default 5), alternating. Writes FILE
 // (default particles_bench.csv), one row per process, and draws FILE.png with
-// scripts/plot_particles_bench.py (/usr/bin/python3 with matplotlib). --max-n
+// plots/plot_particles_bench.py (/usr/bin/python3 with matplotlib). --max-n
 // leaves out the larger sizes (and scales the thread runs down to it).
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -209,7 +209,7 @@ int parent(const Options& o) {
   std::cout << "wrote " << o.csv << '\n';
   const std::string png = o.png.empty() ? o.csv.substr(0, o.csv.rfind('.')) + ".png" : o.png;
   const std::string plot = std::string("/usr/bin/python3 ") + SHOCKGAS_SOURCE_DIR +
-                           "/scripts/plot_particles_bench.py '" + o.csv + "' '" + png + "'";
+                           "/plots/plot_particles_bench.py '" + o.csv + "' '" + png + "'";
   if (std::system(plot.c_str()) != 0)
     std::cerr << "no chart (needs /usr/bin/python3 with matplotlib): " << plot << '\n';
   return 0;

@@ -43,3 +43,11 @@
 #include "shockgas/particles/params.hpp"
 #include "shockgas/particles/run_result.hpp"
 #include "shockgas/particles/simulate.hpp"
+#include "shockgas/version.hpp"
+
+namespace shockgas {
+
+// The version of the library the program runs with (kVersion: the one it was compiled against).
+const char* library_version();
+
+}  // namespace shockgas

@@ -1,5 +1,6 @@
-# The pictures of scripts/plot_result.py (scripts/shockplot/): small scenes run
-# by the command and their figures inspected with pytest (tests/scripts/).
+# The pictures of plots/plot_result.py (plots/shockplot/), and the scripts of
+# scripts/paper/: small scenes run by the command and their figures inspected
+# with pytest (tests/scripts/).
 # Label `unit`. Skipped with a message where /usr/bin/python3 lacks pytest,
 # matplotlib, h5py or numpy (scripts/setup installs them).
 execute_process(COMMAND /usr/bin/python3 -c "import pytest, matplotlib, h5py, numpy"

@@ -37,7 +37,7 @@ double ring_length(py::dict& keys, std::size_t n) {
     initial_parameters().entry("L").set(ip, to_parameter(keys["L"]));
     PyDict_DelItem(keys.ptr(), py::str("L").ptr());
   }
-  return ip.L > 0 ? ip.L : static_cast<double>(n);
+  return shockgas::ring_length(ip.L, n);
 }
 
 py::dict bodies_dict(Bodies&& b) {

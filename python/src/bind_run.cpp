@@ -7,12 +7,14 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <variant>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "interruptible.hpp"
 #include "keywords.hpp"
+#include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/files/file_problem.hpp"
 #include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/jobs/run_scene.hpp"
@@ -105,21 +107,24 @@ py::dict outputs_dict(app::CapturedOutputs&& out, const std::string& directory) 
   return d;
 }
 
-// One scene (no sweep) kept in memory, and written to out_dir if given.
+// One scene (no sweep) kept in memory, and written to out_dir if given (its
+// directory locked and staged before any work, as the command's).
 app::CapturedOutputs capture_single(const app::Scene& scene, const std::string& out_dir, bool plots,
                                     ProgressRelay& relay) {
+  std::optional<app::RunDirectory> dir;
+  if (!out_dir.empty()) dir.emplace(out_dir, scene.name, false);
   const InitialCondition initial = app::build_initial(scene);
   app::preflight(scene, initial);
   auto listener = [&relay](const std::string& stage, double f, double t) { relay.report(stage, f, t); };
   app::CapturedOutputs captured;
-  if (out_dir.empty()) {
+  if (!dir) {
     app::ProgressBar bar(false, listener);
     app::compute_parts(scene, initial, bar, app::capture_into(captured));
   } else {
     app::RunOptions options;
     options.out_dir = out_dir, options.progress = false, options.plots = plots,
     options.on_progress = listener;
-    app::into_run_directory(out_dir, scene, options, [&](const std::filesystem::path& staging) {
+    app::into_run_directory(*dir, out_dir, scene, options, [&](const std::filesystem::path& staging) {
       app::run_single(scene, initial, staging, options, app::capture_into(captured));
     });
   }
@@ -131,11 +136,12 @@ app::CapturedOutputs capture_sweep(const app::Scene& scene, const std::string& o
                                    ProgressRelay& relay) {
   require(!out_dir.empty(), "sweep", std::string("(table)"),
           "a [sweep] scene with out=DIR: each variant is written into a directory of its own");
+  app::RunDirectory dir(out_dir, scene.name, false);
   app::RunOptions options;
   options.out_dir = out_dir, options.progress = false, options.plots = plots;
   options.on_progress = [&relay](const std::string& stage, double f, double t) { relay.report(stage, f, t); };
   app::SweepPlan plan = app::plan_sweep(scene);
-  app::into_run_directory(out_dir, scene, options, [&](const std::filesystem::path& staging) {
+  app::into_run_directory(dir, out_dir, scene, options, [&](const std::filesystem::path& staging) {
     app::run_sweep(scene, plan, staging, options);
   });
   return app::read_outputs(out_dir);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <csignal>
 #include <exception>
 #include <thread>
 
@@ -13,17 +14,53 @@ namespace {
 
 constexpr auto kPollInterval = std::chrono::milliseconds(50);
 
-// Counts the computations running in this process; the last one to end
-// forgets a pending interrupt request.
+// SIGTERM and SIGHUP at their default disposition would end the process at
+// once, leaving a run directory's staging directory and lock behind: while a
+// computation runs they only request an interrupt, and once the last
+// computation has unwound (its temporary files removed) the process ends by
+// the signal after all, as it was asked to. A disposition Python or the user
+// set is left alone (its handler runs in PyErr_CheckSignals, below).
+constexpr int kTermination[] = {SIGTERM, SIGHUP};
+struct sigaction g_default[2];
+bool g_ours[2] = {false, false};
+
+extern "C" void on_termination(int sig) { request_interrupt(InterruptMode::abort, sig); }
+
+void take_termination_signals() {
+  struct sigaction action {};
+  action.sa_handler = on_termination;
+  sigemptyset(&action.sa_mask);
+  for (int i = 0; i < 2; ++i) {
+    sigaction(kTermination[i], nullptr, &g_default[i]);
+    g_ours[i] = g_default[i].sa_handler == SIG_DFL;
+    if (g_ours[i]) sigaction(kTermination[i], &action, nullptr);
+  }
+}
+
+// Restores the dispositions; the signal that ended the computations, if one
+// of them did, is raised again.
+void give_back_termination_signals() {
+  const int received = interrupt_signal();
+  for (int i = 0; i < 2; ++i)
+    if (g_ours[i]) sigaction(kTermination[i], &g_default[i], nullptr);
+  for (int i = 0; i < 2; ++i)
+    if (g_ours[i] && received == kTermination[i]) std::raise(received);
+}
+
+// Counts the computations running in this process; the first takes the
+// termination signals, the last gives them back and forgets a pending
+// interrupt request.
 class Activity {
  public:
   Activity() {
     std::lock_guard lock(mutex());
-    ++count();
+    if (count()++ == 0) take_termination_signals();
   }
   ~Activity() {
     std::lock_guard lock(mutex());
-    if (--count() == 0) clear_interrupt();
+    if (--count() > 0) return;
+    give_back_termination_signals();
+    clear_interrupt();
   }
   Activity(const Activity&) = delete;
   Activity& operator=(const Activity&) = delete;

@@ -1,6 +1,6 @@
 #pragma once
 // Long computations called from Python: the GIL released, Ctrl-C honoured,
-// progress shown, and no signal handler installed.
+// progress shown, and no signal handler left installed.
 //
 // The computation runs on a worker thread while the calling thread waits. Every
 // 50 ms the waiting thread takes the GIL, runs Python's pending signal handlers
@@ -12,7 +12,10 @@
 // everything (a result directory's temporary files are removed on the way). The
 // worker is joined and the Python exception raised. The last computation of the
 // process to end forgets the request, so one Ctrl-C stops every computation
-// running then, and none started after them all.
+// running then, and none started after them all. SIGTERM and SIGHUP, where
+// they would end the process at once (their default disposition), stop the
+// computations the same way while any runs, and end the process once they
+// have unwound (a run directory's staging directory and lock removed).
 #include <pybind11/pybind11.h>
 
 #include <functional>

@@ -76,3 +76,22 @@ def test_the_module_installs_no_signal_handler(tmp_path):
     out = subprocess.run([sys.executable, "-c", code], env=python_env(), capture_output=True, text=True,
                          check=True)
     assert out.stdout.split() == ["True", "True"]
+
+
+# SIGTERM (or SIGHUP) to a Python process inside shockgas.run(out=...) left the
+# run's staging directory and lock beside out (finding of a hostile pass): the
+# run unwinds first, then the process ends by the signal as it was asked to.
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGHUP])
+def test_a_terminated_python_run_leaves_nothing_beside_its_output(sig, tmp_path):
+    child = subprocess.Popen([sys.executable, "-c", CHILD, "run", str(tmp_path / "out")], env=python_env(),
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline().strip() == "started"
+        time.sleep(1.0)  # well inside the run
+        child.send_signal(sig)
+        out, err = child.communicate(timeout=60)
+    finally:
+        child.kill()
+        child.wait()
+    assert child.returncode == -sig, out + err
+    assert sorted(os.listdir(tmp_path)) == [], out + err

@@ -118,3 +118,16 @@ def test_numpy_values_of_keywords_are_read_as_the_python_ones():
         shockgas.particles.simulate(x, v, samples=2**63)
     scene = {"initial": {"N": 64}, "particles": {"t_end": 10.0, "snapshots": np.array([2.5])}}
     assert shockgas.run(scene).attributes["/particles/snapshots/0@t"] == 2.5
+
+
+def test_ring_length_zero_means_the_number_of_bodies_as_in_the_library():
+    # The one rule of initial.L (ring_length in the library, whose own test is
+    # Engine.RingLengthZeroMeansTheNumberOfBodies): L = 0 is L = N, to the bit.
+    b = shockgas.particles.initial_bodies(N=300, seed=4)
+    keys = dict(r=0.5, t_end=10.0, samples=2)
+    zero = shockgas.particles.simulate(b.x, b.v, L=0.0, **keys)
+    n = shockgas.particles.simulate(b.x, b.v, L=300.0, **keys)
+    default = shockgas.particles.simulate(b.x, b.v, **keys)
+    for run in (n, default):
+        np.testing.assert_array_equal(zero.final.x, run.final.x)
+        np.testing.assert_array_equal(zero.final.v, run.final.v)

@@ -164,6 +164,9 @@ def main():
 
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
+
+        sys.path.insert(0, os.path.join(here, "..", "..", "plots"))
+        from shockplot.saving import save
     except ImportError as exc:
         print(f"draw_layers.py: {exc}", file=sys.stderr)
         return 3
@@ -199,8 +202,7 @@ def main():
                  f"{bad} against the layer order", fontsize=11, color="tab:red" if bad else "black")
     fig.tight_layout()
     os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
+    save(fig, out, "the #include lines of shockgas/**", dpi=110, tight=False)
     print(f"{out}: {len(mnodes)} modules, {len(rnodes)} rooms, {total} includes, {bad} against the layer order")
     return 1 if bad else 0
 

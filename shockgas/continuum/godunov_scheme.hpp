@@ -211,8 +211,13 @@ struct TimeLoop {
   double t_end = 0;           // final time [time], reached exactly
   double cfl = 0.5;           // Courant number: dt = cfl dx / max|speed|
   std::string solver;         // name for errors (the registered name)
-  ProgressCallback progress;  // called about every 1% of t_end
+  ProgressCallback progress;  // called about every 1% of t_end, and every kProgressSteps steps
 };
+
+// Steps between two progress reports at most: the reports are where a solve
+// stops on an interrupt or at the run's wall limit, and 1% of a long t_end can
+// be more steps than a run will ever take.
+inline constexpr std::size_t kProgressSteps = 1024;
 
 // Advances grid to loop.t_end with step(dt) -> StepSummary; returns the number of
 // steps. The last step is shortened so that t lands on t_end exactly. A
@@ -242,7 +247,7 @@ std::size_t advance(Grid& grid, const TimeLoop& loop, StepFn&& step) {
                          Grid::Physics::component_names[k], u[k]);
       }
     }
-    if (loop.progress && t >= next_report * loop.t_end) {
+    if (loop.progress && (t >= next_report * loop.t_end || steps % kProgressSteps == 0)) {
       loop.progress(t / loop.t_end, t);
       next_report = std::floor(100 * t / loop.t_end + 1) / 100;
     }

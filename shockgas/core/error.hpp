@@ -45,11 +45,18 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// text as a terminal shows it safely: every control character (C0, DEL and the
+// C1 range U+0080-U+009F) written as an escape ("\n", "\x1b", "\0"), so
+// that a value from a file or the command line can neither end a message early
+// (NUL) nor move the cursor or change the terminal; with lines, newlines and
+// tabs are kept (a scene's text, shown as it is). Other bytes (UTF-8) are kept.
+std::string printable(const std::string& text, bool lines = false);
+
 // Value as text for error messages (shortest round-trip form for doubles).
 std::string to_text(double value);
 // A double to `digits` significant digits ("%.*g": 4.5e+12, 3035.43).
 std::string to_text(double value, int digits);
-inline std::string to_text(const std::string& value) { return "\"" + value + "\""; }
+inline std::string to_text(const std::string& value) { return "\"" + printable(value) + "\""; }
 template <class Int>
 requires std::is_integral_v<Int> std::string to_text(Int value) { return std::to_string(value); }
 

@@ -16,6 +16,8 @@
 #include <thread>
 #include <vector>
 
+#include "shockgas/core/thread_start.hpp"
+
 namespace shockgas {
 
 template <class Work>
@@ -37,7 +39,24 @@ void run_indices(std::size_t n, std::size_t threads, Work&& work) {
   const std::size_t team = std::max<std::size_t>(1, std::min(threads, n));
   std::vector<std::thread> pool;
   pool.reserve(team - 1);
-  for (std::size_t i = 1; i < team; ++i) pool.emplace_back(worker);
+  // The threads wait until all are started: a thread the system refuses stops
+  // the pool before any job runs (thread_start.hpp).
+  std::atomic<bool> go{false};
+  const auto member = [&] {
+    go.wait(false);
+    worker();
+  };
+  try {
+    for (std::size_t i = 1; i < team; ++i) pool.push_back(start_thread(member));
+  } catch (...) {
+    next = n;
+    go = true;
+    go.notify_all();
+    for (std::thread& th : pool) th.join();
+    throw;
+  }
+  go = true;
+  go.notify_all();
   worker();
   for (std::thread& th : pool) th.join();
   if (error) std::rethrow_exception(error);

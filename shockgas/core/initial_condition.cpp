@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -89,13 +90,25 @@ const ParameterTable<InitialParams>& initial_parameters() {
   return table;
 }
 
+double ring_length(double L, std::size_t N) { return L == 0 ? static_cast<double>(N) : L; }
+
 double domain_length(const InitialParams& p) {
   if (p.velocities == Velocities::expression) return p.domain;
-  return p.L > 0 ? p.L : static_cast<double>(p.N);
+  return ring_length(p.L, p.N);
 }
 
 void validate(const InitialParams& p) {
   initial_parameters().check(p);
+  // Sums over the bodies stay finite (positions i L / N, the momentum, the
+  // temperature sum m v^2): bounds far beyond any physics, refused here rather
+  // than as an infinity inside the work, under a name the scene never wrote.
+  const double n = std::max(static_cast<double>(p.N), 1.0), most = std::numeric_limits<double>::max() / 64;
+  require(p.L <= most / n, "initial.L", p.L,
+          "at most " + to_text(most / n, 3) + " for initial.N = " + std::to_string(p.N) +
+              " (the positions, up to N L, must stay within the range of doubles)");
+  require(p.amplitude <= std::sqrt(most / n), "initial.amplitude", p.amplitude,
+          "at most " + to_text(std::sqrt(most / n), 3) + " for initial.N = " + std::to_string(p.N) +
+              " (the temperature, a sum of N v^2, must stay within the range of doubles)");
   if (p.velocities == Velocities::file) {
     require(!p.file.empty() && std::filesystem::is_regular_file(p.file), "initial.file", p.file,
             "an existing text file with columns x v [m] (velocities = \"file\")");
@@ -121,13 +134,19 @@ Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization) {
     stream.next(p.N, b.x.data(), b.v.data(), b.m.data());
     return b;
   }
-  const Expression v0(p.v0, "initial.v0"), rho0(p.rho0, "initial.rho0");
-  const double dx = domain_length(p) / p.N;
-  for (std::size_t i = 0; i < p.N; ++i) {
-    const double x = (i + 0.5) * dx;
-    b.push_back(x, v0(x), rho0(x) * dx);
-  }
+  b = lattice_bodies(make_initial_field(p, realization), p.N);
   if (p.remove_mean) subtract_mean(b);
+  return b;
+}
+
+Bodies lattice_bodies(const InitialField& f, std::size_t N) {
+  Bodies b;
+  b.reserve(N);
+  const double dx = f.length / N;
+  for (std::size_t i = 0; i < N; ++i) {
+    const double x = (i + 0.5) * dx;
+    b.push_back(x, f.v0(x), f.rho0(x) * dx);
+  }
   return b;
 }
 

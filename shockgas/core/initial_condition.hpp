@@ -55,13 +55,23 @@ struct InitialField {
   bool from_bodies() const { return !v0; }
 };
 
-// Domain length of the scene: domain for expressions, else L (or N if L = 0).
+// The ring's length for N bodies: L, or N (mean spacing 1) where L = 0. The one
+// rule of initial.L, for scenes, simulate(bodies, L, ...) and the Python module.
+double ring_length(double L, std::size_t N);
+
+// Domain length of the scene: domain for expressions, else ring_length(L, N).
 double domain_length(const InitialParams& p);
 
 // The particles of realization `realization` (positions in [0, length)).
 // For velocities = "expression" the N particles sit on a lattice with masses
 // rho0(x) * length / N and velocities v0(x).
 Bodies make_initial_bodies(const InitialParams& p, std::uint64_t realization = 0);
+
+// N bodies on the lattice of pointwise data f (f.v0 and f.rho0 given, L =
+// f.length): positions x_i = (i + 1/2) L / N, velocities v0(x_i), masses
+// rho0(x_i) L / N. What make_initial_bodies gives for velocities = "expression"
+// (before remove_mean), and the lab's scenes (lab/engine/lab_scenes.hpp).
+Bodies lattice_bodies(const InitialField& f, std::size_t N);
 
 // The continuum's view of realization `realization`: the expressions when
 // velocities = "expression", else the particles as point masses.

@@ -1,6 +1,7 @@
 #pragma once
 // How each parameter type is read from a ParameterValue, checked, written back
 // and described (see parameters.hpp, which includes this file).
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -54,6 +55,25 @@ struct ParameterType<std::uint64_t> {
   }
   static ParameterValue write(std::uint64_t x) { return ParameterValue::of(static_cast<std::int64_t>(x)); }
 };
+
+// std::size_t where it is a type of its own (32-bit targets such as the lab's
+// WebAssembly build; on 64-bit Linux it is std::uint64_t, above): an integer
+// that must also fit in std::size_t.
+#if SIZE_MAX != UINT64_MAX
+template <>
+struct ParameterType<std::size_t> {
+  using Wide = ParameterType<std::uint64_t>;
+  static std::string kind() { return Wide::kind(); }
+  static std::string allowed_text(const Allowed& r) { return Wide::allowed_text(r); }
+  static std::size_t read(const ParameterValue& v, const std::string& key, const Allowed& r) {
+    const std::uint64_t x = Wide::read(v, key, r);
+    if (x > SIZE_MAX) throw InputError(key, v.written, "at most " + std::to_string(SIZE_MAX));
+    return static_cast<std::size_t>(x);
+  }
+  static void check(std::size_t x, const std::string& key, const Allowed& r) { Wide::check(x, key, r); }
+  static ParameterValue write(std::size_t x) { return Wide::write(x); }
+};
+#endif
 
 template <>
 struct ParameterType<bool> {

@@ -123,6 +123,8 @@ std::uint64_t read_integer(const ParameterValue& v, const std::string& key, cons
   else if (v.type == ParameterValue::Type::number && v.number == std::floor(v.number) &&
            std::abs(v.number) < 9e18)
     x = v.number;
+  else if (v.type == ParameterValue::Type::number && v.number == std::floor(v.number))
+    refuse(key, v, integer_text(r) + " (a whole float only below 9e18: write a larger one as an integer)");
   else
     refuse(key, v, integer_text(r));
   if (x < 0 || !r.bounds.contains(x)) refuse(key, v, integer_text(r));

@@ -76,15 +76,30 @@ void check_arguments(BodiesView b, double t) {
 
 }  // namespace
 
+namespace {
+
+// n elements left uninitialised (each is written before it is read): std::make_unique_for_overwrite,
+// or the same by new T[n] where the standard library lacks it (libc++ 14, the lab's WebAssembly build).
+template <class T>
+std::unique_ptr<T[]> uninitialised(std::size_t n) {
+#if defined(__cpp_lib_smart_ptr_for_overwrite)
+  return std::make_unique_for_overwrite<T[]>(n);
+#else
+  return std::unique_ptr<T[]>(new T[n]);
+#endif
+}
+
+}  // namespace
+
 StickyHull::StickyHull(std::size_t n, double L, double t, bool masses)
     : n_(n),
       L_(L),
       t_(t),
       masses_(masses),
-      c0_(std::make_unique_for_overwrite<double[]>(n)),
-      v_(std::make_unique_for_overwrite<double[]>(n)),
-      m_(masses ? std::make_unique_for_overwrite<double[]>(n) : nullptr),
-      count_(std::make_unique_for_overwrite<std::uint32_t[]>(n)) {}
+      c0_(uninitialised<double>(n)),
+      v_(uninitialised<double>(n)),
+      m_(masses ? uninitialised<double>(n) : nullptr),
+      count_(uninitialised<std::uint32_t>(n)) {}
 
 namespace {
 

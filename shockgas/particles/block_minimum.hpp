@@ -9,9 +9,9 @@
 // (as its integer key, see key_of) and the first lane holding it: the same for
 // every path, to the bit, because a minimum and an equality compare are exact
 // (test EventTree.ReplaceThreeIsSetAndRefresh, run by both builds).
-#include <bit>
 #include <cstdint>
 
+#include "shockgas/core/bit_cast.hpp"
 #include "shockgas/particles/slot_times.hpp"
 
 #if defined(__AVX512F__)
@@ -28,7 +28,7 @@ namespace shockgas::particles::detail {
 // minimum, which matters on the tree's serial chains. (A NaN would sort after
 // +inf: never.)
 using TimeKey = std::int64_t;
-inline TimeKey key_of(double t) { return std::bit_cast<TimeKey>(t); }
+inline TimeKey key_of(double t) { return shockgas::bit_cast<TimeKey>(t); }
 
 // (t, slot) := (u, at) if u < t: compare and two conditional moves. Written as
 // assembly on x86-64 because GCC 12 turns the equivalent ternaries into

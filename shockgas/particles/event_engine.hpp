@@ -115,25 +115,8 @@ class EventEngine {
   // accident can hang it.
   template <class Watch>
   EngineStop run_until(double t_stop, Watch&& watch) {
-    while (tree_.top_time() <= t_stop) {
-      const std::size_t i = tree_.top();
-      prefetch(i);
-      // Likely the event after this one (2/3 of the time): its memory loads
-      // overlap this event's work. Pays off only when the arrays miss the caches.
-      if (tree_.hinting()) prefetch(std::min(tree_.hint(), n_ - 1));
-      const double t = tree_.top_time();
-      stall_ = t - now_ <= step_scale_ * std::max(1.0, std::abs(now_)) ? stall_ + 1 : 0;
-      if (stall_ >= step_limit_) return step_scale_ > 0 ? EngineStop::collapse : EngineStop::stall;
-      collide(i);
-      if ((++count_[3] & (check_every - 1)) == 0) {
-        if (now_ - window_start_ <= window_scale_ * std::max(1.0, std::abs(now_)))
-          return EngineStop::collapse;
-        window_start_ = now_;
-        if (!watch(now_, count_[3])) return EngineStop::halted;
-      }
-    }
-    now_ = std::max(now_, t_stop);
-    return EngineStop::reached;
+    if (rule_.law) return run_queue<true>(t_stop, watch);
+    return run_queue<false>(t_stop, watch);
   }
 
   std::size_t size() const { return n_; }
@@ -295,7 +278,33 @@ class EventEngine {
     return g > 0 ? t : EventTree::never;
   }
 
+  // run_until's loop, for a rule with a restitution law or without
+  // (CollisionRule::restitution).
+  template <bool HasLaw, class Watch>
+  EngineStop run_queue(double t_stop, Watch& watch) {
+    while (tree_.top_time() <= t_stop) {
+      const std::size_t i = tree_.top();
+      prefetch(i);
+      // Likely the event after this one (2/3 of the time): its memory loads
+      // overlap this event's work. Pays off only when the arrays miss the caches.
+      if (tree_.hinting()) prefetch(std::min(tree_.hint(), n_ - 1));
+      const double t = tree_.top_time();
+      stall_ = t - now_ <= step_scale_ * std::max(1.0, std::abs(now_)) ? stall_ + 1 : 0;
+      if (stall_ >= step_limit_) return step_scale_ > 0 ? EngineStop::collapse : EngineStop::stall;
+      collide<HasLaw>(i);
+      if ((++count_[3] & (check_every - 1)) == 0) {
+        if (now_ - window_start_ <= window_scale_ * std::max(1.0, std::abs(now_)))
+          return EngineStop::collapse;
+        window_start_ = now_;
+        if (!watch(now_, count_[3])) return EngineStop::halted;
+      }
+    }
+    now_ = std::max(now_, t_stop);
+    return EngineStop::reached;
+  }
+
   // The collision at the top of the global queue.
+  template <bool HasLaw>
   void collide(std::size_t i) {
     const std::size_t j = right(i);
     assert(j != none);
@@ -311,9 +320,10 @@ class EventEngine {
         return after_merge(i, j);
       }
       last_x_ = meet(i, j, t);
-      dissipated_ += bounce(body_[i].v, body_[j].v, mass_[i], mass_[j], rule_.restitution(kind));
+      const double r = rule_.template restitution<HasLaw>(kind, g);
+      dissipated_ += bounce(body_[i].v, body_[j].v, mass_[i], mass_[j], r);
     } else {
-      ++count_[collide_equal(i, j, t, dissipated_, last_x_)];
+      ++count_[collide_equal<HasLaw>(i, j, t, dissipated_, last_x_)];
     }
     refresh(left(i), i, j, true);
   }
@@ -331,12 +341,15 @@ class EventEngine {
   // The collision of equal-mass bodies i and j = right(i) at time t: adds the
   // energy lost to dissipated, stores the contact point in x; returns the
   // CollisionKind index (inelastic 0, elastic 1).
+  template <bool HasLaw>
   int collide_equal(std::size_t i, std::size_t j, double t, double& dissipated, double& x) {
     x = meet(i, j, t);
     double& v = body_[i].v;
     double& u = body_[j].v;
-    const bool sub = v - u < rule_.delta;
-    dissipated += bounce_equal(v, u, m0_, sub ? 1.0 : rule_.r);
+    const double g = v - u;
+    const bool sub = g < rule_.delta;
+    const CollisionKind kind = sub ? CollisionKind::elastic : CollisionKind::inelastic;
+    dissipated += bounce_equal(v, u, m0_, rule_.template restitution<HasLaw>(kind, g));
     return sub;
   }
   // Body j = right(i) joins body i at time t (Linked): velocities, masses and

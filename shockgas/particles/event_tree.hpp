@@ -36,6 +36,7 @@
 #include <limits>
 #include <vector>
 
+#include "shockgas/core/bit_cast.hpp"
 #include "shockgas/particles/block_minimum.hpp"
 #include "shockgas/particles/slot_times.hpp"
 
@@ -89,7 +90,8 @@ class EventTree {
   }
   // The same with node storage from the caller: nodes(number of blocks) each.
   void attach(SlotTimes& times, std::size_t first, std::size_t last, Key* keys, std::uint32_t* wins) {
-    assert(first < times.size() && last < times.size() && times.size() < (std::size_t{1} << 32));
+    assert(first < times.size() && last < times.size() &&
+           std::uint64_t{times.size()} < (std::uint64_t{1} << 32));
     times_ = &times;
     time_ = times.data();
     first_ = first;
@@ -127,7 +129,7 @@ class EventTree {
   std::size_t last() const { return last_; }
   double time(std::size_t slot) const { return time_[slot]; }
   std::size_t top() const { return win_[1]; }
-  double top_time() const { return std::bit_cast<double>(key_[1]); }
+  double top_time() const { return shockgas::bit_cast<double>(key_[1]); }
 
   void set(std::size_t slot, double t) { time_[slot] = t; }
   // With hinting() (trees of hint_slots slots or more, too large for the caches):
@@ -300,7 +302,8 @@ class EventTree {
       key_[k] = t;
       win_[k] = slot;
     };
-    static_assert(sizeof(std::size_t) == 8);
+    // std::size_t: 8 bytes on 64-bit hosts, 4 in the lab's WebAssembly build.
+    static_assert(sizeof(std::size_t) >= 4);
     switch (levels) {  // the tree has fewer than 2^31 nodes
       // clang-format off
       case 30: level(); [[fallthrough]]; case 29: level(); [[fallthrough]]; case 28: level(); [[fallthrough]];

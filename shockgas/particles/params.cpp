@@ -2,6 +2,7 @@
 #include "shockgas/particles/params.hpp"
 
 #include "shockgas/core/error.hpp"
+#include "shockgas/particles/restitution_laws.hpp"
 
 namespace shockgas::particles {
 
@@ -18,6 +19,11 @@ ParameterTable<ParticleParams> declare() {
         "velocity threshold below which collisions of r > 0 are sub-threshold; 0 = none",
         allowed(at_least(0)));
   t.add(&P::subthreshold, "subthreshold", "", "what a sub-threshold collision does (r > 0)");
+  t.add(
+      &P::restitution_law, "restitution_law", "",
+      "restitution r(g) of the inelastic collisions (approach speed g >= delta; r > 0): a registered law; " +
+          to_text(std::string(kConstantRestitution)) + " = r for every g",
+      one_of(restitution_law_names));
   t.add(&P::geometry, "geometry", "", "periodic ring of length L, or open line");
   t.add(&P::solver, "solver", "", "event-driven simulation, or the exact sticky solution by the convex hull",
         described(choices_text(enum_choices<ParticleSolver>()) + " (" + name_of(ParticleSolver::hull) +
@@ -50,7 +56,8 @@ ParameterTable<ParticleParams> declare() {
             "no limit (event engine only)",
         allowed(at_least(0)));
   t.add(&P::max_wall_seconds, "max_wall_seconds", "s",
-        "stop a realization after this wall-clock time; 0 = no limit (event engine only)",
+        "stop a realization after this wall-clock time (and fail a continuum solve of the scene that takes "
+        "longer); 0 = no limit (event engine only)",
         allowed(at_least(0)));
   return t;
 }
@@ -66,6 +73,9 @@ void validate(const ParticleParams& p) {
   parameters().check(p);
   require(p.solver != ParticleSolver::hull || p.r == 0.0, "particles.solver", name_of(p.solver),
           "\"" + name_of(ParticleSolver::hull) + "\" only with particles.r = 0 (the exact sticky solution)");
+  require(p.restitution_law == kConstantRestitution || p.r > 0, "particles.restitution_law",
+          p.restitution_law,
+          to_text(std::string(kConstantRestitution)) + " with particles.r = 0 (every collision merges)");
   for (double t : p.snapshots)
     require(t <= p.t_end, "particles.snapshots", t, "times in [0, particles.t_end]");
   // The hull is exact at each sample time: it has no collisions to count and no safe points to stop at.
@@ -77,7 +87,7 @@ void validate(const ParticleParams& p) {
 }
 
 CollisionRule collision_rule(const ParticleParams& p) {
-  return {p.r, p.delta, p.subthreshold == Subthreshold::sticky};
+  return {p.r, p.delta, p.subthreshold == Subthreshold::sticky, restitution_law(p)};
 }
 
 }  // namespace shockgas::particles

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "shockgas/core/parameters.hpp"
@@ -15,6 +16,10 @@ enum class Subthreshold { elastic, sticky };
 constexpr std::array<EnumName<Subthreshold>, 2> enum_names(Subthreshold) {
   return {{{Subthreshold::elastic, "elastic"}, {Subthreshold::sticky, "sticky"}}};
 }
+
+// particles.restitution_law of the constant particles.r, the default
+// (restitution_laws.hpp registers it).
+inline constexpr char kConstantRestitution[] = "constant";
 
 enum class Geometry { ring, line };
 constexpr std::array<EnumName<Geometry>, 2> enum_names(Geometry) {
@@ -45,6 +50,7 @@ struct ParticleParams {
   double r = 0.9;       // 0 = aggregation (every collision merges)
   double delta = 1e-2;  // 0 = no threshold
   Subthreshold subthreshold = Subthreshold::elastic;
+  std::string restitution_law = kConstantRestitution;  // a registered law's name
   Geometry geometry = Geometry::ring;
   ParticleSolver solver = ParticleSolver::events;
   Schedule schedule = Schedule::automatic;
@@ -70,7 +76,8 @@ const ParameterTable<ParticleParams>& parameters();
 // within t_end).
 void validate(const ParticleParams& p);
 
-// The collision rule of these parameters: r, delta and the sub-threshold kind.
+// The collision rule of these parameters: r, delta, the sub-threshold kind and
+// the restitution law.
 CollisionRule collision_rule(const ParticleParams& p);
 
 }  // namespace shockgas::particles

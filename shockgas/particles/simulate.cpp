@@ -40,7 +40,7 @@ namespace {
 void check_bodies(const Bodies& b, double L, bool ring) {
   require(b.size() >= 2 && b.v.size() == b.size() && b.m.size() == b.size(), "initial.N", b.size(),
           "at least 2 bodies with x, v and m each");
-  require(std::isfinite(L) && L > 0, "initial.L", L, "a finite length > 0");
+  require(std::isfinite(L) && L > 0, "initial.L", L, "a finite length > 0 (0: the number of bodies)");
   for (std::size_t i = 0; i < b.size(); ++i) {
     const bool finite = std::isfinite(b.x[i]) && std::isfinite(b.v[i]);
     const bool mass = std::isfinite(b.m[i]) && b.m[i] > 0;
@@ -263,7 +263,7 @@ void check_schedule(const InitialCondition& initial, const ParticleParams& p) {
 
 RunResult simulate(const Bodies& initial, double L, const ParticleParams& p, const ProgressCallback& progress,
                    const StateSink* sink, const RunCheckpoints& checkpoints) {
-  return simulate_bodies(initial, L, p, progress, sink, checkpoints);
+  return simulate_bodies(initial, ring_length(L, initial.size()), p, progress, sink, checkpoints);
 }
 
 RunResult simulate(const InitialCondition& initial, std::uint64_t realization, const ParticleParams& p,

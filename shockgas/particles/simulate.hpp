@@ -24,7 +24,8 @@ namespace shockgas::particles {
 
 // One run from `initial` (sorted by x, masses > 0; ring: x in [0, L)) to
 // params.t_end, or until it stops early (see RunStop). L: ring length, or on the
-// line the extent used for the mean spacing L / N of the cluster criteria.
+// line the extent used for the mean spacing L / N of the cluster criteria; L = 0
+// means N, as initial.L does (ring_length, shockgas/core/initial_condition.hpp).
 // progress(fraction, t) is called at most about every 0.1 s of work. Where time
 // windows apply, their domains run on params.threads threads (0 = every usable
 // core, usable_cores()); the result is the same to the bit for any number.

@@ -12,23 +12,25 @@
 #include <thread>
 #include <vector>
 
+#include "shockgas/core/thread_start.hpp"
+
 namespace shockgas::particles::detail {
 
 class ThreadTeam {
  public:
+  // RunError (core/thread_start.hpp) if the system refuses a member: those
+  // started are joined first.
   explicit ThreadTeam(std::size_t size) {
-    for (std::size_t k = 1; k < size; ++k) members_.emplace_back([this, k] { serve(k); });
+    try {
+      for (std::size_t k = 1; k < size; ++k) members_.push_back(start_thread([this, k] { serve(k); }));
+    } catch (...) {
+      close();
+      throw;
+    }
   }
   ThreadTeam(const ThreadTeam&) = delete;
   ThreadTeam& operator=(const ThreadTeam&) = delete;
-  ~ThreadTeam() {
-    {
-      std::lock_guard lock(mutex_);
-      closing_ = true;
-    }
-    wake_.notify_all();
-    for (std::thread& t : members_) t.join();
-  }
+  ~ThreadTeam() { close(); }
 
   std::size_t size() const { return members_.size() + 1; }
 
@@ -58,6 +60,15 @@ class ThreadTeam {
       std::lock_guard lock(mutex_);
       if (!error_) error_ = std::current_exception();
     }
+  }
+  void close() {
+    {
+      std::lock_guard lock(mutex_);
+      closing_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : members_) t.join();
+    members_.clear();
   }
   void serve(std::size_t k) {
     std::size_t seen = 0;

@@ -79,11 +79,7 @@ template <>
 class DomainStepper<false> {
  public:
   using Engine = EventEngine<false>;
-  explicit DomainStepper(Engine& e) : e_(e) {
-    const CollisionRule& rule = e.rule();
-    half_ = {0.5 * (1.0 + rule.r), 0.5 * (1.0 + 1.0)};  // bounce_equal's (1 + r) / 2, inelastic and elastic
-    loss_ = {0.25 * (1.0 - rule.r * rule.r) * e.m0_, 0.25 * (1.0 - 1.0 * 1.0) * e.m0_};
-  }
+  explicit DomainStepper(Engine& e) : e_(e), bounce_(e.rule(), e.m0_) {}
 
   // The domain's next collision if its time is <= limit; false when there is
   // none, or when the domain stalls (then stalled is set).
@@ -111,9 +107,9 @@ class DomainStepper<false> {
     const double v = body[i].v, u = body[j].v;
     const double g = v - u;
     const std::size_t sub = g < e_.rule_.delta;
-    const double dv = by_kind(g, half_[0] * g, half_[1] * g);
-    const double v1 = v - dv, u1 = u + dv;
-    d.dissipated += loss_[sub] * g * g;
+    const double dv = by_kind(g, bounce_[0].dv(g), bounce_[1].dv(g));
+    const auto [v1, u1] = exchange(v, u, dv);
+    d.dissipated += bounce_[sub].lost(g);
     ++d.count[sub];
     const double xj = Wraps && j == 0 ? x - e_.L_ : x;
     body[i] = {x, v1, t};
@@ -159,7 +155,7 @@ class DomainStepper<false> {
   }
 
   Engine& e_;
-  std::array<double, 2> half_, loss_;  // by sub-threshold: (1 + r) / 2 and (1 - r^2) m / 4
+  EqualMassBounces bounce_;  // by sub-threshold: inelastic (r), elastic (1)
 };
 
 // Merges only (r = 0).

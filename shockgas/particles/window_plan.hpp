@@ -3,14 +3,13 @@
 // window plan and how long each surely stays open. Used by WindowScheduler.
 //
 // Causality. With equal masses and 0 <= r <= 1 a collision replaces the two
-// velocities by convex combinations of themselves, v' = (1 - r)/2 v + (1 + r)/2 u
-// and u' = (1 + r)/2 v + (1 - r)/2 u; a merge (r = 0 with unequal masses too)
-// replaces them by their mass-weighted mean. So from time T on every velocity
-// stays in [v_min, v_max] of time T, and a pair with gap G at T cannot meet
-// before T + G / (v_max - v_min). Until then such a pair, a cut, separates the
-// bodies on its two sides: no collision on one side can change a body on the
-// other. (An elastic bounce of unequal masses is not convex: a light body can
-// leave the range, so those rules keep the global queue.)
+// velocities by convex combinations of themselves (collision.hpp); a merge (r = 0
+// with unequal masses too) replaces them by their mass-weighted mean. So from
+// time T on every velocity stays in [v_min, v_max] of time T, and a pair with gap
+// G at T cannot meet before T + G / (v_max - v_min). Until then such a pair, a
+// cut, separates the bodies on its two sides: no collision on one side can change
+// a body on the other. (An elastic bounce of unequal masses is not convex: a light
+// body can leave the range, so those rules keep the global queue.)
 //
 // Cuts: near every D-th pair (D about domain_bodies), the pair with the widest gap
 // among the D/8 pairs on either side. Cuts whose bound is below a quarter of the
@@ -242,10 +241,13 @@ class WindowPlanner {
 // inelastic collapse must be detected.
 inline std::string window_obstacle(std::size_t n, bool equal_masses, const CollisionRule& rule) {
   if (rule.collapse_possible())
-    return "inelastic collapse is possible (delta = 0, 0 < r < 1): detecting it needs the global time "
-           "order; windows would need a collapse test per domain";
+    return "inelastic collapse is possible (delta = 0 and 0 < r < 1, or a restitution law): detecting it "
+           "needs the global time order; windows would need a collapse test per domain";
   if (n < WindowPlanner<false>::min_domains * WindowPlanner<false>::min_domain_bodies)
     return "fewer than 1024 bodies: too few to split";
+  if (rule.law && !rule.merges_only())
+    return "a restitution law r(g): the windows' step computes the two bounces of a constant r once; "
+           "windows would need r(g) per collision in DomainStepper";
   if (rule.merges_only() || (equal_masses && !rule.can_merge())) return "";
   const char* need =
       "; windows would need a bound on how far a velocity can leave its range in a window (or cuts checked "

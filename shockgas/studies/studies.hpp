@@ -2,7 +2,7 @@
 // The method studies behind docs/performance.md: work-precision charts and
 // stability maps of every continuum solver and of the particle engine. Each
 // study writes CSV files into the output directory; `shockgas bench` runs them
-// and then draws the charts from those files (scripts/plot_bench.py).
+// and then draws the charts from those files (plots/plot_bench.py).
 #include <string>
 
 namespace shockgas::studies {

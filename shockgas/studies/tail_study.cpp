@@ -23,9 +23,6 @@ namespace shockgas::studies {
 
 namespace {
 
-// The jackknife's groups: enough for an error known to ~7% (sqrt(1/(2 G))).
-constexpr std::size_t kJackknifeGroups = 100;
-
 // CPU seconds of the calling thread.
 double thread_cpu_seconds() {
   timespec ts{};
@@ -144,7 +141,7 @@ TailEnsemble run_size(std::size_t N, const TailStudyOptions& o) {
   InitialParams ip;
   ip.N = N;
   ip.seed = o.seed;
-  TailEnsemble ensemble(o.realizations, kJackknifeGroups);
+  TailEnsemble ensemble(o.realizations, kTailJackknifeGroups);
   std::size_t done = 0;
   std::mutex mutex;
   run_indices(o.realizations, o.threads == 0 ? usable_cores() : o.threads, [&](std::size_t k) {

@@ -50,6 +50,9 @@ inline constexpr std::size_t kTailMinN = 100;
 inline constexpr double kTailMaxN = 4e9;
 std::string tail_sizes_allowed();
 
+// The jackknife's groups: enough for an error known to ~7% (sqrt(1/(2 G))).
+inline constexpr std::size_t kTailJackknifeGroups = 100;
+
 // The files a study writes into its output directory.
 inline constexpr std::array<const char*, 3> kTailFiles = {"tail_phi.csv", "tail_windows.csv",
                                                           "tail_runs.csv"};

@@ -18,6 +18,7 @@
 #include "run_dir_checks.hpp"
 #include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/report/plots.hpp"
 #include "two_runs.hpp"
 
 namespace shockgas::app {
@@ -128,7 +129,7 @@ TEST(FullDisk, ADiskThatFillsWhileThePlotsAreDrawnFailsTheRunOnce) {
                           "    f.write('x' * 100000)\n");
   for (const bool with_real_script : {true, false}) {
     if (with_real_script && !real) continue;
-    SCOPED_TRACE(with_real_script ? "scripts/plot_result.py" : "a script that fails with a traceback");
+    SCOPED_TRACE(with_real_script ? "plots/plot_result.py" : "a script that fails with a traceback");
     SmallDisk disk(with_real_script ? "fulldisk-plots-real" : "fulldisk-plots-generic", "4m");
     REQUIRE_MOUNTED(disk);
     const TwoRuns s = alpha_done(disk.dir());
@@ -212,7 +213,7 @@ TEST(FullDisk, ABenchChartThatCannotBeWrittenLeavesNoPartOfIt) {
              "sine,godunov,1.1,yes,0.5,40,2.0,3.0,0.1,0.5,blew up\n");
   disk.fill(8192);  // room for the chart's first bytes only
   const fs::path err = fresh_dir("fulldisk-bench-charts-err") / "stderr";
-  const std::string script = std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/plot_bench.py";
+  const std::string script = (plots_dir() / "plot_bench.py").string();
   const int status = std::system(
       ("/usr/bin/python3 '" + script + "' '" + disk.dir().string() + "' 2>'" + err.string() + "'").c_str());
   ASSERT_TRUE(WIFEXITED(status));

@@ -187,6 +187,33 @@ TEST(Integrity, InfoChecksEveryFileTheManifestLists) {
       << err;
 }
 
+// A manifest with a file's line taken out exempted that file (finding of a
+// hostile pass): a file of a name a run writes that its manifest leaves out
+// fails info, whichever file it is.
+TEST(Integrity, AManifestThatLeavesAFileOutIsRefused) {
+  for (const std::string file : {"report.html", "report.md", "result.h5", "summary.json"}) {
+    const fs::path run = copy_of_run("left-out-" + file);
+    const fs::path aside = run.parent_path() / file;
+    fs::rename(run / file, aside);
+    write_manifest(run, "alpha");  // the manifest as it is with that file's line taken out
+    fs::rename(aside, run / file);
+    const auto [code, err] = run_child({"info", run.string()});
+    EXPECT_EQ(code, 2) << file << "\n" << err;
+    EXPECT_NE(err.find(file), std::string::npos) << err;
+  }
+}
+
+// A manifest naming another scene than its result.h5 holds passed info
+// (finding of a hostile pass): it vouches for no file then.
+TEST(Integrity, AManifestOfAnotherSceneThanItsResultIsRefused) {
+  const fs::path run = copy_of_run("other-scene");
+  write_manifest(run, "beta");  // every size and SHA-256 right, the scene not
+  const auto [code, err] = run_child({"info", run.string()});
+  EXPECT_EQ(code, 2) << err;
+  EXPECT_NE(err.find("manifest.json names the scene \"beta\", the file holds \"alpha\""), std::string::npos)
+      << err;
+}
+
 // A result file that cannot be described does not keep info from checking the
 // other files (finding: a truncated result.h5 ended info before the edited
 // summary.json beside it was named).

@@ -15,6 +15,7 @@
 #include "run_command.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/report/plots.hpp"
 #include "shockgas/core/initial_condition.hpp"
 
 namespace shockgas::app {
@@ -148,11 +149,11 @@ TEST(OutputDocs, TheInitialDatasetsAreRealizationZeroAsDrawn) {
   EXPECT_EQ(h5.read("/initial/m"), drawn.m);
 }
 
-// The plot script reads only the result file (scripts/plot_result.py): it must find
+// The plot script reads only the result file (plots/plot_result.py): it must find
 // what it reads, and draw every picture the run's parts call for.
 TEST(OutputDocs, ThePlotScriptReadsARunsFiles) {
   const fs::path out = run_scene("plots", kFullScene);
-  const std::string script = std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/plot_result.py";
+  const std::string script = (plots_dir() / "plot_result.py").string();
   const int status = std::system(("/usr/bin/python3 '" + script + "' '" + out.string() + "'").c_str());
   if (WIFEXITED(status) && WEXITSTATUS(status) == 3)
     GTEST_SKIP() << "matplotlib or h5py missing for /usr/bin/python3";

@@ -45,6 +45,25 @@ TEST(PlotFailures, AFailedScriptIsOneWarningAndItsMessagesAreKeptInPlotsLog) {
   EXPECT_FALSE(fs::exists(s.out / "half.png.partial"));
 }
 
+// Plots that fail for memory half-way (finding of a hostile pass: under ulimit
+// -v two of three pictures and exit 0, the report silent about the third): the
+// report says that pictures are missing, and where the script's words are.
+TEST(PlotFailures, TheReportSaysThatPicturesAreMissing) {
+  const TwoRuns s = alpha_done(fresh_dir("plot-missing"));
+  const fs::path script = s.root / "failing_plot.py";
+  write_text(script,
+             "import os, sys\n"
+             "open(os.path.join(sys.argv[1], 'whole.png'), 'w').write('picture')\n"
+             "raise MemoryError()\n");
+  const auto [code, err] = run_child({"run", s.b.string(), "--out", s.out.string(), "-q", "--force"},
+                                     with_env({{"SHOCKGAS_PLOT_SCRIPT", script.string()}}));
+  EXPECT_EQ(code, 0) << err;
+  EXPECT_NE(read_text(s.out / "report.html")
+                .find("The plotting script failed: 1 picture was drawn before it stopped, and the others "
+                      "are missing."),
+            std::string::npos);
+}
+
 // What a script that succeeds says (a warning of its own) still reaches stderr.
 TEST(PlotFailures, WhatASucceedingScriptSaysIsPassedOn) {
   const TwoRuns s = alpha_done(fresh_dir("plot-says"));
@@ -96,16 +115,25 @@ int run_with_frames(const TwoRuns& s) {
 TEST(PlotFailures, AnInterruptedAnimationLeavesNothingWriting) {
   const TwoRuns s = alpha_done(fresh_dir("animate-stopped"));
   ASSERT_EQ(run_with_frames(s), 0);
-  const fs::path script = s.root / "writing_animation.py", partial = s.out / "animation.mp4.partial";
+  // The script draws into the directory it is given (animate's staging
+  // directory) and says where its file is.
+  const fs::path script = s.root / "writing_animation.py", where = s.root / "partial.path";
   write_text(
       script,
       "import subprocess, sys, time\n"
+      "partial = sys.argv[1] + '/animation.mp4.partial'\n"
       "subprocess.Popen(['sh', '-c', 'trap \"\" TERM; while :; do echo x >> \"$0\"; sleep 0.02; done', "
-      "sys.argv[1] + '/animation.mp4.partial'])\n"
-      "time.sleep(60)\n");
+      "partial])\n"
+      "open('" +
+          where.string() +
+          "', 'w').write(partial)\n"
+          "time.sleep(60)\n");
   Child animate({"animate", s.out.string()}, with_env({{"SHOCKGAS_ANIMATE_SCRIPT", script.string()}}));
-  for (int k = 0; k < 500 && !fs::exists(partial); ++k)
+  fs::path partial;
+  for (int k = 0; k < 500 && (partial.empty() || !fs::exists(partial)); ++k) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    partial = read_text(where);
+  }
   ASSERT_TRUE(fs::exists(partial)) << animate.err();
   kill(animate.pid(), SIGTERM);
   EXPECT_EQ(animate.wait(), 128 + SIGTERM) << animate.err();

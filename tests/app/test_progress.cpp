@@ -67,9 +67,9 @@ TEST(Progress, EachPhaseAfterTheParticlesHasOneLineWithItsTimeInOrder) {
   const std::vector<std::string> expected{"particles: analysis, writing result.h5",
                                           "continuum: solving hopf_lax, godunov",
                                           "comparison: clusters against the shocks of hopf_lax",
-                                          "writing result.h5, summary.json, report.md",
+                                          "writing result.h5, summary.json",
                                           "plots",
-                                          "writing report.html, manifest.json",
+                                          "writing report.md, report.html, manifest.json",
                                           "syncing, moving into " + s.out.string()};
   EXPECT_EQ(phases_said(run.err()), expected) << run.err();
   EXPECT_EQ(whole_run(s.out, "alpha"), "");
@@ -83,7 +83,7 @@ TEST(Progress, APhaseThatOutlastsTheFirstSecondIsSaid) {
                                      with_env({{"SHOCKGAS_PLOT_SCRIPT", s.script.string()}}));
   ASSERT_EQ(code, 0) << err;
   const std::vector<std::string> said = phases_said(err);
-  const std::vector<std::string> from_plots{"plots", "writing report.html, manifest.json",
+  const std::vector<std::string> from_plots{"plots", "writing report.md, report.html, manifest.json",
                                             "syncing, moving into " + s.out.string()};
   ASSERT_GE(said.size(), from_plots.size()) << err;
   EXPECT_EQ(std::vector<std::string>(said.end() - 3, said.end()), from_plots) << err;
@@ -119,6 +119,34 @@ TEST(Progress, QuietSaysNothing) {
   ASSERT_EQ(run.wait(), 0) << run.err();
   EXPECT_EQ(run.err(), "");
   EXPECT_EQ(whole_run(s.out, "alpha"), "");
+}
+
+// report.md gives every phase up to the plots with its wall time, the
+// particles' simulation first, also when --quiet says none: the plotting
+// script sleeps 1.5 s, so the plots' row holds at least that.
+TEST(Progress, ReportGivesEachPhaseWithItsTimeAlsoWhenQuiet) {
+  const ProgressRun s = setup("progress-report", 1.5);
+  const auto [code, err] = run_child({"run", s.scene.string(), "--out", s.out.string(), "-q"},
+                                     with_env({{"SHOCKGAS_PLOT_SCRIPT", s.script.string()}}));
+  ASSERT_EQ(code, 0) << err;
+  const std::string report = read_text(s.out / "report.md");
+  const std::string table = report.substr(report.find("## Time of each phase"));
+  std::vector<std::string> phases;
+  std::smatch m;
+  double plots = 0;
+  static const std::regex row(R"(\| ([^|]+) \| ([0-9]+\.[0-9]{2}) s \|)");
+  for (auto it = table.cbegin(); std::regex_search(it, table.cend(), m, row); it = m[0].second) {
+    phases.push_back(m[1].str());
+    if (m[1].str() == "plots") plots = std::stod(m[2].str());
+  }
+  const std::vector<std::string> expected{"particles: simulation",
+                                          "particles: analysis, writing result.h5",
+                                          "continuum: solving hopf_lax, godunov",
+                                          "comparison: clusters against the shocks of hopf_lax",
+                                          "writing result.h5, summary.json",
+                                          "plots"};
+  EXPECT_EQ(phases, expected) << report;
+  EXPECT_GE(plots, 1.5) << report;
 }
 
 // The rate is that of this process's work (finding: a run resumed at t = 1323

@@ -1,6 +1,6 @@
 #pragma once
 // Reads the comma-separated reference tables of tests/compare/data/ (made by
-// scripts/chernoff_reference.py): one row of numbers per line, '#' comments.
+// scripts/reference/chernoff_reference.py): one row of numbers per line, '#' comments.
 #include <fstream>
 #include <sstream>
 #include <stdexcept>

@@ -21,7 +21,7 @@ double envelope(cplx z, AiryPair w) {
 }
 
 TEST(Airy, AgreesWithScipyOnRingsAcrossEveryMethod) {
-  // Rings |z| = 0.3 ... 40 over all arguments (scripts/chernoff_reference.py):
+  // Rings |z| = 0.3 ... 40 over all arguments (scripts/reference/chernoff_reference.py):
   // Maclaurin, both path directions, the expansion and the connection formula,
   // and both sides of each switch. Tolerance: a path of up to ~30 Taylor steps
   // of a few eps each (airy.cpp), times 1 + |zeta| for the conditioning of the

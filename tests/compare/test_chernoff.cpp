@@ -26,7 +26,7 @@ double second_moment(double h) {
 
 TEST(Chernoff, GAgreesWithMpmathAt40Digits) {
   // tests/compare/data/chernoff_g_reference.csv: (1) of chernoff.hpp on other
-  // lines, with mpmath's Airy function and quadrature (scripts/chernoff_reference.py).
+  // lines, with mpmath's Airy function and quadrature (scripts/reference/chernoff_reference.py).
   // Tolerance: 1e-13 relative; the conditioning of exp(-(2/3) x^3) alone is
   // 2 x^3 eps ~ 1e-13 at x = 6. Measured: 3e-14.
   const auto rows = testing::read_reference_table("chernoff_g_reference.csv");

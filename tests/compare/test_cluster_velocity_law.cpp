@@ -92,7 +92,7 @@ TEST(ClusterVelocityLaw, MassIsConservedAndTheLawIsSymmetric) {
 }
 
 TEST(ClusterVelocityLaw, AgreesWithAnIndependentScipyImplementation) {
-  // tests/compare/data/cluster_mass_reference.csv from scripts/exact_laws.py: SciPy's
+  // tests/compare/data/cluster_mass_reference.csv from scripts/reference/exact_laws.py: SciPy's
   // Airy function and zeros, the zero sum completed by the density of the far zeros
   // (no small-mu expansion), ln g by a spline. Tolerance 1e-9 relative (the spline);
   // measured 4e-11.

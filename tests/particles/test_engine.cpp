@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "shockgas/core/error.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/particles/simulate.hpp"
 
@@ -173,6 +174,24 @@ TEST(Engine, OrderIsKeptAndFinalStateWrapped) {
       EXPECT_LE(out.final_state.x[i - 1], out.final_state.x[i]);
     }
   }
+}
+
+// L = 0 means N, as initial.L does in a scene and in the Python module
+// (ring_length): the same run as L = N, to the bit, and a negative L refused.
+TEST(Engine, RingLengthZeroMeansTheNumberOfBodies) {
+  InitialParams ip;
+  ip.N = 500;
+  ip.seed = 11;
+  const Bodies initial = make_initial_bodies(ip);
+  ParticleParams p;
+  p.r = 0.5;
+  p.t_end = 20.0;
+  p.samples = 3;
+  const RunResult zero = simulate(initial, 0.0, p), n = simulate(initial, 500.0, p);
+  EXPECT_EQ(zero.collisions, n.collisions);
+  EXPECT_EQ(zero.final_state.x, n.final_state.x);
+  EXPECT_EQ(zero.final_state.v, n.final_state.v);
+  EXPECT_THROW(simulate(initial, -1.0, p), InputError);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-"""scripts/fig4_collapse.py on synthetic sweeps whose answer is known: two
+"""scripts/paper/fig4_collapse.py on synthetic sweeps whose answer is known: two
 restitutions drawn from one distribution collapse to the noise floor, a shifted
 one does not, and a group's distance is the mean of its pairs' L1 distances
 (as analysis.velocity_collapse_distance defines it). Seeded."""
@@ -11,7 +11,7 @@ import h5py
 import numpy as np
 import pytest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts", "paper"))
 import fig4_collapse  # noqa: E402
 
 Z_MAX, BINS, TIMES = 4.0, 80, [1e3, 1e4, 1e5]

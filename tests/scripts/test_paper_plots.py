@@ -1,5 +1,5 @@
 """The pictures of docs/paper.md drawn from the kept runs (data/paper-runs/):
-scripts/plot_fig1_runs.py and scripts/plot_tail.py read those files as they
+scripts/paper/plot_fig1_runs.py and plots/plot_tail.py read those files as they
 are kept and draw every picture the page shows, the exact law black and dashed
 and named "exact", a label on every axis."""
 import os
@@ -11,14 +11,17 @@ import pytest
 
 matplotlib.use("Agg")
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-SCRIPTS = os.path.join(ROOT, "scripts")
+PLOTS = os.path.join(ROOT, "plots")
+PAPER = os.path.join(ROOT, "scripts", "paper")
 RUNS = os.path.join(ROOT, "data", "paper-runs")
-sys.path.insert(0, SCRIPTS)
+sys.path[:0] = [PLOTS, PAPER]
 import plot_tail  # noqa: E402
 
 
 def run(script, *args):
-    subprocess.run([sys.executable, os.path.join(SCRIPTS, script), *args], check=True)
+    """A script of scripts/paper/, or of plots/ (the tail's charts)."""
+    folder = PLOTS if os.path.exists(os.path.join(PLOTS, script)) else PAPER
+    subprocess.run([sys.executable, os.path.join(folder, script), *args], check=True)
 
 
 def test_fig1_picture_from_the_kept_runs(tmp_path):
@@ -111,11 +114,11 @@ def test_tables_from_the_kept_runs(capsys):
 
 
 def test_kept_series_read_back_as_written(tmp_path):
-    """T.csv (shockplot/kept_runs.py) holds every number of the result file
+    """T.csv (shockplot/run_files.py) holds every number of the result file
     exactly (repr of doubles) and leaves the samples not reached out."""
     import h5py
     import numpy as np
-    from shockplot import kept_runs
+    from shockplot import run_files
 
     t = np.array([1.0, 10.0, 100.0])
     each = np.array([[0.5, 1 / 3, np.nan], [0.25, 0.1 + 0.2, np.nan]])
@@ -124,13 +127,13 @@ def test_kept_series_read_back_as_written(tmp_path):
         h5["particles/T"] = np.array([0.375, np.pi, np.nan])
         h5["particles/T_stderr"] = np.array([0.125, np.e, np.nan])
         h5["particles/realizations/T"] = each
-        kept_runs.write_series(h5, str(tmp_path / kept_runs.SERIES))
-    rows = kept_runs.read_series(str(tmp_path))
+        run_files.write_series(h5, str(tmp_path / run_files.SERIES))
+    rows = run_files.read_series(str(tmp_path))
     assert [r["t"] for r in rows] == [1.0, 10.0]
     assert [r["T"] for r in rows] == [0.375, np.pi]
-    assert kept_runs.realization_columns(rows) == ["T_0", "T_1"]
+    assert run_files.realization_columns(rows) == ["T_0", "T_1"]
     assert [r["T_1"] for r in rows] == [0.25, 0.1 + 0.2]
-    assert kept_runs.T_series(str(tmp_path)) == [(1.0, 0.375, 0.125), (10.0, np.pi, np.e)]
+    assert run_files.T_series(str(tmp_path)) == [(1.0, 0.375, 0.125), (10.0, np.pi, np.e)]
 
 
 def test_fig2_draws_each_rule_and_delta_once(monkeypatch, tmp_path):
@@ -139,7 +142,7 @@ def test_fig2_draws_each_rule_and_delta_once(monkeypatch, tmp_path):
     import plot_fig2_runs
 
     figures = []
-    monkeypatch.setattr(plot_fig2_runs, "save", lambda fig, out_dir, name: figures.append(fig))
+    monkeypatch.setattr(plot_fig2_runs, "save", lambda fig, path, source: figures.append(fig))
     monkeypatch.setattr(sys, "argv", ["plot_fig2_runs.py", os.path.join(RUNS, "fig2"), "--out", str(tmp_path)])
     plot_fig2_runs.main()
     (fig,) = figures

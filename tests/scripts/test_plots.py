@@ -1,24 +1,24 @@
-"""The pictures of scripts/plot_result.py (scripts/shockplot/), built from the
+"""The pictures of plots/plot_result.py (plots/shockplot/), built from the
 result files of small runs and inspected artist by artist: one legend that is
 right on every panel, the particles drawn only where they are data, a unit on
 every axis, the exact solution black and dashed and named "exact", guides whose
 amplitude is fitted over their window, the initial condition and the local
 exponent shown. The command is $SHOCKGAS (CTest sets it)."""
-import json
 import os
 import subprocess
 import sys
 
-import h5py
 import matplotlib
 import numpy as np
 import pytest
 from matplotlib.colors import to_rgba
 
 matplotlib.use("Agg")
-SCRIPTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts")
-sys.path.insert(0, SCRIPTS)
-import shockplot  # noqa: E402
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+PLOTS = os.path.join(ROOT, "plots")
+sys.path.insert(0, PLOTS)
+from shockplot.pictures import figures as figures_from  # noqa: E402
+from shockplot.run_files import open_result, read_summary  # noqa: E402
 
 # White noise on a lattice (the exact laws apply), particles, three solvers of
 # which hopf_cole gives no density, and the comparison.
@@ -124,7 +124,7 @@ def run(tmp, name, scene):
     path = tmp / f"{name}.toml"
     path.write_text(scene + ("" if "[output]" in scene else "[output]\n") + "plots = false\n")
     out = tmp / name
-    command = os.environ.get("SHOCKGAS", os.path.join(SCRIPTS, "..", "build", "shockgas"))
+    command = os.environ.get("SHOCKGAS", os.path.join(ROOT, "build", "shockgas"))
     subprocess.run([command, "run", str(path), "--out", str(out), "-q"], check=True, stdout=subprocess.DEVNULL)
     return out
 
@@ -137,9 +137,8 @@ def runs(tmp_path_factory):
 
 
 def figures_of(out):
-    summary = json.load(open(out / "summary.json"))
-    with h5py.File(out / "result.h5", "r") as f:
-        return shockplot.figures(f, summary)
+    with open_result(out) as f:
+        return figures_from(f, read_summary(out))
 
 
 @pytest.fixture(scope="module")
@@ -205,7 +204,7 @@ def test_shock_and_cluster_markers_are_explained(figures):
 # Finding 11: the particles are drawn where they deposited mass, never in the
 # cells whose velocity was interpolated.
 def test_interpolated_cells_are_not_drawn_as_data(runs, figures):
-    with h5py.File(runs["gas"] / "result.h5", "r") as f:
+    with open_result(runs["gas"]) as f:
         x, occupied = f["compare/x"][:], f["compare/occupied"][:] > 0
         description = f["compare/v_particles"].attrs["description"]
         assert "interpolated" in (description.decode() if isinstance(description, bytes) else description)
@@ -249,7 +248,7 @@ def test_the_exact_solution_is_black_dashed_and_named_exact(figures):
 
 
 def test_guides_are_fitted_on_their_window_not_anchored_on_a_point(runs, figures):
-    with h5py.File(runs["cooling"] / "result.h5", "r") as f:
+    with open_result(runs["cooling"]) as f:
         t, T = f["particles/t"][:], f["particles/T"][:]
     fig = figures["cooling"]["temperature.png"]
     guides = [line for ax in panels(fig) for line in ax.get_lines() if hasattr(line, "fit_window")]
@@ -292,13 +291,13 @@ def test_clusters_against_the_exact_count_masses_and_shocks(runs, figures):
     assert any("N t^{-2/3}" in t and t.startswith("exact") for t in legend)
     assert any("shock-mass law" in t for t in legend)
     assert "a matched pair (shock to cluster)" in legend or "cluster without a shock" in legend
-    with h5py.File(runs["gas"] / "result.h5", "r") as f:
+    with open_result(runs["gas"]) as f:
         coefficient = f["particles/analysis"].attrs["n_shocks_exact_coefficient"]
     assert abs(coefficient / 600 - 1.9157) < 5e-5  # 1.916 N for uniform velocities on [-1, 1]
 
 
 def test_without_a_comparison_the_heaviest_cluster_is_marked_on_the_shock(runs, figures):
-    summary = json.load(open(runs["sine"] / "summary.json"))
+    summary = read_summary(runs["sine"])
     x, m = summary["analysis"]["heaviest_cluster_x"], summary["analysis"]["heaviest_cluster_m"]
     assert abs(x - summary["continuum"]["hopf_lax"]["heaviest_shock_x"]) < 1e-2  # on the shock, within a cell (1/128)
     fig = figures["sine"]["fields.png"]
@@ -350,6 +349,6 @@ def test_a_constant_amplitude_is_not_magnified_to_its_rounding(figures):
 
 def test_the_script_writes_every_picture(runs):
     out = runs["gas"]
-    subprocess.run(["/usr/bin/python3", os.path.join(SCRIPTS, "plot_result.py"), str(out)], check=True)
+    subprocess.run(["/usr/bin/python3", os.path.join(PLOTS, "plot_result.py"), str(out)], check=True)
     for name in ("temperature.png", "velocity_distribution.png", "fields.png", "clusters.png", "spacetime.png"):
         assert (out / name).stat().st_size > 10000, name

@@ -1,6 +1,6 @@
 #pragma once
 // `shockgas animate DIR`: the animation of a run, drawn from its result.h5 alone
-// (scripts/animate.py: animation.mp4, animation.gif, animation.png), and its
+// (plots/animate.py: animation.mp4, animation.gif, animation.png), and its
 // report.html written again with it.
 #include <string>
 

@@ -12,6 +12,7 @@
 #include "shockgas/app/cli/animate.hpp"
 #include "shockgas/app/cli/bench_run.hpp"
 #include "shockgas/app/cli/info.hpp"
+#include "shockgas/app/cli/lab.hpp"
 #include "shockgas/app/cli/signals.hpp"
 #include "shockgas/app/cli/tail_run.hpp"
 #include "shockgas/app/directory/result_check.hpp"
@@ -44,7 +45,7 @@ std::string as_directory(std::string dir) {
 }
 
 struct Arguments {
-  std::string scene_path, out_dir, result_path, realizations, variants, resume;
+  std::string scene_path, out_dir, result_path, realizations, variants, resume, lab_dir = "out/lab";
   std::vector<std::string> shards;
   std::vector<std::string> overrides;
   bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false, force = false;
@@ -192,6 +193,15 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     std::cout << "bench results in " << as_directory(bench.dir) << "\n";
     return kExitOk;
   }
+  if (app.got_subcommand("lab")) {
+    try {
+      std::cout << write_lab(args.lab_dir);
+    } catch (const LabMissing& e) {
+      std::cerr << "shockgas: " << e.what() << "\n";
+      return kExitFailure;
+    }
+    return kExitOk;
+  }
   if (app.got_subcommand("scene")) {
     std::cout << (args.markdown ? scene_reference_markdown() : default_scene_text());
     return kExitOk;
@@ -236,6 +246,9 @@ int run_command(int argc, char** argv) {
   bench->add_flag(
       "--quiet,-q", [&args](std::int64_t) { args.bench.progress = false; }, "no progress output");
   add_tail(app, args);
+  auto* lab = app.add_subcommand("lab", "Write the lab: a page that runs the engine live in a browser");
+  lab->add_option("--out", args.lab_dir, "directory of the page (default out/lab); open its index.html")
+      ->check(kDirectoryName);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -270,7 +283,7 @@ int run_command(int argc, char** argv) {
     report_for_job("shockgas: run failed: out of memory" + unchanged + "\n");
     return kExitFailure;
   } catch (const std::exception& e) {
-    report_for_job("shockgas: run failed: " + with_staging_as_target(e.what()) + unchanged + "\n");
+    report_for_job("shockgas: run failed: " + printable(with_staging_as_target(e.what())) + unchanged + "\n");
     return kExitFailure;
   }
 }

@@ -1,20 +1,12 @@
 #include "shockgas/app/cli/info.hpp"
 
-#include <poll.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <chrono>
-#include <csignal>
-#include <cstring>
-#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
 
 #include "shockgas/app/directory/result_check.hpp"
-#include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/output/result_reader.hpp"
 
 namespace shockgas::app {
 
@@ -40,119 +32,46 @@ std::string intact_text(Verification v) {
   return "";
 }
 
-std::string describe(const Hdf5File& file, const std::string& path) {
+// The listing of a file's contents; every text from the file is shown as
+// printable text (a damaged or hostile file may hold any byte).
+std::string describe(const ResultContents& file) {
   std::ostringstream out;
-  out << path << intact_text(file.verification()) << "\n\nprovenance:\n";
+  out << file.path << intact_text(file.verification) << "\n\nprovenance:\n";
   std::string scene_text, resolved;
-  for (const auto& [name, value] : file.attributes("/")) {
+  for (const auto& [name, value] : file.attributes_of("/")) {
     if (name == "scene_text")
       scene_text = value;
     else if (name == "resolved_parameters")
       resolved = value;
     else
-      out << "  " << name << ": " << value << "\n";
+      out << "  " << printable(name) << ": " << printable(value) << "\n";
   }
   out << "\ndatasets (docs/output.md explains each):\n";
-  for (const auto& d : file.datasets()) {
-    out << "  " << d.path << "  " << d.type << " " << shape_text(d.shape);
-    if (!d.unit.empty()) out << "  [" << d.unit << "]";
-    if (!d.description.empty()) out << "  " << d.description;
+  for (const auto& d : file.datasets) {
+    out << "  " << printable(d.path) << "  " << d.type << " " << shape_text(d.shape);
+    if (!d.unit.empty()) out << "  [" << printable(d.unit) << "]";
+    if (!d.description.empty()) out << "  " << printable(d.description);
     if (!find_in_layout(LayoutEntry::Kind::dataset, d.path)) out << "  (not in this version's layout)";
     out << "\n";
   }
-  out << "\nscene (as given):\n" << scene_text << "\n";
+  out << "\nscene (as given):\n" << printable(scene_text, true) << "\n";
   while (!resolved.empty() && resolved.back() == '\n') resolved.pop_back();
-  if (!resolved.empty()) out << "resolved parameters:\n" << resolved << "\n";
+  if (!resolved.empty()) out << "resolved parameters:\n" << printable(resolved, true) << "\n";
   return out.str();
 }
 
-// The child's answer on the pipe: 'O' text, or 'E' problem '\0' detail.
-void answer(int fd, const std::string& message) {
-  for (std::size_t done = 0; done < message.size();) {
-    const ssize_t n = write(fd, message.data() + done, message.size() - done);
-    if (n <= 0) break;
-    done += static_cast<std::size_t>(n);
-  }
-}
-
-// The child's whole answer, or what it gave before it died or kTimeout passed.
-std::string collect(int fd) {
-  constexpr auto kTimeout = std::chrono::seconds(120);
-  const auto deadline = std::chrono::steady_clock::now() + kTimeout;
-  std::string text;
-  char block[65536];
-  for (pollfd p{fd, POLLIN, 0}; std::chrono::steady_clock::now() < deadline;) {
-    if (poll(&p, 1, 100) <= 0) continue;
-    const ssize_t n = read(fd, block, sizeof block);
-    if (n <= 0) break;
-    text.append(block, static_cast<std::size_t>(n));
-  }
-  return text;
-}
-
-// The answer of job(), run in a child process on a file that may be damaged:
-// the HDF5 library may crash inside it, and then only the child dies. Its
-// failures come back as a FileProblem of the file.
-std::string isolated(const fs::path& file, const std::function<std::string()>& job) {
-  int fds[2];
-  if (pipe(fds) != 0) throw RunError(std::string("pipe: ") + std::strerror(errno));
-  const pid_t child = fork();
-  if (child == 0) {
-    close(fds[0]);
-    try {
-      answer(fds[1], "O" + job());
-    } catch (const FileProblem& e) {
-      answer(fds[1], "E" + e.problem() + '\0' + e.detail());
-    } catch (const std::exception& e) {
-      answer(fds[1], std::string("E") + "unreadable" + '\0' + e.what());
-    }
-    _exit(0);
-  }
-  close(fds[1]);
-  const std::string text = child > 0 ? collect(fds[0]) : "";
-  close(fds[0]);
-  int status = 0;
-  if (child > 0) {
-    kill(child, SIGKILL);  // no-op once it has exited
-    waitpid(child, &status, 0);
-  }
-  const bool finished = child > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0 && !text.empty();
-  if (finished && text[0] == 'O') return text.substr(1);
-  if (finished && text[0] == 'E') {
-    const auto zero = text.find('\0');
-    throw result_problem(file.string(), text.substr(1, zero - 1), text.substr(zero + 1));
-  }
-  throw result_problem(file.string(), "damaged",
-                       "the HDF5 library failed inside it (" +
-                           std::string(WIFSIGNALED(status) ? strsignal(WTERMSIG(status)) : "no answer") +
-                           "), and it has no manifest.json to check it against");
-}
-
-std::string describe_isolated(const fs::path& file) {
-  return isolated(file, [&] {
-    const Hdf5File h5 = Hdf5File::open(file.string(), Verification::no_manifest);
-    h5.check_every_chunk();
-    return describe(h5, file.string());
-  });
-}
-
-// Where the damage of a file that failed its checksum lies, read in a child
-// process: the datasets whose chunks fail their Fletcher32 checksums, or the
-// library's reason where it cannot read the file's structure.
+// Where the damage of a file that failed its checksum lies, read through the
+// result reader (in a child process): the datasets whose chunks fail their
+// Fletcher32 checksums, or the library's reason where it cannot read the
+// file's structure.
 std::string damaged_parts(const fs::path& file) {
   try {
-    return isolated(file, [&] {
-      std::string names;
-      for (const UnreadableDataset& d :
-           Hdf5File::open(file.string(), Verification::no_manifest).unreadable_datasets())
-        names += (names.empty() ? "" : ", ") + d.path + " (" + d.reason + ")";
-      return names.empty() ? "every dataset reads back whole: the damage lies in its metadata, attributes or "
-                             "unused bytes"
-                           : "dataset " + names;
-    });
+    read_every_chunk(file, Verification::no_manifest);
   } catch (const FileProblem& e) {
-    return "its HDF5 structure: " + e.detail();
+    const bool chunks = e.problem() == "damaged" && e.detail().rfind("dataset ", 0) == 0;
+    return chunks ? e.detail() : "its HDF5 structure: " + e.detail();
   }
+  return "every dataset reads back whole: the damage lies in its metadata, attributes or unused bytes";
 }
 
 // check_result_file(file), a damage named where it lies (damaged_parts).
@@ -176,15 +95,11 @@ std::string describe_result(const std::string& path) {
       return path + ": the output of \"" + manifest->scene + "\", which has no result file\n";
   const fs::path file = result_file_of(path);
   const Verification checked = checked_naming_damage(file);
-  if (checked != Verification::no_manifest) {
-    // Its bytes are as written; every chunk is still read, its Fletcher32 checked
-    // (a chunk damaged before its file's checksum was taken).
-    const Hdf5File h5 = Hdf5File::open(file.string(), checked);
-    h5.check_every_chunk();
-    return describe(h5, file.string());
-  }
-  std::cerr << "shockgas: warning: " << unverified_warning(file) << "\n";
-  return describe_isolated(file);
+  if (checked == Verification::no_manifest)
+    std::cerr << "shockgas: warning: " << unverified_warning(file) << "\n";
+  // Even a file whose bytes are as written has every chunk read, its Fletcher32
+  // checked (a chunk damaged before its file's checksum was taken).
+  return describe(read_every_chunk(file, checked));
 }
 
 RunFilesCheck check_run_files(const std::string& path, bool result_checked) {

@@ -1,6 +1,9 @@
 #pragma once
 // The command line's signal handlers: the host side of the one signal design
-// (shockgas/core/interrupt.hpp). SIGINT and SIGTERM only call request_interrupt(abort);
+// (shockgas/core/interrupt.hpp). SIGINT, SIGTERM and SIGHUP (unless ignored
+// from the start: nohup) only call request_interrupt(abort), or a checkpoint
+// request while a run keeps checkpoints; SIGPIPE is ignored (a closed stderr
+// ends no run);
 // the engine, the solvers, the writers and the plotting wait poll it, stop at a
 // safe point and throw Interrupted, and the run's staging directory is removed
 // on the way out (run_directory.hpp). A second signal of the same kind while the

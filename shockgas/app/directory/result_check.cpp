@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/directory/run_target.hpp"
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
@@ -101,6 +102,16 @@ std::string listed_note(const fs::path& file) {
              : "";
 }
 
+// A staging directory that a killed command left beside a directory inside
+// dir (a sweep's variant, animated): run_directory.hpp.
+bool leftover_inside(const fs::path& entry) {
+  const std::string name = entry.filename().string();
+  const auto tmp = name.find(".tmp-"), old = name.find(".old-");
+  const auto at = std::min(tmp, old);
+  return name.size() > 1 && name.front() == '.' && at != std::string::npos &&
+         is_run_directory_leftover(name, (entry.parent_path() / name.substr(1, at - 1)).string());
+}
+
 }  // namespace
 
 fs::path result_file_of(const fs::path& path) {
@@ -124,6 +135,12 @@ Verification check_result_file(const fs::path& file) {
   const auto manifest = read_manifest(file.parent_path());
   const ManifestEntry* entry = manifest ? manifest->find(file.filename().string()) : nullptr;
   if (entry) check_against(*entry, file, size);
+  // A manifest lists every file of its run: one that leaves this file out was
+  // edited (a line taken out exempts nothing), or the file was put there since.
+  if (!entry && manifest)
+    throw result_problem(file.string(), "not as its manifest.json records",
+                         (file.parent_path() / kManifestFile).string() +
+                             " does not list it, though a run lists every file it writes");
   if (!entry && size == 0)
     throw result_problem(file.string(), "empty", "0 bytes: the run that wrote it did not finish");
   if (!entry && !has_hdf5_signature(file, size))
@@ -142,12 +159,21 @@ std::vector<FileState> check_listed_files(const fs::path& dir, const Manifest& m
     const std::string relative = it->path().lexically_relative(dir).generic_string();
     if (relative == kManifestFile || manifest.find(relative)) continue;
     std::error_code ec;  // a file that goes while the scan passes is not a stop of the scan
-    if (it->is_symlink(ec))
+    if (it->is_symlink(ec)) {
       states.push_back({relative, "not listed", "a symbolic link, which no run writes"});
-    else if (it->is_regular_file(ec))
-      states.push_back({relative, "not listed",
-                        run_in_progress_file(relative) ? "an interrupted run's checkpoint" + resume_hint(dir)
-                                                       : "not written by the run"});
+    } else if (it->is_directory(ec) && leftover_inside(it->path())) {
+      states.push_back({relative, "not listed", "left by a command that was killed: the next one clears it"});
+      it.disable_recursion_pending();
+    } else if (it->is_regular_file(ec)) {
+      if (run_in_progress_file(relative))
+        states.push_back({relative, "not listed", "an interrupted run's checkpoint" + resume_hint(dir)});
+      else if (run_output_name(relative))
+        states.push_back({relative, kLeftOut,
+                          "a file a run writes, which " + (dir / kManifestFile).string() +
+                              " leaves out: the manifest was edited, or the file put there since"});
+      else
+        states.push_back({relative, "not listed", "not written by the run"});
+    }
   }
   return states;
 }
@@ -155,7 +181,7 @@ std::vector<FileState> check_listed_files(const fs::path& dir, const Manifest& m
 std::string differences_of(const std::vector<FileState>& states) {
   std::string text;
   for (const FileState& f : states)
-    if (!f.intact() && f.problem != "not listed")
+    if (!f.intact() && f.problem != "not listed")  // kLeftOut counts
       text += (text.empty() ? "" : ", ") + f.path + " " + f.problem;
   return text;
 }

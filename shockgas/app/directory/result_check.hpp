@@ -32,15 +32,22 @@ enum class Verification {
 std::filesystem::path result_file_of(const std::filesystem::path& path);
 
 // Checks a result file before it is opened: FileProblem when it is missing,
-// not a regular file, empty, shorter or other than its manifest's record,
-// other than its own checksum records ("damaged"), or without the HDF5 signature.
+// not a regular file, empty, shorter or other than its manifest's record, left
+// out of the manifest beside it, other than its own checksum records
+// ("damaged"), or without the HDF5 signature. One verdict for both checks:
+// own_checksum where the file carries one (and the manifest agrees, if it lists
+// the file), else manifest where the manifest lists it, else no_manifest.
 Verification check_result_file(const std::filesystem::path& file);
+
+inline constexpr const char* kLeftOut = "left out of manifest.json";
 
 // One file of a run directory checked against its manifest.json.
 struct FileState {
   std::string path;  // relative to the directory, as listed
   // Empty: intact. Else "missing", "truncated", "damaged", "not a regular
-  // file", "unreadable", or "not listed" (a file or link the manifest does not list).
+  // file", "unreadable", kLeftOut (a file of a name a run writes, which the
+  // manifest does not list: it was edited), or "not listed" (any other file or
+  // link the manifest does not list, which is no difference).
   std::string problem;
   std::string detail;
   bool intact() const { return problem.empty(); }

@@ -1,19 +1,29 @@
 #pragma once
 // The output directory of a run, whole or absent (docs/output.md, "The run
-// directory").
+// directory"): the one mechanism by which every command writes a directory
+// (run, shard, merge, resume, animate, bench, tail, the Python module's
+// run(out=...)).
 //
-// A run writes everything (result, summary, report, plots, manifest) into a
-// staging directory beside its target, `.NAME.tmp-<pid>-<random>`, and moves it
-// into place only when it is complete and on the disk (fsync): by one
-// renameat2(RENAME_EXCHANGE) when the target exists, whose previous contents
-// are then removed, by one rename otherwise. A failed, interrupted or killed
-// run therefore leaves the target as it was. A lock beside the target
-// (`.NAME.lock`, flock) keeps two runs out of one directory; the next run into
-// it removes the staging directories that killed runs left (and, on a file
-// system without RENAME_EXCHANGE, puts back previous results that a run killed
-// half-way through its two renames had moved aside). An interrupted
-// run's checkpoint (NAME/checkpoint.bin, checkpoint.hpp) stays until the
-// finished run replaces NAME.
+// Before any work a command takes the lock beside its target
+// (`.NAME.lock`, flock; refused at once, naming the holder, while another run
+// holds it), clears what killed runs left, checks what the target holds and
+// makes the staging directory `.NAME.tmp-<pid>-<random>` beside it, and a work
+// directory `.NAME.tmp-<pid>-<random>.work` for its temporary files (a
+// realization's states file while no checkpoint refers to it). Everything is
+// written into the staging directory and moved into place only when it is
+// complete and on the disk (fsync): by one renameat2(RENAME_EXCHANGE) when the
+// target exists, whose previous contents are then removed, by one rename
+// otherwise. A failed, interrupted or killed run therefore leaves the target
+// as it was; only a checkpoint it saved (checkpoint.hpp: NAME/checkpoint.bin
+// and the files it refers to) goes into the target before the end, to be
+// resumed. The next run into it removes the staging and work directories that
+// killed runs left (also those of a sweep's variants, inside it) and, on a
+// file system without RENAME_EXCHANGE, puts back previous results that a run
+// killed half-way through its two renames had moved aside.
+//
+// The lock file is opened without following a link, and a lock file that is
+// not shockgas's own (a link, a file with other links, other text than a
+// process number) is refused, never written.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -35,7 +45,10 @@ class CreatedDirectories {
 };
 
 // flock on `.NAME.lock` beside the target, held by one run at a time; the
-// file is removed when the lock is released.
+// file is removed when the lock is released. InputError naming --out when
+// another process holds it (its process number said) or when the file in its
+// place is not a lock file of shockgas (a link, a file with other links, other
+// text), which is left as it is.
 class DirectoryLock {
  public:
   DirectoryLock(const std::filesystem::path& target, const std::string& out);  // InputError if held
@@ -52,16 +65,23 @@ class RunDirectory {
  public:
   // Checks the target (run_target.hpp: InputError naming --out, before any
   // work), creates the missing directories above it, takes its lock, clears
-  // what killed runs left and creates the staging directory. out: --out as
-  // given (messages); scene: the name of the scene about to run.
-  RunDirectory(const std::filesystem::path& out, const std::string& scene, bool force);
-  // Without commit(): removes the staging directory (and the directories it
-  // created above the target, if empty), releases the lock.
+  // what killed runs left, checks the target's contents and creates the
+  // staging and work directories. out: --out as given (messages); scene: the
+  // name of the scene about to run.
+  // lock_on: the lock of the target itself, or of the directory that holds it
+  // (a sweep's variant changed by `shockgas animate`: no run may replace the
+  // sweep meanwhile, and the variant's staging directory is inside the sweep).
+  enum class LockOn { target, enclosing };
+  RunDirectory(const std::filesystem::path& out, const std::string& scene, bool force,
+               LockOn lock_on = LockOn::target);
+  // Without commit(): removes the staging and work directories (and the
+  // directories it created above the target, if empty), releases the lock.
   ~RunDirectory();
   RunDirectory(const RunDirectory&) = delete;
   RunDirectory& operator=(const RunDirectory&) = delete;
 
   const std::filesystem::path& staging() const { return staging_; }  // where the run writes now
+  const std::filesystem::path& work() const { return work_; }        // its temporary files
   const std::filesystem::path& target() const { return target_; }
 
   // Syncs the staging directory to the disk, moves it into place and removes
@@ -78,7 +98,7 @@ class RunDirectory {
   std::filesystem::path target_;
   CreatedDirectories created_;
   DirectoryLock lock_;
-  std::filesystem::path staging_;
+  std::filesystem::path staging_, work_;
   bool committed_ = false;
 };
 
@@ -97,10 +117,17 @@ enum class SwapMethod { exchange, two_renames };
 std::filesystem::path swap_into_place(const std::filesystem::path& staging,
                                       const std::filesystem::path& target, SwapMethod method);
 
-// What killed runs into target left beside it: staging directories are
-// removed, and previous results moved aside by a run killed between its two
-// renames are put back where the target is missing. Returns one line per action
-// (for a note on stderr). Call with the target's lock held.
+// What killed runs into target left beside it: staging and work directories
+// are removed, and previous results moved aside by a run killed between its
+// two renames are put back where the target is missing; then the same inside
+// target, for each directory in it (a sweep's variants, which `shockgas
+// animate` stages beside themselves). Returns one line per action (for a note
+// on stderr). Call with the target's lock held.
 std::vector<std::string> clear_leftovers(const std::filesystem::path& target);
+
+// Whether name (an entry beside a directory `dir`) is what a command into
+// dir makes there or leaves when killed: its lock, staging, work or
+// moved-aside directory.
+bool is_run_directory_leftover(const std::string& name, const std::string& dir);
 
 }  // namespace shockgas::app

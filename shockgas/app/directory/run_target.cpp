@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "shockgas/app/files/data_dir.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/records/state_file.hpp"
@@ -36,26 +37,23 @@ std::vector<std::pair<std::string, fs::path>> protected_directories() {
   std::error_code ec;
   dirs.emplace_back("the current directory", fs::current_path(ec));
   if (const char* home = std::getenv("HOME"); home && *home) dirs.emplace_back("the home directory", home);
-  dirs.emplace_back("the source tree", SHOCKGAS_SOURCE_DIR);
+  // The folder shockgas reads its plots from: in a build tree they link into the sources.
+  if (const auto data = data_dir())
+    dirs.emplace_back("shockgas's own files", fs::weakly_canonical(*data / "plots", ec).parent_path());
   for (auto& [what, dir] : dirs) dir = fs::weakly_canonical(dir, ec);
   return dirs;
 }
 
 // Files an older shockgas (without manifest.json) wrote into a run directory,
-// or into the output directory of `shockgas tail`.
+// or into the output directory of `shockgas tail`; and what killed runs of
+// older versions left (*.partial-PID).
 bool legacy_run_file(const fs::path& relative) {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> n = {"result.h5", "summary.json", "report.md", "report.html"};
-    n.insert(n.end(), studies::kTailFiles.begin(), studies::kTailFiles.end());
-    return n;
-  }();
-  static const std::vector<std::string> extensions = {".png", ".gif", ".mp4", ".svg"};
-  const std::string name = relative.filename().string();
-  if (name.find(".partial-") != std::string::npos) return true;  // killed runs of older versions
-  if (std::find(names.begin(), names.end(), name) != names.end()) return true;
-  if (std::find(extensions.begin(), extensions.end(), relative.extension().string()) != extensions.end())
+  const std::string name = relative.filename().string(), extension = relative.extension().string();
+  if (name.find(".partial-") != std::string::npos) return true;
+  if (std::find(studies::kTailFiles.begin(), studies::kTailFiles.end(), name) != studies::kTailFiles.end())
     return true;
-  return false;
+  return run_output_name(relative) && name != kManifestFile && extension != ".log" &&
+         extension != ".csv";  // the tail's tables by name only: a directory of CSV files may be anyone's
 }
 
 // The first entry under dir that is not a result of a run: not listed in the
@@ -101,6 +99,19 @@ std::string read_text(const fs::path& file, std::uintmax_t limit) {
 }
 
 }  // namespace
+
+bool run_output_name(const fs::path& relative) {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = {"result.h5",   "summary.json", "report.md",    "report.html",
+                                  kManifestFile, "plots.log",    "animation.log"};
+    n.insert(n.end(), studies::kTailFiles.begin(), studies::kTailFiles.end());  // also .csv, below
+    return n;
+  }();
+  static const std::vector<std::string> extensions = {".png", ".gif", ".mp4", ".svg", ".csv"};
+  const std::string name = relative.filename().string();
+  return std::find(names.begin(), names.end(), name) != names.end() ||
+         std::find(extensions.begin(), extensions.end(), relative.extension().string()) != extensions.end();
+}
 
 bool run_in_progress_file(const fs::path& relative) {
   return !relative.has_parent_path() && (is_checkpoint_file(relative) || is_state_file(relative));

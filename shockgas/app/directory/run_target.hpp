@@ -36,6 +36,11 @@ void check_target_spares(const std::filesystem::path& target, const std::string&
 // the temporary files of killed writes), realization 0's state files.
 bool run_in_progress_file(const std::filesystem::path& relative);
 
+// Whether a file (a path relative to a run directory) has a name that a run
+// writes there: result.h5, summary.json, the reports, a picture or movie, a
+// plotting log, `shockgas tail`'s tables, a variant's manifest.json.
+bool run_output_name(const std::filesystem::path& relative);
+
 // The scene whose results dir holds: from its manifest.json, or the
 // summary.json of an older version; nullopt if neither names one.
 std::optional<std::string> scene_of_results(const std::filesystem::path& dir);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 
 #include "shockgas/app/files/fault.hpp"
 #include "shockgas/app/records/state_file.hpp"
@@ -29,8 +30,9 @@ bool signals_take_checkpoints() noexcept {
 
 Checkpointer::Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
                            const std::string& variants, KeptWork kept, bool resuming, bool states,
-                           bool job_rank)
+                           bool job_rank, std::filesystem::path work)
     : dir_(std::move(dir)),
+      work_(std::move(work)),
       checkpoint_(make_checkpoint(scene, realizations, variants, std::move(kept.records))),
       kept_(checkpoint_.records.size()),
       saved_(kept_),
@@ -47,8 +49,6 @@ Checkpointer::Checkpointer(std::filesystem::path dir, const Scene& scene, const 
   identity_.resolved = checkpoint_.resolved;
   if (states && resuming && !job_rank)  // a job's rank 0 has checked and cleared the directory
     find_states();
-  else if (states && !job_rank)
-    remove_run_states(dir_);  // of an earlier run in this directory
   g_signals_take_checkpoints = true;
 }
 
@@ -60,12 +60,13 @@ Checkpointer::Checkpointer(std::filesystem::path dir, const Scene& scene, const 
 void Checkpointer::find_states() {
   for (const RunStateHeader& h : read_run_state_headers(dir_)) {
     const std::filesystem::path file = run_state_path(dir_, h.ensemble, h.index);
-    if (h.version != identity_.version || h.commit != identity_.commit || h.resolved != identity_.resolved)
+    // The thread count and the checkpoint interval may differ: they change no result.
+    const bool same_scene = physics_of(h.resolved) == physics_of(identity_.resolved);
+    if (h.version != identity_.version || h.commit != identity_.commit || !same_scene)
       throw InputError("--resume", to_text(file.string()),
                        "a realization's state saved by this build (" + std::string(identity_.version) +
                            ", commit " + identity_.commit + ") of the checkpoint's scene (it was saved by " +
-                           h.version + ", commit " + h.commit +
-                           (h.resolved != identity_.resolved ? ", of another scene" : "") +
+                           h.version + ", commit " + h.commit + (!same_scene ? ", of another scene" : "") +
                            "; it is left as it is)");
     const bool finished = std::any_of(
         checkpoint_.records.begin(), checkpoint_.records.end(),
@@ -73,12 +74,29 @@ void Checkpointer::find_states() {
     std::error_code ec;
     if (finished)
       std::filesystem::remove(file, ec);
+    else if (!sink_whole(h))
+      continue;  // it starts again
     else
       states_[{h.ensemble, h.index}] = h.time, resumed_[{h.ensemble, h.index}] = {h.fraction, h.time},
                            resumed_sinks_[{h.ensemble, h.index}] = h.sink;
   }
   for (const auto& [key, time] : states_) check_run_state(run_state_path(dir_, key.first, key.second));
   states_checked_ = true;
+}
+
+// Whether the states file a saved realization 0 goes on writing is as its
+// save recorded it (each state it lists checked against its checksums): a
+// damaged, cut or missing one would end the resumed run after all its work, so
+// that realization starts again instead (as when a finished realization 0's
+// states file is not whole), and the run says so.
+bool Checkpointer::sink_whole(const RunStateHeader& h) const {
+  if (h.sink.empty()) return true;
+  const auto problem = StoredStates::saved_problem(states_in_progress_path(dir_, h.ensemble), h.sink);
+  if (problem)
+    std::fprintf(stderr, "shockgas: realization %llu of ensemble %llu runs again: %s\n",
+                 static_cast<unsigned long long>(h.index), static_cast<unsigned long long>(h.ensemble),
+                 problem->c_str());
+  return !problem;
 }
 
 void Checkpointer::find_state(const Key& key) {
@@ -229,10 +247,19 @@ void Checkpointer::save() {
 }
 
 // checkpoint.bin with every record; the states of the realizations new in it
-// (saved by this process or by another rank of a job) are then stale, and removed.
+// (saved by this process or by another rank of a job) are then stale, and
+// removed. The first save of a new run replaces an earlier run's checkpoint
+// (its running realizations' states and states files go first).
 void Checkpointer::save_locked(bool fault) {
+  if (!on_disk_ && !resuming_ && !job_rank_) {
+    remove_run_states(dir_);
+    remove_state_files(dir_);
+  }
   for (const RealizationRecord& r : checkpoint_.records)  // on the disk before the record that needs them
-    if (r.states_apart) sync_state_file(state_file_path(dir_, r.ensemble));
+    if (r.states_apart) {
+      move_state_file(work_, dir_, r.ensemble);
+      sync_state_file(state_file_path(dir_, r.ensemble));
+    }
   checkpoint_.seconds = seconds_before_ + std::chrono::duration<double>(Clock::now() - started_).count();
   write_checkpoint(dir_, checkpoint_);
   on_disk_ = true;
@@ -296,7 +323,6 @@ void RealizationSaves::save(double t, double fraction,
   const Checkpointer::Key key{item_.ensemble, item_.index};
   RunStateHeader header = owner_.identity_;
   header.ensemble = item_.ensemble, header.index = item_.index, header.time = t, header.fraction = fraction;
-  if (sink_) header.sink = sink_();  // synced before the state that refers to it
   {
     std::lock_guard lock(owner_.mutex_);
     if (!owner_.on_disk_) owner_.save_locked(false);  // the checkpoint is complete with the state
@@ -309,6 +335,7 @@ void RealizationSaves::save(double t, double fraction,
       --c.writing_;
     }
   } done{owner_};
+  if (sink_) header.sink = sink_();  // beside the checkpoint, synced before the state that refers to it
   write_run_state(owner_.dir_, header, write);
   last_ = Clock::now();
   {

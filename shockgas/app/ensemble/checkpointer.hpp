@@ -101,10 +101,14 @@ class Checkpointer {
   // realizations (rank 0 has checked and cleared the directory before dealing
   // them out): never writes checkpoint.bin nor removes a file, and continues a
   // realization from its state when the directory holds one.
+  // work: the run's work directory (run_directory.hpp), where realization 0's
+  // states files are written until a checkpoint refers to them: each save
+  // moves them into dir. Nothing of a new run goes into dir before its first
+  // save, which replaces an earlier run's checkpoint there.
   Checkpointer(std::filesystem::path dir, const Scene& scene, const std::string& realizations,
                const std::string& variants, KeptWork kept, bool resuming = false, bool states = false,
-               bool job_rank = false);
-  ~Checkpointer();  // signals end the process again (partial_outputs.hpp)
+               bool job_rank = false, std::filesystem::path work = {});
+  ~Checkpointer();  // signals end the process again
   Checkpointer(const Checkpointer&) = delete;
   Checkpointer& operator=(const Checkpointer&) = delete;
 
@@ -113,6 +117,8 @@ class Checkpointer {
   std::vector<WorkItem> remaining(const EnsemblePlan& plan) const;
   // The records of the resumed checkpoint.
   std::size_t kept() const { return kept_; }
+  // Where the checkpoint is kept.
+  const std::filesystem::path& dir() const { return dir_; }
   // Wall-clock seconds the run's interrupted parts spent computing up to the
   // checkpoint resumed (0 for a new run) [s].
   double seconds_before() const { return seconds_before_; }
@@ -160,12 +166,13 @@ class Checkpointer {
   using Key = std::pair<std::uint64_t, std::uint64_t>;  // ensemble, index
   void find_states();
   void find_state(const Key& key);  // job_rank, resuming: the state of one realization
+  bool sink_whole(const RunStateHeader& h) const;
   void save();
   void save_locked(bool fault = true);  // fault: pass fault_point("checkpoint")
   bool waiting_for_states();
   std::string states_note() const;
 
-  std::filesystem::path dir_;
+  std::filesystem::path dir_, work_;
   Checkpoint checkpoint_;
   RunStateHeader identity_;  // version, commit and scene of the state files
   std::size_t kept_ = 0;     // records of the resumed checkpoint

@@ -11,6 +11,7 @@
 #include "shockgas/app/records/state_file.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/interrupt.hpp"
+#include "shockgas/core/thread_start.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::app {
@@ -23,6 +24,7 @@ struct RealizationPool::State {
   std::filesystem::path states_dir;
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
+  std::atomic<bool> go{false};  // every worker started (or the pool refused)
 
   mutable std::mutex mutex;      // guards what follows
   std::vector<double> fraction;  // per item
@@ -52,11 +54,15 @@ struct RealizationPool::State {
     std::optional<StateFileWriter> states;
     if (item.index == 0 && !states_dir.empty() && keeps_states_apart(plan->scene(item.ensemble))) {
       const std::optional<std::string> resumed = saves ? saves->resumed_sink() : std::nullopt;
-      if (resumed)
-        states.emplace(state_file_path(states_dir, item.ensemble), *resumed);
+      if (resumed)  // beside the checkpoint it was saved with
+        states.emplace(state_file_path(checkpoints->dir(), item.ensemble), *resumed);
       else
         states.emplace(state_file_path(states_dir, item.ensemble));
-      if (saves) saves->attach_sink([&states] { return states->saved(); });
+      if (saves)
+        saves->attach_sink([&states, dir = checkpoints->dir()] {
+          states->move_to(dir);  // a checkpoint refers to it from now on
+          return states->saved();
+        });
     }
     const particles::RunCheckpoints saved = saves ? saves->checkpoints() : particles::RunCheckpoints{};
     RealizationRecord r{item.ensemble, item.index,
@@ -76,6 +82,7 @@ struct RealizationPool::State {
   }
 
   void work() {
+    go.wait(false);
     for (std::size_t i = next++; i < items.size() && !stop; i = next++) {
       {
         std::lock_guard lock(mutex);
@@ -119,7 +126,20 @@ RealizationPool::RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::
   s.threads_per_run = split.per_run;  // threads left over go to each run's windows
   const std::size_t workers = s.items.empty() ? 0 : split.runs;
   s.workers = workers;  // counted down by the threads as they end
-  for (std::size_t t = 0; t < workers; ++t) threads_.emplace_back([state = state_] { state->work(); });
+  // The workers start their realizations once all are started: a thread the
+  // system refuses stops the pool before any realization runs.
+  try {
+    for (std::size_t t = 0; t < workers; ++t)
+      threads_.push_back(start_thread([state = state_] { state->work(); }));
+  } catch (...) {
+    s.stop = true;
+    s.go = true;
+    s.go.notify_all();
+    for (auto& t : threads_) t.join();
+    throw;
+  }
+  s.go = true;
+  s.go.notify_all();
 }
 
 RealizationPool::~RealizationPool() {

@@ -90,11 +90,17 @@ std::string write_failure(const fs::path& path, const std::string& reason) {
   return "cannot write " + path.string() + ": " + reason + room_note(path.parent_path());
 }
 
+int open_new_file(const fs::path& path) noexcept {
+  if (::unlink(path.c_str()) != 0 && errno != ENOENT) return -1;
+  return ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+}
+
 namespace {
 
-// write_file, its fault point named after `name` (the file a temporary one becomes).
+// write_file, its fault point named after `name` (the file a temporary one
+// becomes); made by open_new_file, never through a link.
 void write_text(const fs::path& path, const std::string& text, const fs::path& name) {
-  Fd fd(::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
+  Fd fd(open_new_file(path));
   if (fd.get() < 0) throw RunError(write_failure(path, std::strerror(errno)));
   const std::size_t half = text.size() / 2;
   write_all(fd.get(), text.data(), half, path);

@@ -8,6 +8,14 @@
 
 namespace shockgas::app {
 
+// A new file at path for writing, returned as an open descriptor (-1 with
+// errno set if it cannot be made): whatever was at path before (a temporary
+// file of a killed write) is removed first, and the file is created without
+// following a link (O_EXCL | O_NOFOLLOW), so that a link put in its place can
+// never have another file written through it. Every file shockgas writes is
+// made so.
+int open_new_file(const std::filesystem::path& path) noexcept;
+
 // Writes text to path (created or truncated), fsyncs and closes it; RunError
 // naming the file, the system's reason and the free space on a failure. Passes
 // the fault point "write:<file name>" half-way (fault.hpp).

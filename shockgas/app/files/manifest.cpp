@@ -101,15 +101,6 @@ Manifest write_manifest(const fs::path& dir, const std::string& scene) {
   return m;
 }
 
-Manifest write_manifest_of(const fs::path& dir, const std::string& scene,
-                           const std::vector<std::string>& files) {
-  Manifest m;
-  m.scene = scene;
-  for (const std::string& f : files) m.files.push_back({f, fs::file_size(dir / f), sha256_of_file(dir / f)});
-  replace_file(dir / kManifestFile, manifest_text(m));
-  return m;
-}
-
 void update_manifest(const fs::path& dir, const std::string& sub, const Manifest& of_sub) {
   std::optional<Manifest> m = read_manifest(dir);
   if (!m) return;
@@ -144,6 +135,14 @@ std::optional<Manifest> read_manifest(const fs::path& dir) {
   for (const auto& f : j["files"]) {
     m.files.push_back(entry_of(f, file));
     if (!seen.insert(m.files.back().path).second) refuse(file, "a file listed twice: " + m.files.back().path);
+  }
+  // Every run that writes result.h5 writes summary.json and report.md beside it.
+  for (const ManifestEntry& e : m.files) {
+    const std::string at = e.path.substr(0, e.path.size() - fs::path(e.path).filename().string().size());
+    if (fs::path(e.path).filename() != "result.h5") continue;
+    for (const char* beside : {"summary.json", "report.md"})
+      if (!seen.count(at + beside))
+        refuse(file, "a list of every file of its run (it lists " + e.path + " without " + at + beside + ")");
   }
   return m;
 }

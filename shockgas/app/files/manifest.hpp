@@ -37,12 +37,6 @@ struct Manifest {
 // manifest itself excepted) and writes dir/manifest.json; returns what it wrote.
 Manifest write_manifest(const std::filesystem::path& dir, const std::string& scene);
 
-// The manifest of the named files of dir only (relative paths): for a
-// directory written in place rather than staged (a shard's, which may hold its
-// checkpoint too).
-Manifest write_manifest_of(const std::filesystem::path& dir, const std::string& scene,
-                           const std::vector<std::string>& files);
-
 // The entries of dir's manifest for the files under dir/sub (a sweep's
 // variant) replaced by those of of_sub, the manifest just written for dir/sub
 // (its files are not hashed again), and dir/sub/manifest.json itself; the

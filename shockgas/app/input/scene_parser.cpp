@@ -41,23 +41,42 @@ std::string trimmed(const std::string& s) {
   return first == std::string::npos ? "" : s.substr(first, last - first + 1);
 }
 
-// "particles.r=0.5" (spaces around '=' allowed): the value is read as a TOML
-// value; a bare word that is not TOML is a string.
+bool has_control_character(const std::string& s) {
+  return std::any_of(s.begin(), s.end(),
+                     [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+}
+
+// The value of an override: one TOML value, or a bare word that is not TOML
+// (a string). Anything after the value (a line break and another key: the
+// TOML reader would take both) is refused, not dropped.
+toml::table override_value(const std::string& text, const Override& o) {
+  const std::string allowed =
+      "table.key=value with one TOML value (e.g. particles.r=0.5); this one holds more after its value";
+  try {
+    toml::table parsed = toml::parse("value = " + text);
+    if (parsed.size() != 1) throw InputError("--set", to_text(o.assignment), allowed, o.origin);
+    return parsed;
+  } catch (const toml::parse_error&) {
+    if (has_control_character(text)) throw InputError("--set", to_text(o.assignment), allowed, o.origin);
+    toml::table word;
+    word.insert_or_assign("value", text);
+    return word;
+  }
+}
+
+// "particles.r=0.5" (spaces around '=' allowed): one key, its value read as a
+// TOML value; a bare word that is not TOML is a string.
 void apply_override(toml::table& root, const Override& o, Scene& scene) {
   const std::string& assignment = o.assignment;
   const auto eq = assignment.find('=');
   const std::string key = trimmed(assignment.substr(0, eq));
   const auto dot = key.find('.');
-  if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == key.size())
+  if (eq == std::string::npos || dot == std::string::npos || dot == 0 || dot + 1 == key.size() ||
+      has_control_character(key))
     throw InputError("--set", to_text(assignment), "table.key=value, e.g. particles.r=0.5", o.origin);
   const std::string table = key.substr(0, dot), name = key.substr(dot + 1);
   const std::string text = trimmed(assignment.substr(eq + 1));
-  toml::table parsed;
-  try {
-    parsed = toml::parse("value = " + text);
-  } catch (const toml::parse_error&) {
-    parsed.insert_or_assign("value", text);
-  }
+  toml::table parsed = override_value(text, o);
   if (!root.contains(table)) {
     root.insert_or_assign(table, toml::table{});
     scene.key_origin[table] = o.origin;
@@ -157,6 +176,10 @@ std::vector<std::string> split_assignments(const std::string& text) {
 // needs both at one time, on the ring, and the solver it names.
 void validate_compare(const Scene& scene) {
   require(scene.has_particles, "compare", std::string("(table)"), "[compare] only together with [particles]");
+  require(scene.compare.min_cluster_particles <= static_cast<double>(scene.initial.N),
+          "compare.min_cluster_particles", scene.compare.min_cluster_particles,
+          "0 (automatic) or at most initial.N = " + std::to_string(scene.initial.N) +
+              ": a cluster holds at most every particle");
   if (!scene.has_continuum) return;
   const auto& solvers = scene.continuum.solvers;
   require(std::find(solvers.begin(), solvers.end(), scene.compare.solver) != solvers.end(), "compare.solver",
@@ -233,7 +256,7 @@ Scene parse(const std::string& text, const std::string& path, const std::vector<
 
 std::vector<Override> command_line(const std::vector<std::string>& overrides) {
   std::vector<Override> out;
-  for (const auto& o : overrides) out.push_back({o, "--set " + o});
+  for (const auto& o : overrides) out.push_back({o, "--set " + printable(o)});
   return out;
 }
 

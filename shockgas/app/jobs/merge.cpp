@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <sstream>
 
+#include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/directory/run_target.hpp"
 #include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/jobs/parallel_run.hpp"
 #include "shockgas/app/jobs/shard_file.hpp"
+#include "shockgas/app/run/resources.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -94,17 +96,19 @@ std::string merge_shards(const std::vector<std::string>& shard_dirs, const RunOp
 
   const fs::path dir = options.out_dir.empty() ? fs::path("out") / scene.name : fs::path(options.out_dir);
   check_target_spares(resolve_target(dir), dir.string(), shard_dirs, "shard being merged");
+  check_resources(scene, dir, options.plots);        // as a run of the scene would
+  RunDirectory out(dir, scene.name, options.force);  // locked and staged before the records are read
 
   std::vector<RealizationRecord> records;
   ParallelRun parallel{1, 1, shards.size()};
   double shard_seconds = 0;
   for (const ShardHeader& h : shards) {
     for (auto& r : read_shard_records(h)) records.push_back(std::move(r));
-    parallel.ranks = std::max(parallel.ranks, std::stoi(h.shard.at("ranks")));
-    parallel.threads = std::max<std::size_t>(parallel.threads, std::stoull(h.shard.at("threads")));
-    shard_seconds += std::stod(h.shard.at("wall_seconds"));
+    parallel.ranks = std::max(parallel.ranks, static_cast<int>(std::min<std::uint64_t>(h.ranks, 1u << 30)));
+    parallel.threads = std::max<std::size_t>(parallel.threads, h.threads);
+    shard_seconds += h.wall_seconds;
   }
-  return write_from_records(scene, plan, std::move(records), parallel, shard_seconds, dir, options,
+  return write_from_records(scene, plan, std::move(records), parallel, shard_seconds, out, dir, options,
                             scene.has_sweep ? nullptr : &plan.initial(0));
 }
 

@@ -106,9 +106,12 @@ JobSession::JobSession(int& argc, char**& argv) {
   if (state_->job.size() > 1) {
     g_job = &state_->job;
     // The MPI host owns the signals: a launcher ends a job with SIGTERM (and
-    // a user with SIGINT); the run stops cooperatively (shockgas/core/interrupt.hpp).
+    // a user with SIGINT, a closed session with SIGHUP); the run stops
+    // cooperatively (shockgas/core/interrupt.hpp).
     std::signal(SIGTERM, interrupt_job);
     std::signal(SIGINT, interrupt_job);
+    if (std::signal(SIGHUP, interrupt_job) == SIG_IGN) std::signal(SIGHUP, SIG_IGN);  // nohup
+    std::signal(SIGPIPE, SIG_IGN);  // a closed stderr ends no job (signals.hpp)
   }
 }
 

@@ -65,30 +65,6 @@ KeptWork resumable_work(const fs::path& dir) {
   return {std::move(kept), checkpoint.seconds};
 }
 
-// Realization 0's state files are kept after a failure only beside a
-// checkpoint, which a resumed run continues from.
-class StateFilesCleanup {
- public:
-  explicit StateFilesCleanup(fs::path dir) : dir_(std::move(dir)) {}
-  ~StateFilesCleanup() {
-    std::error_code ec;
-    if (!fs::exists(checkpoint_path(dir_), ec)) remove_state_files(dir_);
-  }
-  StateFilesCleanup(const StateFilesCleanup&) = delete;
-  StateFilesCleanup& operator=(const StateFilesCleanup&) = delete;
-
- private:
-  fs::path dir_;
-};
-
-// out/<name>.shard-A-B[-vC-D] for a shard without --out.
-std::string shard_name(const Scene& scene, const RunOptions& options) {
-  std::string name = scene.name + ".shard-" + options.realizations +
-                     (options.variants.empty() ? "" : "-v" + options.variants);
-  std::replace(name.begin(), name.end(), ':', '-');
-  return name;
-}
-
 }  // namespace
 
 bool runs_in_parallel(const RunOptions& options) {
@@ -98,7 +74,8 @@ bool runs_in_parallel(const RunOptions& options) {
 
 bool keeps_checkpoints(const RunOptions& options) { return options.checkpoint || options.resume; }
 
-std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptions& options) {
+std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptions& options,
+                         RunDirectory* out) {
   std::optional<Slice> realizations, variants;
   if (!options.realizations.empty()) realizations = parse_slice(options.realizations, "--realizations");
   if (!options.variants.empty()) variants = parse_slice(options.variants, "--variants");
@@ -107,32 +84,24 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   Job* job = current_job();
   if (speaks_for_job()) say_idle_ranks(job, *plan);
   const std::size_t threads = resolved_threads(scene.particles.threads);
-  const fs::path where =
-      shard && options.out_dir.empty() ? fs::path("out") / shard_name(scene, options) : dir;
-  // Realization 0's states go to a file beside the checkpoint (state_file.hpp);
-  // a shard's records carry them.
-  const fs::path states_dir = shard || !speaks_for_job() ? fs::path() : where;
-  std::optional<CreatedDirectories> made;
-  std::optional<StateFilesCleanup> cleanup;
-  if (!states_dir.empty()) {
-    made.emplace(states_dir);  // removed again on a failure if nothing is left in it
-    cleanup.emplace(states_dir);
-    if (!options.resume) remove_state_files(states_dir);  // what a killed run left
-  }
+  // Realization 0's states go to a file in the run's work directory, moved
+  // beside the checkpoint when one refers to it (state_file.hpp); a shard's
+  // records carry them.
+  const fs::path states_dir = shard || !out ? fs::path() : out->work();
   ComputedRecords computed;
   {
     // Rank 0 keeps a job's checkpoint (job_ensembles.hpp); every rank saves
     // the states of the realizations it runs.
     std::unique_ptr<Checkpointer> checkpoints;
     if (keeps_checkpoints(options) && speaks_for_job())
-      checkpoints = std::make_unique<Checkpointer>(where, scene, options.realizations, options.variants,
-                                                   options.resume ? resumable_work(where) : KeptWork{},
-                                                   options.resume, true);
+      checkpoints = std::make_unique<Checkpointer>(dir, scene, options.realizations, options.variants,
+                                                   options.resume ? resumable_work(dir) : KeptWork{},
+                                                   options.resume, true, false, states_dir);
     else if (keeps_checkpoints(options))
-      checkpoints = std::make_unique<Checkpointer>(where, scene, options.realizations, options.variants,
+      checkpoints = std::make_unique<Checkpointer>(dir, scene, options.realizations, options.variants,
                                                    KeptWork{}, options.resume, true, true);
     if (checkpoints && options.resume && speaks_for_job())
-      std::cerr << "shockgas: resuming " << where.string() << ": " << checkpoints->kept() << " of "
+      std::cerr << "shockgas: resuming " << dir.string() << ": " << checkpoints->kept() << " of "
                 << plan->items().size() << " realizations kept from the checkpoint"
                 << checkpoints->resumed_states() << "\n";
     ProgressBar progress(options.progress && speaks_for_job());
@@ -141,31 +110,31 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   }
   if (!speaks_for_job()) return dir.string();
   if (shard) {
-    write_shard(where, scene, *plan, std::move(computed));
-  } else {
-    const ParallelRun parallel{computed.ranks, computed.threads, 0};
-    const std::size_t finished = computed.records.size();
-    try {
-      write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds, dir,
-                         options, scene.has_sweep ? nullptr : &plan->initial(0), states_dir);
-    } catch (const CheckpointTaken&) {
-      throw;
-    } catch (const Interrupted& e) {  // after the particles: their checkpoint holds every realization
-      if (!keeps_checkpoints(options) || !fs::exists(checkpoint_path(where))) throw;
-      throw CheckpointTaken(e.signal_number(), "all " + std::to_string(finished) +
-                                                   " realizations are kept in " +
-                                                   checkpoint_path(where).string() + resume_hint(where));
-    }
+    write_shard(out->staging(), scene, *plan, std::move(computed));
+    out->commit();
+    return dir.string();
   }
-  if (keeps_checkpoints(options)) remove_checkpoint(where);  // the result holds it all now
-  if (made) made->keep();
-  return where.string();
+  const ParallelRun parallel{computed.ranks, computed.threads, 0};
+  const std::size_t finished = computed.records.size();
+  try {
+    return write_from_records(scene, *plan, std::move(computed.records), parallel, computed.wall_seconds,
+                              *out, dir, options, scene.has_sweep ? nullptr : &plan->initial(0),
+                              {states_dir, dir});
+  } catch (const CheckpointTaken&) {
+    throw;
+  } catch (const Interrupted& e) {  // after the particles: their checkpoint holds every realization
+    if (!keeps_checkpoints(options) || !fs::exists(checkpoint_path(dir))) throw;
+    throw CheckpointTaken(e.signal_number(), "all " + std::to_string(finished) +
+                                                 " realizations are kept in " +
+                                                 checkpoint_path(dir).string() + resume_hint(dir));
+  }
 }
 
 std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
                                std::vector<RealizationRecord> records, const ParallelRun& parallel,
-                               double wall_seconds, const fs::path& dir, const RunOptions& options,
-                               const InitialCondition* initial, const fs::path& states_dir) {
+                               double wall_seconds, RunDirectory& out, const fs::path& dir,
+                               const RunOptions& options, const InitialCondition* initial,
+                               const std::vector<fs::path>& states_dirs) {
   const std::vector<double> wall = wall_shares(plan, records, wall_seconds);
   std::vector<std::vector<RealizationRecord>> by_ensemble(plan.ensembles());
   for (auto& r : records) by_ensemble.at(r.ensemble).push_back(std::move(r));
@@ -177,7 +146,7 @@ std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
     next = e + 1;
     std::shared_ptr<const StoredStates> states;
     for (const auto& r : by_ensemble[e])
-      if (r.states_apart) states = StoredStates::open(state_file_path(states_dir, e));
+      if (r.states_apart) states = StoredStates::open(find_state_file(states_dirs, e));
     ComputedEnsemble c{reduce_ensemble_records(std::move(by_ensemble[e]), plan.realizations(e)), parallel,
                        std::move(states)};
     c.ensemble.wall_seconds = wall[e];
@@ -192,7 +161,7 @@ std::string write_from_records(const Scene& scene, const EnsemblePlan& plan,
     preflight(scene, *built);
     initial = &*built;
   }
-  return into_run_directory(dir, scene, options, [&](const fs::path& staging) {
+  return into_run_directory(out, dir, scene, options, [&](const fs::path& staging) {
     if (sweep)
       run_sweep(scene, *sweep, staging, options, source);
     else

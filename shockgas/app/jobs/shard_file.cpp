@@ -1,11 +1,14 @@
 #include "shockgas/app/jobs/shard_file.hpp"
 
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
 #include <sstream>
 
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/output/output_layout.hpp"
-#include "shockgas/app/output/partial_outputs.hpp"
+#include "shockgas/app/output/result_reader.hpp"
 #include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -16,12 +19,6 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string slice_or_all(const std::optional<Slice>& s) { return s ? slice_text(*s) : "all"; }
-
-std::map<std::string, std::string> attribute_map(const Hdf5File& h5, const std::string& object) {
-  std::map<std::string, std::string> m;
-  for (auto& [name, value] : h5.attributes(object)) m[name] = value;
-  return m;
-}
 
 fs::path shard_file(const std::string& dir) { return fs::path(dir) / "result.h5"; }
 
@@ -39,12 +36,6 @@ void write_report(const fs::path& dir, const Scene& scene, const EnsemblePlan& p
 
 void write_shard(const fs::path& dir, const Scene& scene, const EnsemblePlan& plan,
                  ComputedRecords computed) {
-  PartialOutputs outputs(dir);
-  // A shard is written in place: an earlier shard's manifest goes first, so
-  // that no file is ever vouched for by a manifest of other files; the new one
-  // is written last, over exactly the shard's files.
-  std::error_code ec;
-  fs::remove(dir / kManifestFile, ec);
   nlohmann::ordered_json summary;
   RunResults r;
   r.scene = &scene;
@@ -55,17 +46,46 @@ void write_shard(const fs::path& dir, const Scene& scene, const EnsemblePlan& pl
                          {computed.ranks, computed.threads, 0},
                          computed.wall_seconds};
   {
-    Hdf5File h5 = Hdf5File::create(outputs.h5_path());
+    Hdf5File h5 = Hdf5File::create((dir / "result.h5").string());
     for (Part part : {Part::provenance, Part::shard}) {
       write_part(h5, r, part);
       summarize_part(summary, r, part);
     }
     h5.close();
   }
+  write_file(dir / "summary.json", summary.dump(2) + "\n");
   write_report(dir, scene, plan);
-  outputs.commit(summary);
-  write_manifest_of(dir, scene.name, {"report.md", "result.h5", "summary.json"});
+  write_manifest(dir, scene.name);
 }
+
+namespace {
+
+// The attributes of a shard's group, each required: InputError naming the
+// shard for one its result.h5 lacks (a file no shard run wrote).
+std::map<std::string, std::string> required(const ResultContents& h5, const std::string& group,
+                                            const std::vector<std::string>& names, const std::string& dir,
+                                            const std::string& allowed) {
+  std::map<std::string, std::string> m;
+  for (const auto& [name, value] : h5.attributes_of(group)) m[name] = value;
+  for (const std::string& name : names)
+    if (!m.count(name))
+      throw InputError("shard", to_text(dir),
+                       allowed + " (its result.h5 has no " + (group == "/" ? "" : group) + "@" + name + ")");
+  return m;
+}
+
+// A whole number of a shard's attribute or path; InputError naming the shard.
+std::uint64_t whole_number(const std::string& text, const std::string& what, const std::string& dir) {
+  std::uint64_t n = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (ec != std::errc() || end != text.data() + text.size() || text.empty())
+    throw InputError(
+        "shard", to_text(dir),
+        "a shard whose result.h5 shockgas wrote (" + what + " is " + to_text(text) + ", not a whole number)");
+  return n;
+}
+
+}  // namespace
 
 ShardHeader read_shard_header(const std::string& dir) {
   const std::string allowed =
@@ -82,27 +102,45 @@ ShardHeader read_shard_header(const std::string& dir) {
   }
   ShardHeader h;
   h.dir = dir;
-  const Hdf5File h5 = Hdf5File::open(shard_file(dir).string());
-  h.provenance = attribute_map(h5, "/");
+  const ResultContents h5 = read_result(shard_file(dir));
   bool is_shard = false;
-  for (const auto& d : h5.datasets()) is_shard = is_shard || d.path.rfind("/shard/", 0) == 0;
+  for (const auto& d : h5.datasets) is_shard = is_shard || d.path.rfind("/shard/", 0) == 0;
   if (!is_shard) throw InputError("shard", to_text(dir), allowed + " (this one holds a whole run)");
-  h.shard = attribute_map(h5, "/shard");
-  h.overrides = nlohmann::json::parse(h.shard.at("overrides")).get<std::vector<std::string>>();
-  h.verified = h5.verification();
+  h.provenance =
+      required(h5, "/", {"shockgas_version", "git_commit", "resolved_parameters", "scene_text", "scene_path"},
+               dir, allowed);
+  h.shard =
+      required(h5, "/shard", {"overrides", "realizations", "variants", "ranks", "threads", "wall_seconds"},
+               dir, allowed);
+  const auto overrides = nlohmann::json::parse(h.shard.at("overrides"), nullptr, false);
+  if (!overrides.is_array() ||
+      !std::all_of(overrides.begin(), overrides.end(), [](const nlohmann::json& o) { return o.is_string(); }))
+    throw InputError("shard", to_text(dir), allowed + " (its /shard@overrides is not a JSON list of texts)");
+  h.overrides = overrides.get<std::vector<std::string>>();
+  h.ranks = whole_number(h.shard.at("ranks"), "/shard@ranks", dir);
+  h.threads = whole_number(h.shard.at("threads"), "/shard@threads", dir);
+  char* end = nullptr;
+  h.wall_seconds = std::strtod(h.shard.at("wall_seconds").c_str(), &end);
+  h.verified = h5.verification;
   return h;
 }
 
 std::vector<RealizationRecord> read_shard_records(const ShardHeader& shard) {
-  const Hdf5File h5 = Hdf5File::open(shard_file(shard.dir).string(), shard.verified);
+  const ResultContents h5 = read_result(shard_file(shard.dir), shard.verified, [](const std::string& path) {
+    return path.rfind("/shard/", 0) == 0;
+  });
   std::map<std::pair<std::size_t, std::uint64_t>, RecordFields> fields;
-  for (const auto& d : h5.datasets()) {
-    if (d.path.rfind("/shard/", 0) != 0) continue;
+  for (const auto& [path, values] : h5.values) {
     // /shard/{e}/{k}/{field...}
-    const auto e_end = d.path.find('/', 7), k_end = d.path.find('/', e_end + 1);
-    const std::size_t e = std::stoull(d.path.substr(7, e_end - 7));
-    const std::uint64_t k = std::stoull(d.path.substr(e_end + 1, k_end - e_end - 1));
-    fields[{e, k}].emplace_back(d.path.substr(k_end + 1), h5.read(d.path));
+    const auto e_end = path.find('/', 7);
+    const auto k_end = e_end == std::string::npos ? e_end : path.find('/', e_end + 1);
+    if (k_end == std::string::npos)
+      throw InputError("shard", to_text(shard.dir),
+                       "a shard whose result.h5 shockgas wrote (it holds " + printable(path) +
+                           ", not /shard/{e}/{k}/{field})");
+    const std::size_t e = whole_number(path.substr(7, e_end - 7), path, shard.dir);
+    const std::uint64_t k = whole_number(path.substr(e_end + 1, k_end - e_end - 1), path, shard.dir);
+    fields[{e, k}].emplace_back(path.substr(k_end + 1), values);
   }
   std::vector<RealizationRecord> records;
   for (auto& [key, f] : fields) records.push_back({key.first, key.second, from_fields(f)});

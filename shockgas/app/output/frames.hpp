@@ -4,7 +4,7 @@
 // what the exact solver's fields say of the wave's evolution
 // (shockgas/compare/field_evolution.hpp). Recorded only when a scene asks for an
 // animation; written under /animation (output_frames.cpp) and drawn by
-// scripts/animate.py from result.h5 alone.
+// plots/animate.py from result.h5 alone.
 #include <string>
 #include <vector>
 

@@ -2,6 +2,7 @@
 // hdf5_file_write.cpp.
 #include "shockgas/app/output/hdf5_file.hpp"
 
+#include <mutex>
 #include <utility>
 
 #include "shockgas/app/files/own_checksum.hpp"
@@ -10,6 +11,11 @@
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
+
+std::recursive_mutex& hdf5_calls() {
+  static std::recursive_mutex calls;
+  return calls;
+}
 
 namespace hdf5 {
 
@@ -201,12 +207,14 @@ H5Handle& H5Handle::operator=(H5Handle&& o) noexcept {
 std::int64_t H5Handle::release() { return std::exchange(id_, -1); }
 
 void H5Handle::reset() {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   if (id_ >= 0 && close_) close_(id_);
   id_ = -1;
 }
 
 // The latest format (its metadata checksummed) and a user block for the file's own checksum.
 Hdf5File Hdf5File::create(const std::string& path) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   init();
   H5Handle fcpl = plist(H5P_FILE_CREATE, path), fapl = plist(H5P_FILE_ACCESS, path);
   check(H5Pset_userblock(fcpl.get(), kOwnChecksumBytes), "H5Pset_userblock", path);
@@ -217,11 +225,10 @@ Hdf5File Hdf5File::create(const std::string& path) {
       path, Verification::own_checksum, true);
 }
 
-Hdf5File Hdf5File::open(const std::string& path) {
-  return open(path, check_result_file(path));  // before HDF5 reads a byte of it
-}
+Hdf5File Hdf5File::open(const std::string& path) { return open(path, check_result_file(path)); }
 
 Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   init();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0 && hdf5_says_truncated())
@@ -234,6 +241,7 @@ Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
 }
 
 Hdf5File Hdf5File::update(const std::string& path) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   init();
   return Hdf5File(
       H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file), path,
@@ -241,6 +249,7 @@ Hdf5File Hdf5File::update(const std::string& path) {
 }
 
 void Hdf5File::close() {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   const std::int64_t id = file_.release();
   if (id < 0) return;
   hsize_t user_block = 0;
@@ -253,6 +262,7 @@ void Hdf5File::close() {
 }
 
 H5Handle Hdf5File::ensure_group(const std::string& path) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   if (path == "/" || path.empty())
     return H5Handle(check(H5Gopen2(file_.get(), "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
   if (H5Lexists(file_.get(), path.c_str(), H5P_DEFAULT) > 0)
@@ -265,11 +275,13 @@ H5Handle Hdf5File::ensure_group(const std::string& path) {
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, const std::string& value) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   H5Handle obj = ensure_group(object);
   write_string_attribute(obj.get(), name, value);
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, double value) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   H5Handle obj = ensure_group(object);
   if (H5Aexists(obj.get(), name.c_str()) > 0) check(H5Adelete(obj.get(), name.c_str()), "H5Adelete", name);
   H5Handle space(check(H5Screate(H5S_SCALAR), "H5Screate", name), close_space);
@@ -281,6 +293,7 @@ void Hdf5File::set_attribute(const std::string& object, const std::string& name,
 }
 
 std::vector<DatasetInfo> Hdf5File::datasets() const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<DatasetInfo> list;
   each_dataset(file_.get(), [&](const std::string& path, hid_t set) {
     H5Handle type(check(H5Dget_type(set), "H5Dget_type", path), close_type);
@@ -295,6 +308,7 @@ std::vector<DatasetInfo> Hdf5File::datasets() const {
 }
 
 std::vector<std::string> Hdf5File::groups() const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<std::string> list;
   auto collect = [](hid_t, const char* name, const H5O_info_t* info, void* out) -> herr_t {
     if (info->type != H5O_TYPE_GROUP) return 0;
@@ -308,6 +322,7 @@ std::vector<std::string> Hdf5File::groups() const {
 }
 
 std::vector<std::pair<std::string, std::string>> Hdf5File::attributes(const std::string& object) const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<std::pair<std::string, std::string>> out;
   H5Handle obj(check(H5Oopen(file_.get(), object.c_str(), H5P_DEFAULT), "H5Oopen", object), close_object);
   H5O_info_t info;
@@ -321,6 +336,7 @@ std::vector<std::pair<std::string, std::string>> Hdf5File::attributes(const std:
 }
 
 std::vector<double> Hdf5File::read(const std::string& path) const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   H5Handle set(check(H5Dopen2(file_.get(), path.c_str(), H5P_DEFAULT), "H5Dopen2", path), close_dataset);
   H5Handle space = space_of(set.get(), path);
   const auto n = H5Sget_simple_extent_npoints(space.get());
@@ -331,6 +347,7 @@ std::vector<double> Hdf5File::read(const std::string& path) const {
 }
 
 std::vector<UnreadableDataset> Hdf5File::unreadable_datasets() const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<UnreadableDataset> out;
   each_dataset(file_.get(), [&](const std::string& path, hid_t set) {
     try {
@@ -350,6 +367,7 @@ void Hdf5File::check_every_chunk() const {
 }
 
 std::vector<ChunkExtent> Hdf5File::chunk_extents() const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<ChunkExtent> out;
   H5Handle fcpl(check(H5Fget_create_plist(file_.get()), "H5Fget_create_plist", path_), close_plist);
   hsize_t base = 0;  // chunk addresses count from the superblock, after the user block

@@ -1,6 +1,10 @@
 #pragma once
 // The one wrapper of the HDF5 C API in shockgas: RAII handles, every call
-// checked (a failure throws RunError naming the call and the object).
+// checked (a failure throws RunError naming the call and the object). Every
+// call holds hdf5_calls(), so that a child process forked to read a file
+// (result_reader.hpp) never starts while another thread is inside the
+// library. A result file is read through result_reader.hpp, never opened
+// here directly: the library may crash inside a damaged file.
 //
 // Every file is written in the library's latest format (superblock, object
 // headers and chunk indexes with checksums), with every dataset chunked and
@@ -10,6 +14,7 @@
 // is damaged, wherever the damage lies.
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +23,9 @@
 #include "shockgas/app/output/storage.hpp"
 
 namespace shockgas::app {
+
+// Held by every call into the HDF5 library (above).
+std::recursive_mutex& hdf5_calls();
 
 // Owns one HDF5 identifier and closes it with the matching H5*close.
 class H5Handle {
@@ -63,16 +71,17 @@ class Hdf5File {
  public:
   // Creates (truncates) a file for writing.
   static Hdf5File create(const std::string& path);
-  // Opens an existing result file read-only, after check_result_file()
-  // (result_check.hpp): FileProblem (exit 2) for a missing, damaged,
-  // truncated or unreadable file, before or instead of a crash inside HDF5,
-  // and for a file of a newer layout than this build reads (layout_version.hpp).
+  // Opens an existing file read-only that check_result_file() (result_check.hpp)
+  // has passed with this verdict: FileProblem (exit 2) for a file the library
+  // refuses, and for a file of a newer layout than this build reads
+  // (layout_version.hpp). For result_reader.cpp, which does so where a crash
+  // cannot hurt, and tests.
+  static Hdf5File open(const std::string& path, Verification checked);
+  // The same after check_result_file(): for tests, on files they made.
   static Hdf5File open(const std::string& path);
   // Opens an existing file to add to it (RunError if it cannot be opened); its
   // own checksum is written again on close().
   static Hdf5File update(const std::string& path);
-  // The same for a file check_result_file() has passed with this verdict.
-  static Hdf5File open(const std::string& path, Verification checked);
   // How open() checked the file; verified(): against its manifest or its own checksum.
   Verification verification() const { return verification_; }
   bool verified() const { return verification_ != Verification::no_manifest; }

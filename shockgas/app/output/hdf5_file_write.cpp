@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 
 #include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/hdf5_file_calls.hpp"
@@ -86,6 +87,7 @@ void write_values(hid_t set, Storage storage, const double* data, std::size_t co
 H5Handle Hdf5File::create_dataset(const std::string& path, Storage storage,
                                   const std::vector<std::uint64_t>& dims, const std::string& unit,
                                   const std::string& description) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   const std::vector<hsize_t> hdims(dims.begin(), dims.end());
   std::vector<hsize_t> max = hdims;  // an empty dimension may grow: a chunk of 1 is allowed there
   for (hsize_t& m : max)
@@ -107,6 +109,7 @@ H5Handle Hdf5File::create_dataset(const std::string& path, Storage storage,
 
 void Hdf5File::write(const std::string& path, const double* data, const std::vector<std::uint64_t>& dims,
                      Storage storage, const std::string& unit, const std::string& description) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::size_t count = 1;
   for (auto d : dims) count *= d;
   H5Handle set = create_dataset(path, storage, dims, unit, description);
@@ -126,6 +129,7 @@ Hdf5File::Writer::Writer(H5Handle set, std::string path, std::size_t size, Stora
 
 // Pieces are gathered into whole chunks, each written once as a hyperslab.
 void Hdf5File::Writer::append(const double* data, std::size_t count) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   if (written_ + block_.size() + count > size_) throw RunError("HDF5: more values than " + path_ + " holds");
   while (count > 0) {
     const std::size_t take = std::min(count, chunk_ - block_.size());
@@ -136,6 +140,7 @@ void Hdf5File::Writer::append(const double* data, std::size_t count) {
 }
 
 void Hdf5File::Writer::write_block() {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   if (block_.empty()) return;
   const hsize_t offset = written_, n = block_.size();
   H5Handle file_space = space_of(set_.get(), path_);
@@ -148,6 +153,7 @@ void Hdf5File::Writer::write_block() {
 }
 
 void Hdf5File::Writer::finish() {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   write_block();
   if (written_ != size_)
     throw RunError("HDF5: " + path_ + " got " + std::to_string(written_) + " of its " +

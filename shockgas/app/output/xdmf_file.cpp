@@ -35,8 +35,8 @@ std::string dims_text(const std::vector<std::uint64_t>& dims) {
 
 class Writer {
  public:
-  Writer(const Hdf5File& h5, std::string h5_name) : h5_(h5), name_(std::move(h5_name)) {
-    for (const DatasetInfo& d : h5.datasets()) sets_[d.path] = {d.shape, d.type};
+  Writer(const ResultContents& h5, std::string h5_name) : h5_(h5), name_(std::move(h5_name)) {
+    for (const DatasetInfo& d : h5.datasets) sets_[d.path] = {d.shape, d.type};
   }
 
   std::string text() {
@@ -52,9 +52,7 @@ class Writer {
   bool has(const std::string& path) const { return sets_.count(path) > 0; }
 
   std::string attribute(const std::string& object, const std::string& name) const {
-    for (const auto& [n, value] : h5_.attributes(object))
-      if (n == name) return value;
-    return "";
+    return h5_.attribute(object, name);
   }
 
   // The solvers with fields at t_end, or frames of the animation.
@@ -118,7 +116,7 @@ class Writer {
          << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     const std::string frames = "/animation/fields/" + solver;
     if (has(frames + "/x") && has("/animation/t")) {
-      const std::vector<double> t = h5_.read("/animation/t");
+      const std::vector<double>& t = h5_.values.at("/animation/t");
       std::map<std::string, std::string> fields;
       for (const char* f : {"v", "rho"})
         if (has(frames + "/" + f) && sets_.at(frames + "/" + f).dims.size() == 2)
@@ -167,7 +165,7 @@ class Writer {
     out_ << "  </Grid>\n";
   }
 
-  const Hdf5File& h5_;
+  const ResultContents& h5_;
   std::string name_;
   std::map<std::string, Shape> sets_;
   std::ostringstream out_;
@@ -175,11 +173,16 @@ class Writer {
 
 }  // namespace
 
-std::string xdmf_text(const Hdf5File& h5, const std::string& h5_name) { return Writer(h5, h5_name).text(); }
+std::string xdmf_text(const ResultContents& h5, const std::string& h5_name) {
+  return Writer(h5, h5_name).text();
+}
 
 void write_xdmf(const std::string& dir) {
   const fs::path h5 = fs::path(dir) / "result.h5";
-  write_file(fs::path(dir) / "result.xdmf", xdmf_text(Hdf5File::open(h5.string()), "result.h5"));
+  // Read as every result file is (result_reader.hpp), the times of the frames with it.
+  const ResultContents contents =
+      read_result(h5, [](const std::string& path) { return path == "/animation/t"; });
+  write_file(fs::path(dir) / "result.xdmf", xdmf_text(contents, "result.h5"));
 }
 
 }  // namespace shockgas::app

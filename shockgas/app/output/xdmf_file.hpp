@@ -14,13 +14,13 @@
 //               with the node attributes v and m
 #include <string>
 
-#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/output/result_reader.hpp"
 
 namespace shockgas::app {
 
-// The XML describing the file `h5` (read from its datasets and attributes), its
+// The XML describing the file `h5` (its datasets, attributes and /animation/t), its
 // data named by `h5_name` (the file's name beside the .xdmf, "result.h5").
-std::string xdmf_text(const Hdf5File& h5, const std::string& h5_name);
+std::string xdmf_text(const ResultContents& h5, const std::string& h5_name);
 
 // Writes <dir>/result.xdmf for <dir>/result.h5 (written and closed).
 void write_xdmf(const std::string& dir);

@@ -125,7 +125,7 @@ void write_checkpoint(const fs::path& dir, const Checkpoint& checkpoint) {
   const fs::path file = checkpoint_path(dir);
   const fs::path temporary = file.string() + ".partial-" + std::to_string(::getpid());
   const std::string bytes = to_bytes(checkpoint);
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int fd = open_new_file(temporary);
   const bool written = fd >= 0 && write_fully(fd, bytes) && ::fsync(fd) == 0;
   const bool closed = fd >= 0 && ::close(fd) == 0;
   if (!written || !closed || ::rename(temporary.c_str(), file.c_str()) != 0) {
@@ -156,10 +156,7 @@ Checkpoint read_checkpoint(const fs::path& dir) {
   return c;
 }
 
-std::string checkpoint_scene_name(const Checkpoint& checkpoint) {
-  const toml::parse_result resolved = toml::parse(checkpoint.resolved);
-  return resolved["scene"]["name"].value_or(std::string());
-}
+std::string checkpoint_scene_name(const Checkpoint& checkpoint) { return scene_name_of(checkpoint.resolved); }
 
 void remove_checkpoint(const fs::path& dir) {
   std::error_code ec;

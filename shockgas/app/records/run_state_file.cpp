@@ -181,7 +181,7 @@ void write_run_state(const fs::path& dir, const RunStateHeader& header,
                      const std::function<void(particles::RunStateWriter&)>& write) {
   const fs::path file = run_state_path(dir, header.ensemble, header.index);
   const fs::path temporary = file.string() + ".partial-" + std::to_string(::getpid());
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int fd = open_new_file(temporary);
   int error = fd < 0 ? errno : 0;
   if (fd >= 0) {
     FileOut out(fd);

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include "shockgas/app/files/durable_file.hpp"
@@ -34,10 +35,46 @@ StateFileEntry entry_of(const std::uint64_t* w) {
   return {w[0], std::bit_cast<double>(w[1]), w[2], w[3], {w[4], w[5], w[6]}};
 }
 
+// What StateFileWriter::saved() said: the bytes written and the index so far;
+// nullopt for bytes it cannot have written.
+struct Save {
+  std::uint64_t end = 0;
+  std::vector<StateFileEntry> index;
+};
+std::optional<Save> parse_save(const std::string& saved) {
+  std::vector<std::uint64_t> words(saved.size() / 8);
+  std::memcpy(words.data(), saved.data(), words.size() * 8);
+  if (words.size() < 2 || saved.size() % 8 != 0 || words[1] > words.size() ||
+      words.size() != 2 + words[1] * kEntryWords)
+    return std::nullopt;
+  Save save{words[0], {}};
+  for (std::size_t e = 0; e < words[1]; ++e) save.index.push_back(entry_of(&words[2 + kEntryWords * e]));
+  return save;
+}
+
 }  // namespace
 
 fs::path state_file_path(const fs::path& dir, std::uint64_t ensemble) {
   return dir / ("states-" + std::to_string(ensemble) + ".bin");
+}
+
+fs::path states_in_progress_path(const fs::path& dir, std::uint64_t ensemble) {
+  return state_file_path(dir, ensemble).string() + ".tmp";
+}
+
+fs::path find_state_file(const std::vector<fs::path>& dirs, std::uint64_t ensemble) {
+  std::error_code ec;
+  for (const fs::path& dir : dirs)
+    if (!dir.empty() && fs::exists(state_file_path(dir, ensemble), ec)) return state_file_path(dir, ensemble);
+  return state_file_path(dirs.empty() ? fs::path() : dirs.back(), ensemble);
+}
+
+void move_state_file(const fs::path& from, const fs::path& to, std::uint64_t ensemble) {
+  std::error_code ec;
+  if (from.empty() || from == to || !fs::exists(state_file_path(from, ensemble), ec)) return;
+  fs::create_directories(to, ec);
+  fs::rename(state_file_path(from, ensemble), state_file_path(to, ensemble), ec);
+  if (ec) throw RunError(write_failure(state_file_path(to, ensemble), ec.message()));
 }
 
 bool is_state_file(const fs::path& name) {
@@ -57,8 +94,8 @@ void remove_state_files(const fs::path& dir) {
 // ---- Writing ----
 
 StateFileWriter::StateFileWriter(fs::path path)
-    : path_(std::move(path)), temporary_(path_.string() + ".tmp") {
-  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    : path_(std::move(path)), temporary_(path_.string() + ".tmp") {  // states_in_progress_path
+  fd_ = open_new_file(temporary_);
   if (fd_ < 0) throw RunError(write_failure(temporary_, reason()));
   sink_.snapshot = [this](std::size_t k, double t, const particles::StateReader& s) { append(k, t, s); };
   sink_.final_state = [this](double t, const particles::StateReader& s) { append(kFinalState, t, s); };
@@ -70,13 +107,11 @@ StateFileWriter::StateFileWriter(fs::path path, const std::string& saved)
     return InputError("--resume", to_text(temporary_.string()),
                       "the states file of the saved run, as it was at the save (" + why + ")");
   };
-  std::vector<std::uint64_t> words(saved.size() / 8);
-  std::memcpy(words.data(), saved.data(), words.size() * 8);
-  if (words.size() < 2 || saved.size() % 8 != 0 || words.size() != 2 + words[1] * kEntryWords)
-    throw bad("a malformed save");
-  end_ = words[0];
-  for (std::size_t e = 0; e < words[1]; ++e) index_.push_back(entry_of(&words[2 + kEntryWords * e]));
-  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CLOEXEC);
+  std::optional<Save> save = parse_save(saved);
+  if (!save) throw bad("a malformed save");
+  end_ = save->end;
+  index_ = std::move(save->index);
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC);
   if (fd_ < 0) throw bad(reason());
   struct stat st {};
   if (::fstat(fd_, &st) != 0 || static_cast<std::uint64_t>(st.st_size) < end_ ||
@@ -101,6 +136,17 @@ std::string StateFileWriter::saved() {
   std::vector<std::uint64_t> words{end_, index_.size()};
   for (const StateFileEntry& e : index_) append_words(e, words);
   return std::string(reinterpret_cast<const char*>(words.data()), words.size() * 8);
+}
+
+void StateFileWriter::move_to(const fs::path& dir) {
+  if (temporary_.parent_path() == dir) return;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  const fs::path moved = dir / temporary_.filename();
+  fs::rename(temporary_, moved, ec);
+  if (ec) throw RunError(write_failure(moved, ec.message()));
+  temporary_ = moved;
+  path_ = dir / path_.filename();
 }
 
 void StateFileWriter::write_at(std::uint64_t offset, const void* data, std::size_t bytes) {
@@ -250,6 +296,32 @@ std::optional<std::string> StoredStates::problem(const fs::path& path) noexcept 
     };
     for (const State& state : file->snapshots_) read_all(state);
     read_all(file->final_state());
+    return std::nullopt;
+  } catch (const std::exception& e) {
+    return std::string(e.what());
+  } catch (...) {
+    return "unreadable";
+  }
+}
+
+std::optional<std::string> StoredStates::saved_problem(const fs::path& temporary,
+                                                       const std::string& saved) noexcept {
+  try {
+    const std::optional<Save> save = parse_save(saved);
+    if (!save) return "its save is malformed";
+    const int fd = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return "cannot read " + temporary.string() + ": " + reason();
+    const std::shared_ptr<StoredStates> file(new StoredStates(temporary, fd));
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || static_cast<std::uint64_t>(st.st_size) < save->end)
+      return "state file " + temporary.string() + " is shorter than its save says";
+    for (const StateFileEntry& e : save->index) {
+      if (e.offset > save->end || e.n > (save->end - e.offset) / 24)
+        return "state file " + temporary.string() + " is damaged: its save lists a state beyond its data";
+      const State state(file.get(),
+                        e.k == kFinalState ? "the final state" : "snapshot " + std::to_string(e.k), e);
+      for (int c = 0; c < 3; ++c) state.read_column(c, [](const double*, std::size_t) {});
+    }
     return std::nullopt;
   } catch (const std::exception& e) {
     return std::string(e.what());

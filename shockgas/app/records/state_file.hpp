@@ -5,11 +5,14 @@
 // and summary.json read it back in chunks. The process holds a few chunks of
 // it, never a whole state (docs/performance.md, "Memory of the command").
 //
-// The file, DIR/states-<ensemble>.bin, written beside the run's checkpoint
-// (checkpoint.hpp) so that a resumed run finds the states of a realization 0
-// saved before the interruption; written under a temporary name and renamed
-// when complete: a kill leaves the temporary one (which the next run removes)
-// or a whole file. It is put on the disk
+// The file, states-<ensemble>.bin, is written in the run's work directory
+// (run_directory.hpp) and moved beside the run's checkpoint (checkpoint.hpp:
+// DIR/states-<ensemble>.bin) when a checkpoint refers to it, so that a
+// resumed run finds the states of a realization 0 saved before the
+// interruption; written under a temporary name and renamed when complete: a
+// kill leaves the temporary one (in the work directory, which the next run
+// removes; beside a checkpoint, which its next save or the finished run's
+// result replaces) or a whole file. It is put on the disk
 // (fsync) only when a checkpoint that holds its record is saved
 // (checkpointer.hpp): a run that ends without one does not wait for it.
 // Its contents, numbers in the machine's byte order:
@@ -52,6 +55,15 @@ bool keeps_states_apart(const Scene& scene);
 
 // DIR/states-<ensemble>.bin
 std::filesystem::path state_file_path(const std::filesystem::path& dir, std::uint64_t ensemble);
+// DIR/states-<ensemble>.bin.tmp: the file while it is written (StateFileWriter).
+std::filesystem::path states_in_progress_path(const std::filesystem::path& dir, std::uint64_t ensemble);
+// The states file of `ensemble` in the first of dirs that holds it (a run's
+// work directory, then its checkpoint's); the path in the last if none does.
+std::filesystem::path find_state_file(const std::vector<std::filesystem::path>& dirs, std::uint64_t ensemble);
+// Moves the committed states file of `ensemble` from `from` into `to` (created
+// if missing), if it is in from; RunError if it cannot.
+void move_state_file(const std::filesystem::path& from, const std::filesystem::path& to,
+                     std::uint64_t ensemble);
 // Whether a file name is a state file's, or what a killed run left of one
 // (states-<ensemble>.bin, states-<ensemble>.bin.tmp).
 bool is_state_file(const std::filesystem::path& name);
@@ -84,6 +96,9 @@ class StateFileWriter {
   // (the save refers to them), as bytes for the constructor above; from now on
   // the temporary file outlives this writer (a resumed run goes on with it).
   std::string saved();
+  // Moves the file being written into dir (created if missing; the same file
+  // system), where a checkpoint refers to it; the writes go on there.
+  void move_to(const std::filesystem::path& dir);
 
  private:
   void append(std::uint64_t k, double t, const particles::StateReader& state);
@@ -128,6 +143,10 @@ class StoredStates {
   // What is wrong with the state file at path, every column read and checked;
   // nullopt when it is whole (for a resumed run).
   static std::optional<std::string> problem(const std::filesystem::path& path) noexcept;
+  // The same for the temporary file of a run saved while it ran: the states a
+  // save lists (StateFileWriter::saved()), each column against its checksum.
+  static std::optional<std::string> saved_problem(const std::filesystem::path& temporary,
+                                                  const std::string& saved) noexcept;
   ~StoredStates();
   StoredStates(const StoredStates&) = delete;
   StoredStates& operator=(const StoredStates&) = delete;

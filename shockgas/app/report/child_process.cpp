@@ -40,6 +40,7 @@ int status_code(int status) {
   if (getppid() != parent) _exit(127);  // the parent died before prctl
   signal(SIGINT, SIG_DFL);
   signal(SIGTERM, SIG_DFL);
+  signal(SIGPIPE, SIG_DFL);  // ignored by the command (signals.hpp), not by what it starts
   execv(argv[0], argv);
   _exit(127);
 }

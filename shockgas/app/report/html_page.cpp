@@ -65,6 +65,7 @@ tr:nth-child(even) td { background: #fafbfc; }
 pre { background: var(--band); padding: 1em; overflow-x: auto; font-size: 0.85em; white-space: pre-wrap; }
 details summary { cursor: pointer; color: var(--accent); margin: 0.6em 0; }
 .muted { color: var(--muted); }
+p.warning { border-left: 4px solid #b3261e; padding: 0.3em 0.8em; background: #fbeaea; }
 @media (max-width: 700px) { table.figures { table-layout: auto; } table { font-size: 0.85em; } }
 )";
 

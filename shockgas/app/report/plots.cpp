@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <regex>
 
+#include "shockgas/app/files/data_dir.hpp"
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/report/child_process.hpp"
 #include "shockgas/core/error.hpp"
@@ -15,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The plotting scripts' exit codes (scripts/plot_result.py): 3 a library is
+// The plotting scripts' exit codes (plots/plot_result.py): 3 a library is
 // missing, 4 a picture could not be written.
 constexpr int kMissingLibrary = 3, kCannotWrite = 4;
 
@@ -50,17 +51,24 @@ void remove_partial_pictures(const fs::path& dir) {
 }  // namespace
 
 std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
-                            const std::string& what, const std::string& log, const std::string& within) {
+                            const std::string& what, const std::string& log, const std::string& within,
+                            const std::vector<std::string>& args) {
   const char* env = env_override ? std::getenv(env_override) : nullptr;
-  const std::string python = "/usr/bin/python3",
-                    path = env ? env : std::string(SHOCKGAS_SOURCE_DIR) + "/scripts/" + script;
+  std::string tried;
+  const auto data = data_dir(&tried);
+  if (!env && !data)
+    return "shockgas: warning: no " + what + " (the plotting package is in none of " + tried +
+           "; set SHOCKGAS_DATA_DIR to the folder holding plots/)\n";
+  const std::string python = "/usr/bin/python3", path = env ? env : (*data / "plots" / script).string();
   if (!fs::exists(python) || !fs::exists(path))
     return "shockgas: warning: no " + what + " (" + (fs::exists(python) ? path : python) +
            " not found; run scripts/setup)\n";
   std::string said;
   int code = 0;
+  std::vector<std::string> command{python, path, dir};
+  command.insert(command.end(), args.begin(), args.end());
   try {
-    code = run_child({python, path, dir}, &said);  // Interrupted on SIGINT, SIGTERM
+    code = run_child(command, &said);  // Interrupted on SIGINT, SIGTERM
   } catch (...) {  // stopped: a finished directory (animate) keeps no half-written picture
     remove_partial_pictures(dir);
     throw;
@@ -94,8 +102,11 @@ std::string run_plot_script(const std::string& script, const char* env_override,
   return failed + "; its messages are kept in " + (within.empty() ? log : within + "/" + log) + ")\n";
 }
 
-std::string make_plots(const std::string& dir, const std::string& within) {
-  return run_plot_script("plot_result.py", "SHOCKGAS_PLOT_SCRIPT", dir, "plots", "plots.log", within);
+std::string make_plots(const std::string& dir, bool animation, const std::string& within) {
+  if (!animation)
+    return run_plot_script("plot_result.py", "SHOCKGAS_PLOT_SCRIPT", dir, "plots", "plots.log", within);
+  return run_plot_script("plot_result.py", "SHOCKGAS_PLOT_SCRIPT", dir, "plots and animation", "plots.log",
+                         within, {"--animation"});
 }
 
 std::string make_animation(const std::string& dir, const std::string& within) {

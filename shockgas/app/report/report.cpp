@@ -2,6 +2,7 @@
 #include "shockgas/app/report/report.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "shockgas/compare/theory.hpp"
@@ -27,6 +28,8 @@ void particles_part(std::ostream& out, const Scene& scene, const particles::Ense
     out << " (every collision merges)";
   else
     out << ", delta = " << brief(p.delta) << " (" << name_of(p.subthreshold) << " below it)";
+  if (p.restitution_law != particles::kConstantRestitution)
+    out << ", restitution law `" << p.restitution_law << "`";
   out << ", " << p.realizations << " realization(s), solver `" << name_of(p.solver) << "`.\n";
   out << "- " << e.total_collisions << " collisions in " << brief(e.wall_seconds) << " s ("
       << brief(std::round(rate)) << " per second).\n";
@@ -121,6 +124,19 @@ void comparison_part(std::ostream& out, const Scene& scene, const Comparison& cm
 }
 
 }  // namespace
+
+std::string phase_times_text(const std::vector<std::pair<std::string, double>>& phases) {
+  std::ostringstream out;
+  out << "## Time of each phase\n\n"
+      << "Wall-clock time of each phase of this run, named as its progress lines name them.\n\n"
+      << "| phase | wall time |\n|---|---|\n";
+  char seconds[32];
+  for (const auto& [name, time] : phases) {
+    std::snprintf(seconds, sizeof seconds, "%.2f s", time);
+    out << "| " << name << " | " << seconds << " |\n";
+  }
+  return out.str() + "\n";
+}
 
 std::string report_text(const RunResults& r) {
   const Scene& scene = *r.scene;

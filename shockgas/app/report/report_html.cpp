@@ -12,8 +12,9 @@
 #include <vector>
 
 #include "shockgas/app/files/durable_file.hpp"
-#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/files/file_problem.hpp"
 #include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/output/result_reader.hpp"
 #include "shockgas/app/report/html_page.hpp"
 #include "shockgas/app/report/report.hpp"
 #include "shockgas/core/error.hpp"
@@ -120,8 +121,8 @@ std::string figures_table(const Json& summary) {
 
 std::map<std::string, std::string> provenance(const fs::path& dir) {
   std::map<std::string, std::string> attrs;
-  for (const auto& [name, value] : Hdf5File::open((dir / "result.h5").string()).attributes("/"))
-    attrs[name] = value;
+  const ResultContents file = read_result(dir / "result.h5");
+  for (const auto& [name, value] : file.attributes_of("/")) attrs[name] = value;
   return attrs;
 }
 
@@ -177,13 +178,21 @@ std::string animation_section(const fs::path& dir) {
          "<code>shockgas animate</code>.</figcaption>\n</figure>\n";
 }
 
+// The plots drawn; where the plotting script failed (plots.log, plots.hpp),
+// a run that promised plots says that some may be missing, and why.
 std::string plots_section(const fs::path& dir) {
   std::vector<fs::path> pngs;
   for (const auto& f : fs::directory_iterator(dir))
     if (f.path().extension() == ".png" && f.path().filename() != "animation.png") pngs.push_back(f.path());
-  if (pngs.empty()) return "";
+  const bool failed = fs::exists(dir / "plots.log");
+  if (pngs.empty() && !failed) return "";
   std::sort(pngs.begin(), pngs.end());
   std::string out = "<h2 id=\"plots\">Plots</h2>\n";
+  if (failed)
+    out += "<p class=\"warning\">The plotting script failed: " + std::to_string(pngs.size()) + " picture" +
+           (pngs.size() == 1 ? " was" : "s were") +
+           " drawn before it stopped, and the others are missing. What it said is kept in "
+           "<code>plots.log</code> beside this report.</p>\n";
   for (const auto& png : pngs) {
     const std::string caption = html::png_title(png).value_or(png.stem().string());
     out += "<figure>\n<img alt=\"" + html::escape(caption) + "\" src=\"" + html::data_uri(png, "image/png") +
@@ -231,7 +240,12 @@ std::string scene_section(const std::map<std::string, std::string>& p, const std
 Json read_summary(const fs::path& dir) {
   std::ifstream in(dir / "summary.json");
   if (!in) throw RunError("report.html: no summary.json in " + dir.string());
-  return Json::parse(in);
+  try {
+    return Json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw FileProblem("summary.json", (dir / "summary.json").string(), "damaged",
+                      "not JSON as a run writes it (a syntax error at byte " + std::to_string(e.byte) + ")");
+  }
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/output/result_reader.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -63,9 +63,13 @@ nlohmann::ordered_json read_summary(const fs::path& h5) {
   if (!in) return nlohmann::ordered_json::object();
   try {
     return nlohmann::ordered_json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(
+        "summary.json", to_text((h5.parent_path() / "summary.json").string()),
+        "valid JSON, as a run writes it (a syntax error at byte " + std::to_string(e.byte) + ")");
+  } catch (const nlohmann::json::exception&) {
     throw InputError("summary.json", to_text((h5.parent_path() / "summary.json").string()),
-                     std::string("valid JSON (") + e.what() + ")");
+                     "valid JSON, as a run writes it");
   }
 }
 
@@ -86,18 +90,18 @@ CapturedOutputs read_outputs(const std::string& path) {
   const fs::path h5_path = result_file(path);
   if (!fs::is_regular_file(h5_path))
     throw InputError("RESULT.h5", to_text(h5_path.string()), "an existing shockgas result file (HDF5)");
-  const Hdf5File file = Hdf5File::open(h5_path.string());
+  ResultContents file = read_result(h5_path, [](const std::string&) { return true; });
   CapturedOutputs out;
-  for (const DatasetInfo& d : file.datasets())
-    out.datasets[d.path] = {file.read(d.path),
+  for (const DatasetInfo& d : file.datasets)
+    out.datasets[d.path] = {std::move(file.values[d.path]),
                             {d.shape.begin(), d.shape.end()},
                             d.unit,
                             d.description,
                             d.type == "float32" ? Storage::float32
                             : d.type == "int64" ? Storage::integer
                                                 : Storage::float64};
-  for (const std::string& group : file.groups())
-    for (const auto& [name, text] : file.attributes(group)) {
+  for (const std::string& group : file.groups)
+    for (const auto& [name, text] : file.attributes_of(group)) {
       const std::string concrete = group + "@" + name;
       out.attributes[concrete] = attribute_value(concrete, text);
     }

@@ -8,6 +8,7 @@
 #include <exception>
 
 #include "shockgas/app/files/fault.hpp"
+#include "shockgas/core/thread_start.hpp"
 
 namespace shockgas::app {
 
@@ -111,16 +112,16 @@ void ProgressBar::end_line() {
 
 void ProgressBar::phase(const std::string& name) {
   end_phase(nullptr);
-  if (!enabled_) return;
   std::lock_guard<std::mutex> lock(mutex_);
   phase_ = name + about_;
   phase_start_ = Clock::now();
-  in_phase_ = true;
+  in_phase_ = true;  // timed even when nothing is said
+  if (!enabled_) return;
   if (phase_start_ - process_start >= kSilent) {
     announce();
     return;
   }
-  announcer_ = std::thread([this] {
+  announcer_ = start_thread([this] {
     std::unique_lock<std::mutex> held(mutex_);
     if (!phase_ended_.wait_until(held, process_start + kSilent, [this] { return !in_phase_; })) announce();
   });
@@ -138,10 +139,11 @@ void ProgressBar::end_phase() { end_phase(nullptr); }
 void ProgressBar::end_phase(const char* outcome) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    const double seconds = std::chrono::duration<double>(Clock::now() - phase_start_).count();
+    if (in_phase_) timed_.emplace_back(phase_, seconds);
     if (in_phase_ && announced_) {
       char done[32];
-      std::snprintf(done, sizeof done, "%.1f s",
-                    std::chrono::duration<double>(Clock::now() - phase_start_).count());
+      std::snprintf(done, sizeof done, "%.1f s", seconds);
       if (!line_open_) {
         end_line();
         std::fprintf(stderr, "%s: ", phase_.c_str());

@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "shockgas/core/progress.hpp"
 
@@ -46,6 +48,9 @@ class ProgressBar {
   // "NAME: 3.9 s". The listener does not hear of phases.
   void phase(const std::string& name);
   void end_phase();
+  // Every phase ended so far, in order, with its wall time in seconds, whether
+  // or not it was said (--quiet, the first second): for report.md.
+  const std::vector<std::pair<std::string, double>>& phase_times() const { return timed_; }
   // Names every phase after this one as about `what` ("plots (r=0.5)"): a
   // sweep's variant.
   void name_phases(const std::string& what) { about_ = " (" + what + ")"; }
@@ -82,6 +87,7 @@ class ProgressBar {
   std::string phase_, about_;
   Clock::time_point phase_start_;
   bool in_phase_ = false, announced_ = false, line_open_ = false;
+  std::vector<std::pair<std::string, double>> timed_;
   std::thread announcer_;
   std::condition_variable phase_ended_;
   int unwinding_ = 0;  // std::uncaught_exceptions() when constructed

@@ -28,7 +28,6 @@ namespace {
 
 // Measured costs (tests/app/test_resources.cpp holds the total against the peak
 // resident memory of real runs):
-constexpr double kProcessBase = 26e6;  // the program and its libraries, resident (measured 24.5 MB)
 // Copies of the records held at the peak (measured with threads = 1): a
 // histogram 2R + 3 times (each realization's, kept and written with the
 // ensemble's, scaled and written: 5.0 at R = 1), a space-time record R + 1
@@ -287,7 +286,7 @@ const ResourceItem& ResourceEstimate::largest() const {
 
 ResourceEstimate estimate_memory(const Scene& scene) {
   ResourceEstimate e;
-  e.items.push_back({"", "the program and its libraries", kProcessBase});
+  e.items.push_back({"", "the program and its libraries", kProcessBaseBytes});
   const auto runs = runs_of(scene);
   std::vector<ResourceItem> biggest;
   double biggest_total = -1, initial_conditions = 0;
@@ -340,14 +339,31 @@ void require_memory(const ResourceEstimate& memory, const std::string& what,
                 estimate_text(memory, limit.bytes, "available (" + limit.source + ")"));
 }
 
+void require_threads(std::size_t threads,
+                     const std::function<InputError(const std::string& allowed)>& refusal) {
+  const std::size_t cores = usable_cores(), most = kThreadsPerCore * cores;
+  if (threads <= most) return;
+  throw refusal("0 (one thread per core) or at most " + std::to_string(most) + ": " +
+                std::to_string(kThreadsPerCore) + " for each of the " + std::to_string(cores) +
+                " cores this process may use (its CPU affinity and quota)");
+}
+
 void check_memory(const Scene& scene) {
+  const auto located = [&](const std::string& key, const std::string& value, const std::string& allowed) {
+    const auto origin = scene.key_origin.find(key);
+    return InputError(key.empty() ? "scene" : key, value, allowed,
+                      origin != scene.key_origin.end() ? origin->second : scene.path);
+  };
   const ResourceEstimate memory = estimate_memory(scene);
   require_memory(memory, "a scene", [&](const std::string& allowed) {
     const std::string key = blamed_key(scene, memory.largest());
-    const auto origin = scene.key_origin.find(key);
-    return InputError(key.empty() ? "scene" : key, value_of(scene, key), allowed,
-                      origin != scene.key_origin.end() ? origin->second : scene.path);
+    return located(key, value_of(scene, key), allowed);
   });
+  for (const Scene& run : runs_of(scene))
+    if (run.has_particles)
+      require_threads(run.particles.threads, [&](const std::string& allowed) {
+        return located("particles.threads", to_text(run.particles.threads), allowed);
+      });
 }
 
 void check_resources(const Scene& scene, const fs::path& out, bool plots) {

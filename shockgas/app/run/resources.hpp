@@ -58,6 +58,8 @@ void check_resources(const Scene& scene, const std::filesystem::path& out, bool 
 
 // x, v, m of one body in memory.
 inline constexpr double kBodyBytes = 24;
+// The program and its libraries, resident (measured 24.5 MB).
+inline constexpr double kProcessBaseBytes = 26e6;
 
 // Refuses work whose estimate exceeds the memory this process may still use:
 // throws refusal(allowed), allowed = "WHAT that fits in the memory available:
@@ -65,7 +67,16 @@ inline constexpr double kBodyBytes = 24;
 void require_memory(const ResourceEstimate& memory, const std::string& what,
                     const std::function<InputError(const std::string& allowed)>& refusal);
 
-// The memory half of check_resources, for work that writes no directory (the
+// Threads a process may run: at most kThreadsPerCore for each core it may use
+// (usable_cores, core/cores.hpp: its CPU affinity and quota). More only wait
+// for the cores, and a count without bound took every process slot of the
+// system. Throws refusal(allowed) for more.
+inline constexpr std::size_t kThreadsPerCore = 8;
+void require_threads(std::size_t threads,
+                     const std::function<InputError(const std::string& allowed)>& refusal);
+
+// The memory half of check_resources, and the threads (particles.threads of
+// the scene and of every variant), for work that writes no directory too (the
 // Python module's calls, which would otherwise end in the kernel's
 // out-of-memory killer).
 void check_memory(const Scene& scene);

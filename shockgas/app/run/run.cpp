@@ -1,8 +1,12 @@
 // Running a scene: the initial condition built once, every part the scene asks
 // for in order (particles, continuum, comparison), each written as soon as it is
-// done, then summary.json, report.md, the plots and the manifest, all into the
-// staging directory that replaces the output directory at the end.
+// done, then summary.json, the plots, report.md (with the time of each phase)
+// and the manifest, all into the staging directory that replaces the output
+// directory at the end.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/directory/run_target.hpp"
@@ -65,14 +69,10 @@ InputError located(const InputError& e, const Scene& scene) {
 }
 
 void draw_plots(const fs::path& dir, bool animation, ProgressBar& progress, const std::string& within) {
-  const auto draw = [&](const char* what, std::string (*script)(const std::string&, const std::string&)) {
-    progress.phase(what);
-    const std::string said = script(dir.string(), within);
-    progress.end_phase();
-    progress.say(said);
-  };
-  draw("plots", make_plots);
-  if (animation) draw("animation", make_animation);
+  progress.phase(animation ? "plots, animation" : "plots");
+  const std::string said = make_plots(dir.string(), animation, within);
+  progress.end_phase();
+  progress.say(said);
 }
 
 // Only the continuum needs realization 0's bodies whole (its deposit); the
@@ -86,12 +86,52 @@ InitialCondition build_initial(const Scene& scene) {
   }
 }
 
+namespace {
+
+// The largest speed of realization 0: of its bodies where they are held, else
+// the bound of its velocities (uniform ones; Gaussian ones to 40 sd) [length/time].
+double top_speed(const InitialCondition& initial) {
+  if (initial.holds_bodies()) {
+    double v = 0;
+    for (const double u : initial.bodies().v) v = std::max(v, std::abs(u));
+    return v;
+  }
+  const InitialParams& p = initial.params();
+  return p.velocities == Velocities::gaussian ? 40 * p.amplitude : p.amplitude;
+}
+
+// Times whose travel t max|v| leaves the range of doubles, and a threshold
+// whose cluster gap sqrt(delta t) does: refused before any work under the
+// scene's key (the exact hull and the clusters refused them after the work,
+// as "t" and "cluster.max_gap").
+void check_reach(const Scene& scene, const InitialCondition& initial) {
+  const double most = std::numeric_limits<double>::max() / 8, v = top_speed(initial),
+               x = 2 * initial.length();
+  const auto reach = [&](const std::string& key, double t) {
+    require(v == 0 || t * v < most - x, key, t,
+            "at most " + to_text((most - x) / v, 3) + " for these bodies (max |v| = " + to_text(v, 3) +
+                "): x + t v must stay within the range of doubles");
+  };
+  if (scene.has_particles) {
+    reach("particles.t_end", scene.particles.t_end);
+    require(
+        scene.particles.delta * scene.particles.t_end < most, "particles.delta", scene.particles.delta,
+        "at most " + to_text(most / scene.particles.t_end, 3) +
+            " for particles.t_end: the clusters' gap sqrt(delta t) must stay within the range of doubles");
+  }
+  if (scene.has_continuum) reach("continuum.t_end", scene.continuum_t_end());
+}
+
+}  // namespace
+
 // Every solver's own limits (CFL bound, cells against nu, ...) are checked by its
 // registered preflight, without solving, and the particle engine checks a
 // requested schedule against the initial bodies, so that bad input stops the
-// run before any work and before anything is written.
+// run before any work and before anything is written; so are times and
+// thresholds beyond the range of doubles.
 void preflight(const Scene& scene, const InitialCondition& initial) {
   try {
+    check_reach(scene, initial);
     if (scene.has_particles && scene.particles.solver == particles::ParticleSolver::events &&
         scene.particles.schedule == particles::Schedule::windows)
       particles::check_schedule(initial, scene.particles);
@@ -154,24 +194,29 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
           throw_if_aborted();
         },
         source);
-    progress.phase("writing result.h5, summary.json, report.md");
+    progress.phase("writing result.h5, summary.json");
     h5.close();
   }
   write_xdmf(dir.string());
   write_file(dir / "summary.json", summary.dump(2) + "\n");
-  write_file(dir / "report.md", report_text(r));
   if (options.plots && scene.output.plots)
     draw_plots(dir, scene.output.animation, progress,
                variant != std::string::npos ? dir.filename().string() : "");
-  progress.phase("writing report.html, manifest.json");
+  progress.end_phase();
+  auto phases = progress.phase_times();
+  if (r.particles)
+    phases.insert(phases.begin(), {"particles: simulation", r.particles->ensemble.wall_seconds});
+  const std::string report = report_text(r) + phase_times_text(phases);
+  progress.phase("writing report.md, report.html, manifest.json");
+  write_file(dir / "report.md", report);
   write_report_html(dir);
   write_manifest(dir, scene.name);
   return reduce(r, std::move(summary));
 }
 
-std::string into_run_directory(const fs::path& out, const Scene& scene, const RunOptions& options,
+std::string into_run_directory(RunDirectory& dir, const fs::path& out, const Scene& scene,
+                               const RunOptions& options,
                                const std::function<void(const fs::path& staging)>& write) {
-  RunDirectory dir(out, scene.name, options.force);
   try {
     write(dir.staging());
   } catch (const InputError& e) {  // a rule checked where the work starts (the engine's own)

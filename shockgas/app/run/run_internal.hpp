@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/output/output_layout.hpp"
 #include "shockgas/app/output/run_results.hpp"
 #include "shockgas/app/run/progress_bar.hpp"
@@ -22,6 +23,12 @@ InputError located(const InputError& e, const Scene& scene);
 // Realization 0's bodies are held only where a continuum needs them (or they
 // cannot be drawn on the fly); the particles and the writers draw them in chunks.
 InitialCondition build_initial(const Scene& scene);
+
+// The progress of a continuum solve (solver `name`), which fails it with a
+// RunError once it has taken longer than the run's wall limit
+// (particles.max_wall_seconds, if set): a solve obeys the limit a realization
+// obeys, at its progress points.
+ProgressCallback wall_limited(const Scene& scene, const std::string& name, ProgressCallback report);
 
 // Each continuum solver's own limits (its registered preflight) and a requested
 // particle schedule, checked before any work; InputError located at the key.
@@ -53,8 +60,9 @@ struct SweepPlan {
 };
 SweepPlan plan_sweep(const Scene& scene);
 
-// The plots of a result directory, and its animation: each a phase of progress,
-// what their scripts say told after it (plots.hpp); within as there.
+// The plots of a result directory, with its animation when asked: one phase of
+// progress ("plots", "plots, animation"), drawn by one process, what it says
+// told after it (plots.hpp); within as there.
 void draw_plots(const std::filesystem::path& dir, bool animation, ProgressBar& progress,
                 const std::string& within = "");
 
@@ -63,10 +71,10 @@ void draw_plots(const std::filesystem::path& dir, bool animation, ProgressBar& p
 void run_sweep(const Scene& scene, SweepPlan& plan, const std::filesystem::path& dir,
                const RunOptions& options, const EnsembleSource& source = {});
 
-// Runs write(staging) into a run directory for out (run_directory.hpp: checked,
-// locked, staged) and moves it into place when write returns; returns out. An
-// InputError from write is located at the scene's key.
-std::string into_run_directory(const std::filesystem::path& out, const Scene& scene,
+// Runs write(dir.staging()) and moves the staging directory into place (dir:
+// made before any work, run_directory.hpp); returns out, the target as given.
+// An InputError from write is located at the scene's key.
+std::string into_run_directory(RunDirectory& dir, const std::filesystem::path& out, const Scene& scene,
                                const RunOptions& options,
                                const std::function<void(const std::filesystem::path& staging)>& write);
 

@@ -1,10 +1,14 @@
 // Stage 2: the continuum solvers, side by side, each measured against the exact
 // solver when the scene runs it too (its L1 distance, per unit length and
 // relative: shockgas/compare/field_distance.hpp) and against its own initial mass (the drift).
+#include <chrono>
+
 #include "shockgas/app/output/run_results.hpp"
 #include "shockgas/app/run/progress_bar.hpp"
+#include "shockgas/app/run/run_internal.hpp"
 #include "shockgas/continuum/registry.hpp"
 #include "shockgas/continuum/solve.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 
@@ -27,6 +31,19 @@ void assess(ContinuumRun& run, const continuum::ContinuumResult* exact, double m
 
 }  // namespace
 
+ProgressCallback wall_limited(const Scene& scene, const std::string& name, ProgressCallback report) {
+  const double limit = scene.has_particles ? scene.particles.max_wall_seconds : 0;
+  if (limit <= 0) return report;
+  const auto start = std::chrono::steady_clock::now();
+  return [=](double fraction, double t) {
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limit)
+      throw RunError("continuum: " + name + " had reached t = " + to_text(t, 4) + " of " +
+                     to_text(scene.continuum_t_end()) + " when the wall limit particles.max_wall_seconds = " +
+                     to_text(limit) + " s ran out (a smaller continuum.t_end or fewer cells end sooner)");
+    if (report) report(fraction, t);
+  };
+}
+
 std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial,
                                         ProgressBar& progress) {
   const InitialField& field = initial.field();
@@ -34,7 +51,8 @@ std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialConditi
   for (const auto& name : scene.continuum.solvers) {
     progress.stage("continuum/" + name);
     ContinuumRun run;
-    run.result = continuum::solve(name, field, scene.continuum, scene.continuum_t_end(), progress.callback());
+    run.result = continuum::solve(name, field, scene.continuum, scene.continuum_t_end(),
+                                  wall_limited(scene, name, progress.callback()));
     runs.push_back(std::move(run));
     progress.finish();
   }

@@ -5,6 +5,7 @@
 
 #include "shockgas/app/output/frames.hpp"
 #include "shockgas/app/run/progress_bar.hpp"
+#include "shockgas/app/run/run_internal.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
 #include "shockgas/compare/theory.hpp"
 #include "shockgas/continuum/registry.hpp"
@@ -48,8 +49,8 @@ Frames run_frames(const Scene& scene, const InitialCondition& initial,
   if (!scene.has_continuum) return f;
   for (const auto& name : scene.continuum.solvers) {
     progress.stage("frames/" + name);
-    f.fields.push_back(
-        continuum::solve_at_times(name, initial.field(), scene.continuum, f.t, progress.callback()));
+    f.fields.push_back(continuum::solve_at_times(name, initial.field(), scene.continuum, f.t,
+                                                 wall_limited(scene, name, progress.callback())));
     progress.finish();
   }
   const std::size_t k = measured_solver(scene.continuum.solvers);

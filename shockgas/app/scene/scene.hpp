@@ -102,6 +102,9 @@ std::string resolved_scene_text(const Scene& scene);
 // The resolved parameters (resolved_scene_text) that decide the results: all
 // but the thread count and the checkpoint interval.
 std::string physics_of(const std::string& resolved);
+// The scene's name in resolved parameters ([scene] name); "" where the text
+// is not TOML or names none.
+std::string scene_name_of(const std::string& resolved);
 // The first line in which two texts differ, "`a` against `b`"; "" if none.
 std::string first_difference(const std::string& a, const std::string& b);
 

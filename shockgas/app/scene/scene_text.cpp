@@ -1,5 +1,7 @@
 // Scenes as text: the commented default scene, the resolved parameters and
 // docs/scenes.md, all printed from the key declarations (scene_schema.hpp).
+#include <toml++/toml.h>
+
 #include <cctype>
 #include <sstream>
 
@@ -116,6 +118,14 @@ std::string physics_of(const std::string& resolved) {
   for (std::string line; std::getline(in, line);)
     if (line.rfind("threads", 0) != 0 && line.rfind("checkpoint_minutes", 0) != 0) out += line + "\n";
   return out;
+}
+
+std::string scene_name_of(const std::string& resolved) {
+  try {
+    return toml::parse(resolved)["scene"]["name"].value_or(std::string());
+  } catch (const toml::parse_error&) {
+    return "";
+  }
 }
 
 std::string first_difference(const std::string& a, const std::string& b) {
