@@ -32,7 +32,9 @@ std::pair<int, std::string> run_scene_text(const fs::path& root, const std::stri
                                    "-q"};
   args.insert(args.end(), extra.begin(), extra.end());
   auto result = run_child(args);
-  if (result.first == 2) EXPECT_FALSE(fs::exists(root / "out")) << result.second;
+  if (result.first == 2) {
+    EXPECT_FALSE(fs::exists(root / "out")) << result.second;
+  }
   return result;
 }
 
