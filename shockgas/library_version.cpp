@@ -1,6 +1,7 @@
 // The version of the shared library a program runs with, to compare with the
-// one its headers declare (shockgas/version.hpp): shockgas::kVersion.
-#include "shockgas/shockgas.hpp"
+// one its headers declare (shockgas/version.hpp): shockgas::kVersion. Declared
+// in the facade (shockgas/shockgas.hpp), which no part of shockgas includes.
+#include "shockgas/version.hpp"
 
 namespace shockgas {
 

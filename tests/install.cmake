@@ -49,3 +49,5 @@ add_test(NAME install.deb COMMAND sh ${install_scripts}/deb_package.sh ${CMAKE_C
 get_property(install_tests DIRECTORY PROPERTY TESTS)
 list(FILTER install_tests INCLUDE REGEX "^install\\.")
 set_tests_properties(${install_tests} PROPERTIES LABELS install SKIP_RETURN_CODE 77 TIMEOUT 300)
+# cpack first brings `all` up to date (its preinstall step), then packs and compresses.
+set_tests_properties(install.deb PROPERTIES TIMEOUT 900)

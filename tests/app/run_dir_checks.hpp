@@ -82,10 +82,6 @@ inline fs::path fresh_dir(const std::string& name) {
   return shockgas::testing_support::fresh_process_directory("shockgas-test-", name);
 }
 
-// The plotting package of the source tree (plots/), which the command finds as
-// data_dir()/plots (shockgas/app/files/data_dir.hpp).
-inline fs::path plots_dir() { return fs::path(SHOCKGAS_SOURCE_DIR) / "plots"; }
-
 // Two small scenes of different names (a few tenths of a second each).
 inline const char* kSceneA =
     "[scene]\nname = \"alpha\"\n[initial]\nN = 500\n[particles]\nr = 0.5\nt_end = 50\nsamples = 8\n"

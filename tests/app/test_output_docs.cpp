@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "run_command.hpp"
-#include "run_dir_checks.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/output_layout.hpp"
 #include "shockgas/app/report/plots.hpp"
@@ -32,7 +31,6 @@ std::string read_file(const fs::path& path) {
   return text.str();
 }
 
-using testing::plots_dir;
 using testing_support::run;
 
 // Runs `scene` (text) into a fresh directory and returns it; `options`: more of the command line.

@@ -50,16 +50,20 @@ void remove_partial_pictures(const fs::path& dir) {
 
 }  // namespace
 
+fs::path plots_dir() {
+  const auto data = data_dir();
+  return data ? *data / "plots" : fs::path();
+}
+
 std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
                             const std::string& what, const std::string& log, const std::string& within,
                             const std::vector<std::string>& args) {
   const char* env = env_override ? std::getenv(env_override) : nullptr;
   std::string tried;
-  const auto data = data_dir(&tried);
-  if (!env && !data)
+  if (!env && !data_dir(&tried))
     return "shockgas: warning: no " + what + " (the plotting package is in none of " + tried +
            "; set SHOCKGAS_DATA_DIR to the folder holding plots/)\n";
-  const std::string python = "/usr/bin/python3", path = env ? env : (*data / "plots" / script).string();
+  const std::string python = "/usr/bin/python3", path = env ? env : (plots_dir() / script).string();
   if (!fs::exists(python) || !fs::exists(path))
     return "shockgas: warning: no " + what + " (" + (fs::exists(python) ? path : python) +
            " not found; run scripts/setup)\n";

@@ -5,9 +5,13 @@
 
 namespace shockgas::app {
 
-// Runs data_dir()/plots/<script> (shockgas/app/files/data_dir.hpp) DIR with Debian's /usr/bin/python3
-// (matplotlib, h5py); env_override names an environment variable that may give another script path. Returns
-// what to tell the user on stderr, whole lines (empty: nothing):
+// The folder of the drawing scripts: data_dir()/plots (shockgas/app/files/data_dir.hpp),
+// empty where there is none. The one place the command looks them up.
+std::filesystem::path plots_dir();
+
+// Runs plots_dir()/<script> DIR with Debian's /usr/bin/python3 (matplotlib, h5py);
+// env_override names an environment variable that may give another script path.
+// Returns what to tell the user on stderr, whole lines (empty: nothing):
 // - when the script ran to its end, what it said there (its own warnings);
 // - else one warning naming `what` and the reason: python, the script or a
 //   plotting library missing, or the script failed (the reason: the last line
