@@ -209,13 +209,21 @@ std::vector<Declaration> records() {
   };
   d.push_back(dataset(p, "/particles/spacetime/t", "time", "frame times", st,
                       spacetime([](const particles::SpaceTime& s, Emitter& out) { out.values(s.t); })));
-  d.push_back(
-      stored_as(Storage::float32, dataset(p, "/particles/spacetime/x", "length",
-                                          "position of every original particle at each frame (realization "
-                                          "0), for drawing its world line",
-                                          st, spacetime([](const particles::SpaceTime& s, Emitter& out) {
-                                            out.matrix(s.x, s.t.size(), s.n);
-                                          }))));
+  d.push_back(stored_as(
+      Storage::integer,
+      dataset(p, "/particles/spacetime/label", "1",
+              "the labels (0 .. N-1, in initial order) of the particles whose world lines x holds, one per "
+              "column: at most particles.spacetime_particles, evenly spaced, the first and the last always",
+              st, spacetime([](const particles::SpaceTime& s, Emitter& out) {
+                out.values(std::vector<double>(s.labels.begin(), s.labels.end()));
+              }))));
+  d.push_back(stored_as(Storage::float32,
+                        dataset(p, "/particles/spacetime/x", "length",
+                                "position of each recorded particle (columns: /particles/spacetime/label) at "
+                                "each frame (realization 0), for drawing its world line",
+                                st, spacetime([](const particles::SpaceTime& s, Emitter& out) {
+                                  out.matrix(s.x, s.t.size(), s.labels.size());
+                                }))));
   return d;
 }
 

@@ -50,6 +50,11 @@ constexpr double kPlotsBytes = 0.9e6 * (1 + 4.0 / 3);
 
 double d(std::size_t n) { return static_cast<double>(n); }
 
+// The columns of the space-time record (particles/run_result.hpp: spacetime_labels).
+double recorded_world_lines(const Scene& s) {
+  return d(std::min<std::size_t>(s.initial.N, s.particles.spacetime_particles));
+}
+
 // The realizations that run at once: the ensemble's own split of the threads.
 std::size_t concurrent_runs(const particles::ParticleParams& p) {
   return particles::split_threads(p.threads == 0 ? usable_cores() : p.threads, p.realizations).runs;
@@ -81,8 +86,9 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   if (p.spacetime)
     items.push_back({"particles.spacetime",
                      "the space-time records of every realization",
-                     (R + kSpacetimeCopies) * d(p.spacetime_frames) * N * 8,
-                     {"particles.spacetime_frames", "initial.N", "particles.realizations"}});
+                     (R + kSpacetimeCopies) * d(p.spacetime_frames) * recorded_world_lines(s) * 8,
+                     {"particles.spacetime_frames", "particles.spacetime_particles", "initial.N",
+                      "particles.realizations"}});
 }
 
 // A continuum solver at work, bytes per cell (its registration's measure); a
@@ -141,8 +147,8 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
     if (p.spacetime)
       items.push_back({"particles.spacetime",
                        "the space-time record",
-                       d(p.spacetime_frames) * N * 8,
-                       {"particles.spacetime_frames", "initial.N"}});
+                       d(p.spacetime_frames) * recorded_world_lines(s) * 8,
+                       {"particles.spacetime_frames", "particles.spacetime_particles", "initial.N"}});
     if (!p.snapshots.empty())
       items.push_back({"particles.snapshots", "the snapshots", d(p.snapshots.size()) * N * kBodyBytes});
     if (keeps_states_apart(s))
