@@ -6,7 +6,12 @@
 // crash, loop or claim more memory than there is. A file is therefore first
 // checked (result_check.hpp: missing, truncated, not HDF5, other than its
 // manifest records), then read by the library in a child process
-// (isolated_call.hpp), its contents streamed back: a crash, a refusal or any
+// (isolated_call.hpp), its contents streamed back. The layout is read first,
+// by a child whose memory is sized by the file's bytes; then the values asked
+// for, by a child sized by their declared (uncompressed) size: a file that
+// declares more than deflate can pack into its bytes is "damaged", one whose
+// values cannot be held in the memory available "too large to read" (both
+// FileProblem, exit 2, before a value is read). A crash, a refusal or any
 // failure of the library there is a FileProblem "damaged" (exit 2, from
 // Python an InputError) naming the file, and this process never runs the
 // library on it. A manifest can be edited along with the file it lists, and
