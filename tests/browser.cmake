@@ -1,7 +1,8 @@
 # What a lecture room sees, label `browser` (part of the default `ctest -LE slow`):
 # the report.html of two gallery runs opened in headless Chromium
 # (tests/browser/check_report_html.py), and the cooling scene's animation
-# (tests/browser/check_animation.py: frames, size, the file plays). Both need
+# (tests/browser/check_animation.py: frames, size, the file plays), and `shockgas
+# animate --fps --size --frames` on the sine scene. They need
 # Debian's /usr/bin/python3 with its packages, and Chromium or ffmpeg; where
 # one is missing the test is skipped with a message (exit 77).
 set(browser_out ${PROJECT_BINARY_DIR}/browser-tests)
@@ -23,5 +24,12 @@ add_test(NAME browser.cooling_animation
 '$<TARGET_FILE:shockgas>' animate '${browser_out}/cooling' && \
 /usr/bin/python3 '${checks}/check_animation.py' '${browser_out}/cooling'")
 
-set_tests_properties(browser.report_html browser.cooling_animation PROPERTIES LABELS browser SKIP_RETURN_CODE 77
+# `shockgas animate` asked for another size, fewer frames and a frame rate: the files follow.
+add_test(NAME browser.animate_options
+         COMMAND sh -c "${python}; rm -rf '${browser_out}/options' && \
+'$<TARGET_FILE:shockgas>' run '${gallery}/sine.toml' --set output.animation_frames=12 --no-plots --out '${browser_out}/options' -q && \
+'$<TARGET_FILE:shockgas>' animate '${browser_out}/options' --fps 5 --size 640x360 --frames 7 && \
+/usr/bin/python3 '${checks}/check_animation.py' '${browser_out}/options' --size 640x360 --frames 7 --fps 5")
+
+set_tests_properties(browser.report_html browser.cooling_animation browser.animate_options PROPERTIES LABELS browser SKIP_RETURN_CODE 77
                      TIMEOUT 300 WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})

@@ -1,6 +1,8 @@
 # Scenes as regression tests: each scene with a stored expectation in
 # data/scenes/expected/<name>.json is run by the command and its summary.json
-# checked (tests/tools/check_summary.py). Label `scene`, or `slow` for the
+# checked (tests/tools/check_summary.py), and every theory its report.md and
+# summary.json state held against the laws the expectation lists as holding for
+# the scene (tests/tools/check_report_theories.py). Label `scene`, or `slow` for the
 # expectations under data/scenes/expected/slow/. The teaching gallery
 # (data/scenes/gallery/, expectations in data/scenes/expected/gallery/) is
 # labelled `scene` too, and each of its tests fails beyond 3x the scene's
@@ -19,7 +21,7 @@ function(shockgas_scene_test scene_file expected label)
   endif()
   set(out ${PROJECT_BINARY_DIR}/scene-tests/${name})
   add_test(NAME scene.${name}
-           COMMAND sh -c "rm -rf '${out}' && '$<TARGET_FILE:shockgas>' run '${scene_file}' --out '${out}' --quiet --no-plots && '${SHOCKGAS_PYTHON}' '${PROJECT_SOURCE_DIR}/tests/tools/check_summary.py' '${expected}' '${out}'"
+           COMMAND sh -c "rm -rf '${out}' && '$<TARGET_FILE:shockgas>' run '${scene_file}' --out '${out}' --quiet --no-plots && '${SHOCKGAS_PYTHON}' '${PROJECT_SOURCE_DIR}/tests/tools/check_summary.py' '${expected}' '${out}' && '${SHOCKGAS_PYTHON}' '${PROJECT_SOURCE_DIR}/tests/tools/check_report_theories.py' '${expected}' '${out}'"
            WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(scene.${name} PROPERTIES LABELS ${label} TIMEOUT ${ARG_TIMEOUT})
 endfunction()

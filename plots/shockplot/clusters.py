@@ -6,7 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.ticker import LogFormatterSciNotation
 
-from .common import CLUSTER, EXACT, GUIDE, SHOCK, attr, draw_guide, finish, is_gas, label, unit
+from .common import CLUSTER, EXACT, GUIDE, SHOCK, attr, draw_guide, finish, is_gas, label, theory, unit
 
 DATA = {"color": "tab:blue", "marker": "o", "ms": 3, "lw": 1, "zorder": 3}
 
@@ -34,7 +34,8 @@ def _count_in_time(ax, f, summary):
     coefficient = attr(an, "n_shocks_exact_coefficient") if an is not None else None
     t_stick = summary.get("analysis", {}).get("t_stick_theory")
     start = max(t[0], t_stick) if t_stick else t[0]
-    gas = is_gas(summary)  # the laws are statistical: none over a few bodies
+    # The laws are statistical (none over a few bodies) and hold from 10 t_stick (theory.shock_count).
+    gas = is_gas(summary) and theory(summary, "shock_count") is not None
     if coefficient is not None and N and start < t[-1] and gas:
         tt = np.geomspace(start, t[-1], 50)
         ax.plot(tt, coefficient * tt ** (-2 / 3), **EXACT,

@@ -127,3 +127,32 @@ def finish(fig, axes, columns=2, fontsize=8):
     """Lays the panels out and puts the figure's one legend below them."""
     fig.tight_layout()
     return figure_legend(fig, axes, columns, fontsize)
+
+
+def theory(summary, law):
+    """The scope of a law of shockgas/compare/theory_scope.hpp for the run
+    (summary key theory.<law>: holds, window, why), or None where it does not
+    hold: a plot draws a law's value only where this is not None."""
+    scope = summary.get("theory", {}).get(law)
+    return scope if scope and scope.get("holds") else None
+
+
+def no_theory_text(summary, law):
+    """"no theory for this scene (why)" for a law that does not hold."""
+    scope = summary.get("theory", {}).get(law, {})
+    return f"no theory for this scene ({law}: {scope.get('why', 'not stated')})"
+
+
+def note_no_theory(ax, summary, law, y=0.04):
+    """The words that a law does not hold for the scene, and why, inside the panel (wrapped)."""
+    import textwrap
+    ax.text(0.02, y, textwrap.fill(no_theory_text(summary, law), 60), transform=ax.transAxes, fontsize=7,
+            color="0.3", va="bottom")
+
+
+def exponent_error_text(error, realizations=None):
+    """"± e (jackknife, n realizations)" or, without an error from realizations, the words that say so."""
+    if error is None:
+        return "no error estimate from one realization"
+    tail = f", {realizations} realizations" if realizations else ""
+    return rf"$\pm$ {error:.2g} (jackknife{tail})"

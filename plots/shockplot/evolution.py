@@ -6,7 +6,7 @@ and the number of shocks."""
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .common import EXACT, GUIDE, attr, finish, label, unit
+from .common import EXACT, GUIDE, attr, exponent_error_text, finish, label, note_no_theory, theory, unit
 
 DATA = {"color": "tab:blue", "marker": "o", "ms": 4, "zorder": 3}
 FIT = {"color": "tab:red", "lw": 2.5, "alpha": 0.7, "zorder": 4}
@@ -46,25 +46,39 @@ def _time_axis(ax, t_unit, log):
     ax.set_xlabel(label("time $t$", t_unit))
 
 
-def _amplitude(ax, e, t, s, t_unit):
+DECAY_LAWS = [("n_wave_decay", "N-wave $t^{-1/2}$"), ("sawtooth_decay", "periodic sawtooth $t^{-1}$")]
+
+
+def decay_title(ax, summary):
+    """The decay law that holds for the scene, with its window; or no theory, with why in the panel."""
+    for law, text in DECAY_LAWS:
+        scope = theory(summary, law)
+        if scope:
+            return f"decay (theory: {text} on [{scope['window'][0]:.3g}, {scope['window'][1]:.3g}])"
+    pulse = "isolated pulse" in summary.get("theory", {}).get("sawtooth_decay", {}).get("why", "")
+    note_no_theory(ax, summary, "n_wave_decay" if pulse else "sawtooth_decay")  # the law of the wave's kind
+    return "decay: no theory for this scene"
+
+
+def _amplitude(ax, e, t, s, t_unit, summary):
     a = e["amplitude"][:]
     ok = (t > 0) & (a > 0)
     ax.loglog(t[ok], a[ok], "-", lw=1, **DATA, label="measured: amplitude (max v - min v) / 2")
-    if "amplitude_fit_t" in e:
+    if "amplitude_fit_t" in e:  # one deterministic run: no error from realizations
         window = e["amplitude_fit_t"][:]
-        exponent, error = s.get("amplitude_exponent", float("nan")), s.get("amplitude_exponent_error")
-        spread = rf" \pm {error:.2g}" if error is not None else ""
+        exponent = s.get("amplitude_exponent", float("nan"))
         ax.loglog(window, e["amplitude_fit"][:], "-", **FIT,
-                  label=rf"fit of the amplitude on [{window[0]:.3g}, {window[1]:.3g}]: $t^{{{exponent:.3f}{spread}}}$")
+                  label=rf"fit of the amplitude after breaking, on [{window[0]:.3g}, {window[1]:.3g}]: "
+                        rf"$t^{{{exponent:.3f}}}$, " + exponent_error_text(None))
     low, high = a[ok].min(), a[ok].max()
     if high - low <= 1e-9 * high:  # constant to rounding: no zoom into the rounding
         ax.set_ylim(np.sqrt(low * high) / 2, np.sqrt(low * high) * 2)
     ax.set_xlabel(label("time $t$", t_unit))
     ax.set_ylabel(label("amplitude", unit(e["amplitude"])))
-    ax.set_title("decay (theory: N-wave $t^{-1/2}$, periodic sawtooth $t^{-1}$)", fontsize=10)
+    ax.set_title(decay_title(ax, summary), fontsize=10)
 
 
-def _lobes(ax, e, t, t_unit, log):
+def _lobes(ax, e, t, t_unit, log, summary):
     keep = t > 0 if log else np.ones_like(t, dtype=bool)
     top = 1.1
     for name, colour, marker, text in [("positive_area", "tab:orange", "o", "lobes above the mean, A+(t) / A+(0)"),
@@ -73,11 +87,15 @@ def _lobes(ax, e, t, t_unit, log):
         if area[0] != 0:
             ax.plot(t[keep], area[keep] / area[0], "-", marker=marker, ms=4, color=colour, label=f"measured: {text}")
             top = max(top, 1.05 * np.max(area / area[0]))
-    ax.axhline(1.0, ls="--", **GUIDE, label="theory: 1, an isolated wave keeps the area of each lobe")
+    if theory(summary, "lobe_areas"):
+        ax.axhline(1.0, ls="--", **GUIDE, label="theory: 1, an isolated wave keeps the area of each lobe")
+        ax.set_title("lobe areas", fontsize=10)
+    else:
+        ax.set_title("lobe areas: no theory for this scene", fontsize=10)
+        note_no_theory(ax, summary, "lobe_areas")
     ax.set_ylim(0, top)
     _time_axis(ax, t_unit, log)
     ax.set_ylabel(label("area / initial area", "1"))
-    ax.set_title("lobe areas", fontsize=10)
 
 
 def _shocks(ax, e, t, t_unit, log):
@@ -105,8 +123,8 @@ def figure_evolution(f, summary):
         axes[0, 0].axis("off")
         axes[0, 0].text(0.5, 0.5, "no breaking to show:\nfewer than two smooth frames before the first shock",
                         ha="center", va="center", transform=axes[0, 0].transAxes, fontsize=10)
-    _amplitude(axes[0, 1], e, t, s, t_unit)
-    _lobes(axes[1, 0], e, t, t_unit, log)
+    _amplitude(axes[0, 1], e, t, s, t_unit, summary)
+    _lobes(axes[1, 0], e, t, t_unit, log, summary)
     _shocks(axes[1, 1], e, t, t_unit, log)
     fig.suptitle(f"the wave in time ({attr(e, 'solver', '')}): breaking, decay, lobes, shocks")
     finish(fig, drawn, columns=2)

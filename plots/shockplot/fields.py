@@ -6,7 +6,7 @@ interpolated velocity: not data, not drawn), the counted clusters and shocks
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .common import CLUSTER, INITIAL, PARTICLES, SHOCK, attr, finish, label, solver_style, unit
+from .common import CLUSTER, EXACT, INITIAL, PARTICLES, SHOCK, attr, finish, label, solver_style, unit
 from .decimate import decimated
 
 
@@ -111,6 +111,26 @@ def draw_initial(av, ar, f, beside):
         decimated(ar.plot(x0, f["initial/cells/rho"][:], **INITIAL, label="initial condition (t = 0)"))
 
 
+def error_pairs(groups):
+    """(name, group, exact group) of every solver on the exact solver's grid: their error can be drawn."""
+    exact = [g for _, g in groups if attr(g, "exact", 0)]
+    if not exact:
+        return []
+    x = exact[0]["x"][:]
+    return [(name, g, exact[0]) for name, g in groups
+            if not attr(g, "exact", 0) and g["x"].shape == x.shape and np.allclose(g["x"][:], x)]
+
+
+def draw_errors(ae, pairs):
+    """v - v_exact of each solver on the exact grid: a solver that lies under the exact line shows its error here."""
+    for name, g, exact in pairs:
+        style = solver_style(g, name)
+        decimated(ae.plot(g["x"][:], g["v"][:] - exact["v"][:], **style))
+    ae.axhline(0.0, **dict(EXACT, lw=0.8))
+    ae.set_ylabel(label(r"$v - v_{exact}$", unit(exact["v"])))
+    ae.set_title("error of each solver: numerical minus exact velocity", fontsize=9)
+
+
 def has_density(g):
     return "rho" in g and g["rho"].shape == g["x"].shape
 
@@ -123,11 +143,13 @@ def figure_fields(f, summary):
     dense = [g for _, g in groups if has_density(g)]
     beside = initial_fits_beside(f, groups)
     separate = "initial/cells/v" in f and not beside
-    heights = ([1] if separate else []) + [2] + ([2] if dense or cmp is not None else [])
+    pairs = error_pairs(groups)
+    heights = ([1] if separate else []) + [2] + ([1.2] if pairs else []) + ([2] if dense or cmp is not None else [])
     fig, axes = plt.subplots(len(heights), 1, figsize=(10, 1.6 * sum(heights) + 0.8), sharex=True,
                              gridspec_kw={"height_ratios": heights}, squeeze=False)
     axes = list(axes[:, 0])
     a0 = axes.pop(0) if separate else None
+    ae = axes.pop(1) if pairs else None
     av, ar = axes[0], axes[1] if len(axes) > 1 else None
     if separate:
         decimated(a0.plot(f["initial/cells/x"][:], f["initial/cells/v"][:], color="0.45", lw=0.5))
@@ -135,6 +157,8 @@ def figure_fields(f, summary):
         a0.set_title("initial condition (t = 0): velocity, cell averages", fontsize=9)
     draw_initial(av, ar, f, beside)
     draw_solvers(av, ar, groups)
+    if ae is not None:
+        draw_errors(ae, pairs)
     some = groups[0][1]
     t = attr(some, "t", 0)
     # Particles stopped early are compared at their own time (the continuum run
@@ -160,5 +184,5 @@ def figure_fields(f, summary):
         ar.set_ylabel(label(r"density $\rho$", unit(rho)))
     (ar or av).set_xlabel(label("position $x$", unit(some["x"])))
     av.set_title(title, fontsize=10)
-    finish(fig, [a for a in (a0, av, ar) if a is not None], columns=2)
+    finish(fig, [a for a in (a0, av, ae, ar) if a is not None], columns=2)
     return fig

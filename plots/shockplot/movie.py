@@ -1,5 +1,6 @@
 """The animation's frames (plots/animate.py, and the run's plots with
---animation): one figure of 1280 x 720 pixels updated in place frame after
+--animation): one figure of 1280 x 720 pixels (or the size asked for: the same
+picture, its fonts and lines scaled with the width) updated in place frame after
 frame. Left: the particles as dots (clusters, coloured by mass) over every
 solver's velocity and density at the same time; right: space-time, the exact
 (else the first) solver's density with the paths of the heaviest clusters.
@@ -25,9 +26,10 @@ PARTICLE_DENSITY = "tab:pink"  # a colour no registered solver uses
 class Movie:
     """One figure, updated in place frame after frame."""
 
-    def __init__(self, rec):
+    def __init__(self, rec, width=WIDTH, height=HEIGHT):
         self.rec = rec
-        self.fig = plt.figure(figsize=(WIDTH / DPI, HEIGHT / DPI), dpi=DPI)
+        self.dpi = DPI * width / WIDTH
+        self.fig = plt.figure(figsize=(inches(width, self.dpi), inches(height, self.dpi)), dpi=self.dpi)
         grid = self.fig.add_gridspec(2, 4, width_ratios=[1.7, 0.04, 0.42, 1], left=0.075, right=0.93, top=0.86,
                                      bottom=0.09, hspace=0.1, wspace=0.05)
         self.grid = grid
@@ -260,10 +262,19 @@ class Movie:
         return np.asarray(canvas.buffer_rgba())
 
     def save_still(self, path):
-        """The frame shown as a picture (animation.png): 1280 x 720, as the movie's."""
+        """The frame shown as a picture (animation.png), of the movie's size."""
         for a in self._moving():
             a.set_animated(False)
-        save(self.fig, path, RESULT, dpi=DPI, tight=False)
+        save(self.fig, path, RESULT, dpi=self.dpi, tight=False)
+
+
+def inches(pixels, dpi):
+    """pixels / dpi, nudged up where inches * dpi rounds below pixels: the canvas
+    truncates that product to whole pixels."""
+    size = pixels / dpi
+    while int(size * dpi) < pixels:
+        size = np.nextafter(size, np.inf)
+    return size
 
 
 def time_text(t):

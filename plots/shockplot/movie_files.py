@@ -13,11 +13,11 @@ import sys
 import numpy as np
 
 from .animation_data import Record
-from .movie import HEIGHT, WIDTH, Movie
+from .movie import Movie
 from .run_files import open_result
 from .saving import CannotWrite, write_whole
 
-GIF_WIDTH = 800
+GIF_WIDTH = 800  # at most; a smaller movie's GIF has the movie's width
 SECONDS = 8.0  # target length of the movie
 
 
@@ -85,20 +85,26 @@ def finished(proc):
 # H.264 at the SSIM against the frames of -preset medium -crf 23 (0.990 both, the
 # gallery's merging-shocks), for less encoding work (1.0 s of CPU against 1.2 s)
 MP4 = ["-c:v", "libx264", "-preset", "faster", "-crf", "21", "-pix_fmt", "yuv420p", "-movflags", "+faststart"]
-GIF = ["-vf", f"scale={GIF_WIDTH}:-1:flags=lanczos,split[a][b];[a]palettegen=stats_mode=diff[p];"
-       "[b][p]paletteuse=dither=bayer:bayer_scale=4", "-loop", "0"]
 
 
-def encode(movie, n, fps, outputs):
+def gif_args(width):
+    """The GIF encoder's arguments for a movie `width` pixels wide."""
+    return ["-vf", f"scale={min(width, GIF_WIDTH)}:-1:flags=lanczos,split[a][b];[a]palettegen=stats_mode=diff[p];"
+            "[b][p]paletteuse=dither=bayer:bayer_scale=4", "-loop", "0"]
+
+
+def encode(movie, frames, fps, outputs):
     """Each (path, ffmpeg arguments, format) of outputs encoded from the same
-    frames, by encoders that run at once, each file whole or not at all."""
-    raw = ["-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{WIDTH}x{HEIGHT}", "-framerate", str(fps), "-i", "-"]
+    frames (indices of the record), by encoders that run at once, each file
+    whole or not at all."""
+    width, height = movie.fig.canvas.get_width_height()  # the canvas's own size, to the pixel
+    raw = ["-f", "rawvideo", "-pix_fmt", "rgba", "-s", f"{width}x{height}", "-framerate", str(fps), "-i", "-"]
     partials = [path + ".partial" for path, _, _ in outputs]
     procs = []
     try:
         for (_, args, fmt), partial in zip(outputs, partials):
             procs.append(ffmpeg(raw + args, partial, fmt, stdin=subprocess.PIPE))
-        feed(movie, n, procs)
+        feed(movie, frames, procs)
         for (path, _, _), partial, proc in zip(outputs, partials, procs):
             try:
                 finished(proc)
@@ -119,10 +125,10 @@ def encode(movie, n, fps, outputs):
         raise
 
 
-def feed(movie, n, procs):
+def feed(movie, frames, procs):
     """Frame after frame to every encoder's stdin; closed at the end."""
     try:
-        for k in range(n):
+        for k in frames:
             movie.update(k)
             frame = movie.rgba().tobytes()
             for proc in procs:
@@ -137,36 +143,49 @@ def feed(movie, n, procs):
                 pass
 
 
-def gif_with_pillow(movie, n, fps, gif):
+def gif_with_pillow(movie, frames, fps, gif):
     from PIL import Image
 
     images = []
-    for k in range(n):
+    for k in frames:
         movie.update(k)
         img = Image.fromarray(movie.rgba()[:, :, :3])
-        images.append(img.resize((GIF_WIDTH, GIF_WIDTH * HEIGHT // WIDTH)).convert("P", palette=Image.ADAPTIVE))
+        width = min(img.width, GIF_WIDTH)
+        images.append(img.resize((width, width * img.height // img.width)).convert("P", palette=Image.ADAPTIVE))
     written(gif, lambda partial: images[0].save(partial, format="GIF", save_all=True, append_images=images[1:],
                                                 duration=int(1000 / fps), loop=0))
 
 
-def draw_animation(out_dir, who="animate.py"):
+def chosen_frames(recorded, count):
+    """`count` indices spread evenly over the `recorded` frames, the first and the
+    last among them (all when count is None); distinct for 2 <= count <= recorded."""
+    if count is None:
+        return list(range(recorded))
+    return [int(k) for k in np.rint(np.linspace(0, recorded - 1, count))]
+
+
+def draw_animation(out_dir, who="animate.py", fps=None, size=None, frames=None):
     """animation.mp4, animation.gif and animation.png of run directory out_dir;
-    `who` names the script in its warnings. NoFrames without /animation."""
+    `who` names the script in its warnings. NoFrames without /animation.
+    fps: frames per second (None: the record's length over SECONDS, 4 to 24);
+    size: (width, height) in pixels (None: 1280 x 720); frames: how many of the
+    recorded frames, spread evenly (None: all). The command checks these."""
     with open_result(out_dir) as f:
         if "animation" not in f:
             raise NoFrames("no /animation in result.h5 (output.animation = false)")
         rec = Record(f)
-    movie = Movie(rec)
-    n = len(rec.t)
-    fps = frames_per_second(n)
+    movie = Movie(rec, *size) if size else Movie(rec)
+    shown = chosen_frames(len(rec.t), frames)
+    fps = fps or frames_per_second(len(shown))
     paths = {kind: os.path.join(out_dir, "animation." + kind) for kind in ("mp4", "gif", "png")}
     if shutil.which("ffmpeg"):
-        encode(movie, n, fps, [(paths["mp4"], MP4, "mp4"), (paths["gif"], GIF, "gif")])
+        width = movie.fig.canvas.get_width_height()[0]
+        encode(movie, shown, fps, [(paths["mp4"], MP4, "mp4"), (paths["gif"], gif_args(width), "gif")])
     else:
         print(f"{who}: warning: ffmpeg not found (run scripts/setup): no animation.mp4; the GIF by Pillow",
               file=sys.stderr)
         if os.path.exists(paths["mp4"]):
             os.remove(paths["mp4"])  # an older run's movie must not stand beside this one's frames
-        gif_with_pillow(movie, n, fps, paths["gif"])
-    movie.update(n - 1)
+        gif_with_pillow(movie, shown, fps, paths["gif"])
+    movie.update(shown[-1])
     movie.save_still(paths["png"])

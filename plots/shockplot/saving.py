@@ -4,6 +4,8 @@ written by save(), whole or not at all, with the same PNG text: Title (its
 first title), Software and Source (what it was drawn from)."""
 import os
 
+import re
+
 import matplotlib
 import matplotlib.pyplot as plt
 
@@ -40,9 +42,32 @@ def save_whole(path, write):
 
 
 def title_of(fig):
-    """The figure's first title: its suptitle, else the first panel's that has one."""
+    """The figure's first title as plain text (plain_text): its suptitle, else the first panel's that has one."""
     title = fig._suptitle.get_text() if fig._suptitle is not None else ""
-    return title or next((ax.get_title() for ax in fig.axes if ax.get_title()), "")
+    return plain_text(title or next((ax.get_title() for ax in fig.axes if ax.get_title()), ""))
+
+
+# Mathtext commands as the characters they draw.
+_SYMBOLS = [(r"\langle", "⟨"), (r"\rangle", "⟩"), (r"\pm", "±"), (r"\epsilon", "ε"), (r"\partial", "∂"),
+            (r"\propto", "∝"), (r"\rho", "ρ"), (r"\Phi", "Φ"), (r"\sqrt", "√"), (r"\,", " "), (r"\ln", "ln"),
+            (r"\min", "min"), (r"\max", "max")]
+_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+def plain_text(text):
+    """A title's mathtext ($...$) as plain Unicode text, for the PNG's Title and so for
+    report.html's captions (the page runs no scripts: no TeX is typeset there):
+    "$T = \\langle v^2\\rangle$" -> "T = ⟨v²⟩", "$t^{-1/2}$" -> "t^(-1/2)", "$t_{stick}$" -> "t_stick"."""
+    def math(match):
+        s = match.group(1)
+        for command, character in _SYMBOLS:
+            s = s.replace(command, character)
+        s = re.sub(r"\^\{(-?\d+)\}|\^(-?\d)", lambda m: (m.group(1) or m.group(2)).translate(_SUPERSCRIPTS), s)
+        s = re.sub(r"\^\{([^}]*)\}", r"^(\1)", s)
+        s = re.sub(r"_\{([^}]*)\}", r"_\1", s)
+        s = re.sub(r"⟨\s*", "⟨", s)
+        return s.replace("{", "").replace("}", "").replace("\\", "")
+    return re.sub(r"\$([^$]*)\$", math, text)
 
 
 def save(fig, path, source, dpi=DPI, tight=True):

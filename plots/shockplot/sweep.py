@@ -4,7 +4,7 @@ white-noise start where the result file holds them."""
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .common import EXACT, GUIDE, attr, draw_guide, finish, fraction, label, power_law, unit
+from .common import EXACT, GUIDE, attr, draw_guide, finish, fraction, label, note_no_theory, power_law, theory, unit
 from .distribution import axes_labels, draw_exact
 from .temperature import ALPHA_NAME, T_NAME, TIME_NAME, exponent_ticks
 
@@ -45,13 +45,17 @@ def figure_sweep_temperature(f, summary):
     power = attr(f["sweep"], "T_exponent_theory", -2 / 3)
     t, T, g = last
     t_stick = earliest_sticking_time(summary)
-    if exact is not None and (t_stick is None or t_stick < t[-1]):
+    # The sticky-gas law where it holds for a variant (theory.sticky_cooling of its summary), else the words.
+    if not any(theory(v.get("summary", {}), "sticky_cooling") for v in summary.get("variants", [])):
+        note_no_theory(ax_a, summary.get("variants", [{}])[-1].get("summary", {}), "sticky_cooling")
+    elif exact is not None and (t_stick is None or t_stick < t[-1]):
         tt = np.geomspace(max(t[0], t_stick or t[0]), t[-1], 50)
         ax_T.plot(tt, exact * tt ** power, **EXACT,
                   label=f"exact: late-time law of the sticky gas from this white noise, {power_law(exact, power)}")
     else:
         draw_guide(ax_T, t, T, power, (t[-1] / 10, t[-1]), (t[0], t[-1]), "sticky gas")
-    ax_a.axhline(power, ls="--", **GUIDE, label=f"theory: exponent {fraction(power)} (sticky gas)")
+    if any(theory(v.get("summary", {}), "sticky_cooling") for v in summary.get("variants", [])):
+        ax_a.axhline(power, ls="--", **GUIDE, label=f"theory: exponent {fraction(power)} (sticky gas)")
     exponent_ticks(ax_a, [power])
     ax_T.set_xscale("log")
     ax_T.set_yscale("log")

@@ -4,7 +4,8 @@ one point), and the local exponent d ln T / d ln t against the theory's levels."
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .common import EXACT, GUIDE, attr, draw_guide, finish, fraction, label, power_law, unit
+from .common import (EXACT, GUIDE, attr, draw_guide, exponent_error_text, finish, fraction, label, no_theory_text,
+                     power_law, theory, unit)
 
 FIT = {"color": "tab:red", "lw": 2.2, "alpha": 0.75, "zorder": 4}
 DATA = {"color": "tab:blue", "marker": "o", "ms": 3, "lw": 1, "zorder": 3}
@@ -19,15 +20,16 @@ def regime_times(summary):
 
 
 def draw_fit(ax_T, ax_a, an, summary):
-    """The least-squares power law of the late window: its line, and its exponent as a level."""
+    """The power law fitted on the window the scene gives (analysis.T_fit_window), its line and its
+    exponent as a level, with the jackknife error over realizations (none from one realization)."""
     if "T_fit_t" not in an:
         return None
     window, ends = an["T_fit_t"][:], an["T_fit_T"][:]
     a = summary.get("analysis", {})
     exponent = a.get("T_exponent", attr(an, "T_exponent"))
-    error = a.get("T_exponent_error")
-    spread = rf" \pm {error:.3f}" if error is not None else ""
-    text = rf"fit on [{window[0]:.3g}, {window[1]:.3g}]: $T \propto t^{{{exponent:.3f}{spread}}}$"
+    error = a.get("T_exponent_jackknife_error")
+    text = (rf"fit on [{window[0]:.3g}, {window[1]:.3g}]: $T \propto t^{{{exponent:.3f}}}$, "
+            + exponent_error_text(error, a.get("jackknife_realizations")))
     ax_T.plot(window, ends, "-", **FIT, label=text)
     ax_a.plot(window, [exponent, exponent], "-", **FIT, label=text)
     if error is not None:
@@ -59,13 +61,21 @@ def draw_early_law(ax, t, T, an, t_dissip, t_stick):
                "homogeneous cooling", ls="-.")
 
 
-def draw_levels(ax, an):
-    """The local exponent's theory levels: elastic 0, homogeneous cooling -2, sticky gas -2/3."""
-    levels = [0.0, attr(an, "T_cooling_exponent_theory", -2.0), attr(an, "T_exponent_theory", -2 / 3)]
+def draw_levels(ax, an, summary):
+    """The local exponent's theory levels where their laws hold for the scene: elastic 0 and homogeneous
+    cooling -2 (crossovers), sticky gas -2/3 (sticky_cooling); else the words that there is none."""
+    levels, names = [], []
+    if theory(summary, "crossovers"):
+        levels += [0.0, attr(an, "T_cooling_exponent_theory", -2.0)]
+        names += ["0 (elastic)", "-2 (homogeneous cooling)"]
+    if theory(summary, "sticky_cooling"):
+        levels.append(attr(an, "T_exponent_theory", -2 / 3))
+        names.append("-2/3 (sticky gas)")
     for k, level in enumerate(levels):
-        ax.axhline(level, ls="--", **GUIDE,
-                   label="theory: exponent 0 (elastic), -2 (homogeneous cooling), -2/3 (sticky gas)" if k == 0
-                   else None)
+        ax.axhline(level, ls="--", **GUIDE, label="theory: exponent " + ", ".join(names) if k == 0 else None)
+    if not levels:
+        ax.text(0.02, 0.04, no_theory_text(summary, "sticky_cooling"), transform=ax.transAxes, fontsize=8,
+                color="0.3")
     exponent_ticks(ax, levels)
 
 
@@ -106,12 +116,15 @@ def figure_temperature(f, summary):
     t_dissip, t_stick = regime_times(summary)
     if len(an):
         window = draw_fit(ax_T, ax_a, an, summary)
-        draw_late_law(ax_T, t, T, an, window, t_stick)
-        draw_early_law(ax_T, t, T, an, t_dissip, t_stick)
-        draw_levels(ax_a, an)
+        if theory(summary, "sticky_cooling"):
+            draw_late_law(ax_T, t, T, an, window, t_stick)
+        if theory(summary, "crossovers"):
+            draw_early_law(ax_T, t, T, an, t_dissip, t_stick)
+        draw_levels(ax_a, an, summary)
     if "analysis/T_local_exponent" in p:
         draw_local_exponent(ax_a, p, ok)
-    draw_crossovers((ax_T, ax_a), t_dissip, t_stick, t)
+    if theory(summary, "crossovers"):
+        draw_crossovers((ax_T, ax_a), t_dissip, t_stick, t)
     ax_T.set_xscale("log")
     ax_T.set_yscale("log")
     ax_T.set_ylim(T.min() / 3, T.max() * 3)

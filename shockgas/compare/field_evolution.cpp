@@ -56,11 +56,13 @@ void fit_formation(FieldEvolution& e, const std::vector<FrameFigures>& figures, 
   if (line.slope < 0) e.shock_formation_time = -line.intercept / line.slope;
 }
 
-void fit_amplitude(FieldEvolution& e, double fit_window) {
+void fit_amplitude(FieldEvolution& e, double fit_window, double fit_t_min) {
   std::vector<double> t, a;
   const double t_last = e.t.back();
+  const double broken = std::isfinite(e.first_shock_time) ? e.first_shock_time : 0.0;
+  const double t_from = std::max({t_last / fit_window, fit_t_min, broken});
   for (std::size_t k = 0; k < e.t.size(); ++k)
-    if (e.t[k] > 0 && e.amplitude[k] > 0 && e.t[k] >= t_last / fit_window) {
+    if (e.t[k] > 0 && e.amplitude[k] > 0 && e.t[k] >= t_from) {
       t.push_back(e.t[k]);
       a.push_back(e.amplitude[k]);
     }
@@ -72,7 +74,8 @@ double relative_change(double a, double a0) { return a0 != 0 ? std::abs(a / a0 -
 }  // namespace
 
 FieldEvolution analyse_field_evolution(const std::vector<continuum::ContinuumResult>& frames,
-                                       double fit_window, const ShockDetectionParams& shock_params) {
+                                       double fit_window, double fit_t_min,
+                                       const ShockDetectionParams& shock_params) {
   require(!frames.empty(), "output.animation_frames", frames.size(), "at least one frame");
   require_above("compare.fit_window", fit_window, 1.0);
   const std::size_t cells = frames.front().v.size();
@@ -99,7 +102,7 @@ FieldEvolution analyse_field_evolution(const std::vector<continuum::ContinuumRes
     }
   }
   fit_formation(e, figures, smooth_frames, frames.front().length / static_cast<double>(cells));
-  fit_amplitude(e, fit_window);
+  fit_amplitude(e, fit_window, fit_t_min);
   e.lobe_area_change = 0;
   for (std::size_t k = 0; k < frames.size(); ++k)
     e.lobe_area_change =

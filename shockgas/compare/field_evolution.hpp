@@ -21,8 +21,11 @@
 // from below; a frame at t = 0 (the initial cell averages, whose shocks no
 // solver has found yet) is neither.
 //
-// Decay. The amplitude is fitted as a power of t over [t_last / fit_window,
-// t_last] (an isolated N-wave: -1/2, its lobe areas kept; a periodic sawtooth: -1).
+// Decay. The amplitude is fitted as a power of t over [t_from, t_last] with
+// t_from = max(t_last / fit_window, fit_t_min, the first frame holding a shock):
+// never across the breaking, and from where the caller's law holds (an
+// isolated N-wave: -1/2, its lobe areas kept; a periodic sawtooth: -1; where
+// they hold: theory_scope.hpp).
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -56,6 +59,7 @@ struct FieldEvolution {
 // frames: one solver's fields at increasing times (at least one frame, the same
 // grid in all). fit_window > 1. Throws InputError otherwise.
 FieldEvolution analyse_field_evolution(const std::vector<continuum::ContinuumResult>& frames,
-                                       double fit_window, const ShockDetectionParams& shocks = {});
+                                       double fit_window, double fit_t_min = 0,
+                                       const ShockDetectionParams& shocks = {});
 
 }  // namespace shockgas::compare

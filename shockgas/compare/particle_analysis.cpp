@@ -5,14 +5,13 @@
 namespace shockgas::compare {
 
 CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r,
-                                double t_end, double fit_window) {
+                                double t_min, double t_max) {
   CoolingAnalysis a;
-  const double t_min = t_end / fit_window;
   std::size_t in_window = 0;
-  for (double ti : t) in_window += ti >= t_min && ti <= t_end;
+  for (double ti : t) in_window += ti >= t_min && ti <= t_max;
   if (in_window < 3) return a;
   try {
-    a.fit = fit_power_law(t, T, t_min, t_end);
+    a.fit = fit_power_law(t, T, t_min, t_max);
     a.local_exponent = local_exponents(t, T);
     a.crossovers = find_crossovers(t, T, r);
   } catch (const InputError& e) {

@@ -15,16 +15,18 @@
 namespace shockgas::compare {
 
 struct CoolingAnalysis {
-  std::optional<PowerLawFit> fit;      // T = A t^a on [t_end / fit_window, t_end], if >= 3 samples there
+  std::optional<PowerLawFit> fit;      // T = A t^a on [t_min, t_max], if >= 3 samples there
   std::vector<double> local_exponent;  // d ln T / d ln t at the sample times (with the fit)
   Crossovers crossovers;               // t_dissip, t_stick read off the curve, and their theory
   std::string not_determined;          // why the data could not be analysed; empty if they could
 };
 
 // t, T: the sample times and the (ensemble-mean) temperature; r: restitution
-// (for the crossover theory); the fit window is [t_end / fit_window, t_end].
+// (for the crossover theory); the fit window [t_min, t_max] is the scope of
+// the sticky-gas law where it holds (theory_scope.hpp), else
+// [t_end / fit_window, t_end].
 CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r,
-                                double t_end, double fit_window);
+                                double t_min, double t_max);
 
 // A histogram of z = (v - <v>) t^(1/3) on `bins` equal bins of [-zmax, zmax] at
 // each sample time: density[k * bins + b] (particles::ScaledHistogram's layout).

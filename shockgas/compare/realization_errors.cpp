@@ -109,13 +109,13 @@ JackknifeEstimate jackknife_joint_collapse(const ZHistogram& layout,
 
 std::optional<AnalysisErrors> jackknife_analysis(const std::vector<double>& t,
                                                  const std::vector<std::vector<double>>& T_rows, double r,
-                                                 double t_end, double fit_window, const ZHistogram& layout,
+                                                 double fit_t_min, double fit_t_max, const ZHistogram& layout,
                                                  const std::vector<std::vector<double>>& density_rows,
                                                  double t_min) {
   if (T_rows.size() < 2) return std::nullopt;
   AnalysisErrors e;
   try {
-    e.T_exponent = jackknife_T_exponent(t, T_rows, t_end / fit_window, t_end);
+    e.T_exponent = jackknife_T_exponent(t, T_rows, fit_t_min, fit_t_max);
     e.windows = jackknife_decade_windows(t, T_rows);
     e.crossovers = jackknife_crossovers(t, T_rows, r);
   } catch (const InputError&) {

@@ -70,11 +70,10 @@ std::vector<WindowExponent> jackknife_decade_windows(const std::vector<double>& 
 
 // Everything above for one ensemble, as analyse_cooling and
 // analyse_velocity_distribution define it: the exponent on
-// [t_end / fit_window, t_end] and on the decade windows, the crossovers with the default params, the
-// distribution from t_min. T_rows: one series per realization at the sample
-// times t; density_rows: their histograms (layout.bins = 0: none). Nothing
-// (nullopt) for fewer than 2 realizations or when the ensemble's own fit is
-// refused; a part the data cannot support is NaN.
+// [fit_t_min, fit_t_max] (the window analyse_cooling is given) and on the decade windows, the crossovers with
+// the default params, the distribution from t_min. T_rows: one series per realization at the sample times t;
+// density_rows: their histograms (layout.bins = 0: none). Nothing (nullopt) for fewer than 2 realizations or
+// when the ensemble's own fit is refused; a part the data cannot support is NaN.
 struct AnalysisErrors {
   JackknifeEstimate T_exponent;
   std::vector<WindowExponent> windows;
@@ -83,7 +82,7 @@ struct AnalysisErrors {
 };
 std::optional<AnalysisErrors> jackknife_analysis(const std::vector<double>& t,
                                                  const std::vector<std::vector<double>>& T_rows, double r,
-                                                 double t_end, double fit_window, const ZHistogram& layout,
+                                                 double fit_t_min, double fit_t_max, const ZHistogram& layout,
                                                  const std::vector<std::vector<double>>& density_rows,
                                                  double t_min);
 

@@ -25,7 +25,9 @@ ParameterTable<ParticleParams> declare() {
           to_text(std::string(kConstantRestitution)) + " = r for every g",
       one_of(restitution_law_names));
   t.add(&P::geometry, "geometry", "", "periodic ring of length L, or open line");
-  t.add(&P::solver, "solver", "", "event-driven simulation, or the exact sticky solution by the convex hull",
+  t.add(&P::solver, "solver", "",
+        "event-driven simulation, or the exact sticky solution by the convex hull; auto = the hull where it "
+        "applies (r = 0 and no max_collisions, max_wall_seconds), else the events, said in a note",
         described(choices_text(enum_choices<ParticleSolver>()) + " (" + name_of(ParticleSolver::hull) +
                   ": r = 0 only)"));
   t.add(&P::schedule, "schedule", "",
@@ -76,7 +78,9 @@ const ParameterTable<ParticleParams>& parameters() {
 void validate(const ParticleParams& p) {
   parameters().check(p);
   require(p.solver != ParticleSolver::hull || p.r == 0.0, "particles.solver", name_of(p.solver),
-          "\"" + name_of(ParticleSolver::hull) + "\" only with particles.r = 0 (the exact sticky solution)");
+          "\"" + name_of(ParticleSolver::hull) +
+              "\" only with particles.r = 0 (the exact sticky solution); \"" +
+              name_of(ParticleSolver::automatic) + "\" runs it at r = 0 and the event engine otherwise");
   require(p.restitution_law == kConstantRestitution || p.r > 0, "particles.restitution_law",
           p.restitution_law,
           to_text(std::string(kConstantRestitution)) + " with particles.r = 0 (every collision merges)");
@@ -88,6 +92,21 @@ void validate(const ParticleParams& p) {
           "0 with particles.solver = \"hull\" (the limits stop the event engine only)");
   require(!hull || p.max_wall_seconds == 0, "particles.max_wall_seconds", p.max_wall_seconds,
           "0 with particles.solver = \"hull\" (the limits stop the event engine only)");
+}
+
+ParticleSolver chosen_solver(const ParticleParams& p) {
+  if (p.solver != ParticleSolver::automatic) return p.solver;
+  const bool limited = p.max_collisions != 0 || p.max_wall_seconds != 0;
+  return p.r == 0.0 && !limited ? ParticleSolver::hull : ParticleSolver::events;
+}
+
+std::string solver_choice_note(const ParticleParams& p) {
+  if (p.solver != ParticleSolver::automatic) return "";
+  const std::string said = "particles.solver = \"" + name_of(p.solver) + "\": ";
+  if (chosen_solver(p) == ParticleSolver::hull)
+    return said + "the exact hull, as particles.r = 0 (every collision merges)";
+  if (p.r != 0.0) return said + "the event engine, as particles.r = " + to_text(p.r) + " > 0";
+  return said + "the event engine, as a limit (max_collisions, max_wall_seconds) stops the engine only";
 }
 
 CollisionRule collision_rule(const ParticleParams& p) {

@@ -27,10 +27,13 @@ constexpr std::array<EnumName<Geometry>, 2> enum_names(Geometry) {
 }
 
 // How the gas is solved: events = the event-driven engine; hull = the exact
-// sticky solution by the lower convex hull (r = 0 only). simulate.hpp.
-enum class ParticleSolver { events, hull };
-constexpr std::array<EnumName<ParticleSolver>, 2> enum_names(ParticleSolver) {
-  return {{{ParticleSolver::events, "events"}, {ParticleSolver::hull, "hull"}}};
+// sticky solution by the lower convex hull (r = 0 only); automatic = whichever
+// of the two applies (chosen_solver). simulate.hpp.
+enum class ParticleSolver { events, hull, automatic };
+constexpr std::array<EnumName<ParticleSolver>, 3> enum_names(ParticleSolver) {
+  return {{{ParticleSolver::events, "events"},
+           {ParticleSolver::hull, "hull"},
+           {ParticleSolver::automatic, "auto"}}};
 }
 
 // Event order of the engine (shockgas/particles/window_scheduler.hpp): automatic = time
@@ -76,6 +79,15 @@ const ParameterTable<ParticleParams>& parameters();
 // the rules between keys (hull only with r = 0 and without the engine's limits, snapshots
 // within t_end).
 void validate(const ParticleParams& p);
+
+// The solver that runs: for automatic, the hull where it is exact and allowed
+// (r = 0: every collision merges; no engine limit, max_collisions or
+// max_wall_seconds, set), else the event engine; any other solver as it is.
+ParticleSolver chosen_solver(const ParticleParams& p);
+// What chosen_solver chose for automatic and why, one line for the user
+// ("particles.solver = \"auto\": the event engine, as particles.r = 0.5 > 0");
+// "" for any other solver.
+std::string solver_choice_note(const ParticleParams& p);
 
 // The collision rule of these parameters: r, delta, the sub-threshold kind and
 // the restitution law.

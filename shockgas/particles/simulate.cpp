@@ -236,7 +236,7 @@ RunResult simulate_bodies(const Bodies& initial, double L, const ParticleParams&
   check_params(initial.size(), p);
   const bool ring = p.geometry == Geometry::ring;
   check_bodies(initial, L, ring);
-  if (p.solver == ParticleSolver::hull) {
+  if (chosen_solver(p) == ParticleSolver::hull) {
     check_no_state(checkpoints);
     return detail::simulate_hull(initial, L, ring, p, sink);
   }
@@ -251,7 +251,7 @@ void check_schedule(const Bodies& initial, const ParticleParams& p) {
 }
 
 double bytes_per_body(const ParticleParams& p, bool equal_masses) {
-  if (p.solver == ParticleSolver::hull) return 20;
+  if (chosen_solver(p) == ParticleSolver::hull) return 20;
   return linked(collision_rule(p), equal_masses) ? 52 : 40;
 }
 
@@ -273,7 +273,7 @@ RunResult simulate(const InitialCondition& initial, std::uint64_t realization, c
     return simulate_bodies(initial.bodies(), initial.length(), p, progress, sink, checkpoints);
   check_params(initial.params().N, p);
   InitialStream stream = stream_realization(initial, realization);
-  if (p.solver == ParticleSolver::hull) {
+  if (chosen_solver(p) == ParticleSolver::hull) {
     check_no_state(checkpoints);
     return detail::simulate_hull(stream, initial.length(), p.geometry == Geometry::ring, p, sink);
   }

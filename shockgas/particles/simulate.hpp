@@ -11,7 +11,8 @@
 // bodies are re-predicted). params.solver = ParticleSolver::hull (r = 0 only): the exact sticky
 // solution by the lower convex hull (shockgas/core/sticky_hull.hpp), built at the first stop
 // time and advanced from its own clusters, no events simulated; its collisions are
-// its merges.
+// its merges. params.solver = ParticleSolver::automatic: the one of the two that
+// chosen_solver(params) names (params.hpp).
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/progress.hpp"

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -79,6 +80,28 @@ class DamagedResults {
     if (!shard) loads_.push_back({dir, kind, what});
   }
 
+  // Under AddressSanitizer the module needs the sanitizer runtimes loaded
+  // first: the ones this test program was linked with (from /proc/self/maps),
+  // preloaded into Python, leak checks off (the interpreter keeps its own).
+  static std::string sanitizer_preload() {
+#if defined(__SANITIZE_ADDRESS__)
+    std::ifstream maps("/proc/self/maps");
+    std::set<std::string> runtimes;
+    for (std::string line; std::getline(maps, line);) {
+      const auto slash = line.find('/');
+      if (slash == std::string::npos) continue;
+      const std::string path = line.substr(slash);
+      const std::string name = fs::path(path).filename().string();
+      if (name.rfind("libasan.so", 0) == 0 || name.rfind("libubsan.so", 0) == 0) runtimes.insert(path);
+    }
+    std::string preload;
+    for (const auto& r : runtimes) preload += (preload.empty() ? "" : ":") + r;
+    return "LD_PRELOAD='" + preload + "' ASAN_OPTIONS=detect_leaks=0 ";
+#else
+    return "";
+#endif
+  }
+
   // shockgas.load of every run case so far, in one Python: it raises
   // InputError (a ValueError) or loads each, and the interpreter lives on to
   // say which, to the end.
@@ -94,8 +117,8 @@ class DamagedResults {
         "]:\n    try:\n        shockgas.load(d)\n        print('loaded', flush=True)\n"
         "    except shockgas.InputError:\n        print('refused', flush=True)\nprint('end')\n";
     write_text(script, text);
-    const std::string command = "PYTHONPATH='" + module.string() + "' '" + SHOCKGAS_PYTHON + "' '" +
-                                script.string() + "' > '" + out.string() + "' 2>&1";
+    const std::string command = "PYTHONPATH='" + module.string() + "' " + sanitizer_preload() + "'" +
+                                SHOCKGAS_PYTHON + "' '" + script.string() + "' > '" + out.string() + "' 2>&1";
     const int status = std::system(command.c_str());
     std::istringstream said(read_text(out));
     std::string line;

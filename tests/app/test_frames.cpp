@@ -106,6 +106,28 @@ TEST(Frames, AnimateWithoutFramesExitsTwoNamingTheKey) {
   EXPECT_EQ(run({"animate", (scene.parent_path() / "no-such-run").string()}), 2);
 }
 
+// --fps, --size and --frames out of range: exit 2 before any drawing, naming the
+// option, the value and what is allowed (the frames: as many as were recorded).
+TEST(Frames, AnimateRefusesOptionsOutOfRangeNamingThem) {
+  const fs::path scene =
+      scene_file("options", std::string(kGas) + "animation = true\nanimation_frames = 6\n");
+  const fs::path out = scene.parent_path() / "out";
+  ASSERT_EQ(run({"run", scene.string(), "--out", out.string(), "-q"}), 0);
+  const std::vector<std::vector<std::string>> refused = {
+      {"--fps", "0", "from 1 to 60"},       {"--fps", "2.5", "from 1 to 60"},
+      {"--size", "1279x720", "each even"},  {"--size", "640", "WxH"},
+      {"--size", "8000x4000", "3840x2160"}, {"--frames", "7", "from 2 to 6"},
+      {"--frames", "1", "from 2 to 6"},     {"--frames", "all", "from 2 to 6"}};
+  for (const auto& r : refused) {
+    std::string said;
+    EXPECT_EQ(testing_support::run_saying({"animate", out.string(), r[0], r[1]}, said), 2)
+        << r[0] << " " << r[1];
+    EXPECT_NE(said.find(r[0] + " = \"" + r[1] + "\" is not allowed; allowed: "), std::string::npos) << said;
+    EXPECT_NE(said.find(r[2]), std::string::npos) << said;
+  }
+  EXPECT_FALSE(fs::exists(out / "animation.mp4"));
+}
+
 // A result without its manifest entry is animated as it is, with the warning
 // `shockgas info` gives (found: animate said nothing of it).
 // A run of layout 1.0 (tests/data/layout-1.0): its result.h5 has no checksum of

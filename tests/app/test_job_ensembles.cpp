@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstring>
 #include <deque>
+#include <filesystem>
 #include <mutex>
 
 #include "process_temp_path.hpp"
@@ -119,6 +120,28 @@ TEST(JobEnsembles, ARealizationThatFailsOnRankOneIsNamed) {
   job.from_rank_1(kFailed, doubles({0, 0, 3}) + "out of memory");
   EXPECT_EQ(failure_of(job, 4),
             "rank 1 failed in realization 3: out of memory; the job stops, no result is written");
+}
+
+// The threads of this process, as the kernel lists them.
+std::size_t threads_running() {
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& task : std::filesystem::directory_iterator("/proc/self/task")) ++n;
+  return n;
+}
+
+// Rank 1 fails while rank 0's own realization has seconds still to run: the
+// job ends with the error and no thread of it goes on running (a thread left
+// running outlives what the process destroys at its exit, and crashes it).
+TEST(JobEnsembles, ARealizationStillRunningWhenTheJobFailsEndsWithIt) {
+  const std::size_t before = threads_running();
+  FakeJob job;
+  job.from_rank_1(kFailed, doubles({0, 0, 1}) + "out of memory");
+  const auto plan = std::make_shared<const EnsemblePlan>(
+      parse_scene("[initial]\nN = 100000\n[particles]\nr = 0.5\nt_end = 100000\nrealizations = 2\n", "long.toml"),
+      std::nullopt, std::nullopt);
+  ProgressBar quiet(false);
+  EXPECT_THROW(compute_records(&job, plan, 1, quiet), RunError);
+  EXPECT_EQ(threads_running(), before);
 }
 
 // Bad input on rank 1 (a damaged saved state) ends the job as bad input ends one

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <numeric>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -149,36 +150,76 @@ TEST(Progress, ReportGivesEachPhaseWithItsTimeAlsoWhenQuiet) {
   EXPECT_GE(plots, 1.5) << report;
 }
 
-// The rate is that of this process's work (finding: a run resumed at t = 1323
-// said "1.54e+03 time units/s" after 1 s, the restored time over this process's
-// seconds). As in a resumed run, the first poll says 0 (the workers have not
-// yet taken up their checkpoints) and the next one the checkpoint's t = 9950;
-// 10 time units follow in at least 1.1 s, so at most 10 / 1.1 = 9.1 units/s.
-TEST(Progress, ARunTakenUpAtACheckpointCountsItsRateFromThere) {
-  const fs::path log = fresh_dir("progress-rate") / "stderr";
+// stderr of f(), written while it runs (into a file: the bar writes with stdio).
+template <class F>
+std::string stderr_of(const std::string& name, F f) {
+  const fs::path log = fresh_dir(name) / "stderr";
   std::fflush(stderr);
   const int saved = dup(STDERR_FILENO);
   std::FILE* file = std::fopen(log.c_str(), "w");
-  ASSERT_NE(file, nullptr);
+  EXPECT_NE(file, nullptr);
   dup2(fileno(file), STDERR_FILENO);
-  {
+  f();
+  std::fflush(stderr);
+  dup2(saved, STDERR_FILENO);
+  close(saved);
+  std::fclose(file);
+  return read_text(log);
+}
+
+// The time left is that of this process's work (finding: a run resumed at
+// t = 1323 said "1.54e+03 time units/s" after 1 s, the restored work over this
+// process's seconds). As in a resumed run, the first poll says 0 (the workers
+// have not yet taken up their checkpoints) and the next one the checkpoint's
+// 99.5 %; 0.1 % more follows in at least 1.1 s, so the remaining 0.4 % takes at
+// least 4 x 1.1 = 4.4 s (counted from 0, the resumed share would say 0 s).
+TEST(Progress, ARunTakenUpAtACheckpointCountsItsRateFromThere) {
+  const std::string err = stderr_of("progress-rate", [] {
     ProgressBar bar(true);
     bar.stage("particles");
     bar.update(0, 0);         // the first poll, before the workers took up their checkpoints
     bar.update(0.995, 9950);  // where the checkpoint was
     std::this_thread::sleep_for(1100ms);
     bar.update(0.996, 9960);  // not a terminal: one line per 10 %, the first one now
-  }
-  std::fflush(stderr);
-  dup2(saved, STDERR_FILENO);
-  close(saved);
-  std::fclose(file);
-  const std::string err = read_text(log);
+  });
   std::smatch m;
-  ASSERT_TRUE(std::regex_search(err, m, std::regex(R"(t = 9960  ([0-9.e+-]+) time units/s)"))) << err;
-  const double rate = std::stod(m[1].str());
-  EXPECT_GT(rate, 0.0) << err;
-  EXPECT_LE(rate, 10 / 1.1) << err;
+  ASSERT_TRUE(std::regex_search(err, m, std::regex(R"(particles: 100%.*eta ([0-9]+) s)"))) << err;
+  EXPECT_GE(std::stod(m[1].str()), 4.0) << err;  // 4.4 s printed to the second
+}
+
+// An ensemble of 8 realizations in a log: each line says which realization of
+// 8 is under way and the time left. The scripted clock runs the realizations
+// at costs 10 % apart around 1 s (as the same scene's realizations differ by
+// their initial states); at 50 % the eta, from the mean rate so far, is within
+// 30 % of the time the scripted clock then still takes.
+TEST(Progress, ALogSaysWhichRealizationAndAnEtaWithin30PercentAtHalfWay) {
+  const std::vector<double> cost = {1.0, 0.9, 1.1, 1.0, 0.95, 1.1, 0.9, 1.05};  // [s] each
+  double clock = 0;
+  const auto start = ProgressBar::Clock::now();
+  const auto scripted = [&] {
+    return start +
+           std::chrono::duration_cast<ProgressBar::Clock::duration>(std::chrono::duration<double>(clock));
+  };
+  double remaining_at_half = 0;
+  const std::string err = stderr_of("progress-eta", [&] {
+    ProgressBar bar(true, {}, scripted);
+    bar.stage("particles", cost.size());
+    constexpr int kSteps = 20;  // updates per realization
+    for (std::size_t k = 0; k < cost.size(); ++k)
+      for (int i = 1; i <= kSteps; ++i) {
+        clock += cost[k] / kSteps;
+        const double fraction = (static_cast<double>(k) + i / static_cast<double>(kSteps)) / 8;
+        bar.update(fraction, 0);
+        if (fraction == 0.5) remaining_at_half = std::accumulate(cost.begin() + 4, cost.end(), 0.0);
+      }
+    bar.finish();
+  });
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      err, m, std::regex(R"(particles:  50%  realization 5 of 8  elapsed [0-9.]+ s  eta ([0-9]+) s)")))
+      << err;
+  EXPECT_NEAR(std::stod(m[1].str()), remaining_at_half, 0.3 * remaining_at_half) << err;
+  EXPECT_NE(err.find("realization 8 of 8"), std::string::npos) << err;
 }
 
 }  // namespace

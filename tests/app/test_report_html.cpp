@@ -94,6 +94,13 @@ TEST(HtmlPage, ReadsThePngTitle) {
       << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("tEXt", std::string("Title\0fields at t = 1", 21))
       << chunk("IEND", "");
   EXPECT_EQ(html::png_title(png).value_or("(none)"), "fields at t = 1");
+  // A title beyond Latin-1 (plain Unicode for what mathtext drew): matplotlib writes an
+  // uncompressed iTXt, "Title\0" flag 0, method 0, language "", translated keyword "", UTF-8.
+  const std::string unicode = "temperature T = \u27e8v\u00b2\u27e9";
+  std::ofstream(png, std::ios::binary)
+      << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("iTXt", std::string("Title\0\0\0\0\0", 10) + unicode)
+      << chunk("IEND", "");
+  EXPECT_EQ(html::png_title(png).value_or("(none)"), unicode);
   std::ofstream(png, std::ios::binary) << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("IEND", "");
   EXPECT_FALSE(html::png_title(png));
   fs::remove(png);

@@ -2,11 +2,14 @@
 """Checks the animation of a run: DIR/animation.mp4 has one frame per recorded
 frame (/animation/t of DIR/result.h5), 1280x720 pixels, and plays (ffprobe
 reads a positive duration, the frame count over the frame rate); the GIF has
-the same frames, 800 pixels wide; the poster PNG exists.
+the same frames, 800 pixels wide (or the movie's width, if less); the poster
+PNG exists, of the movie's size. With the options of `shockgas animate`, the
+animation is checked against what they asked for instead.
 
-Usage: /usr/bin/python3 check_animation.py DIR
+Usage: /usr/bin/python3 check_animation.py DIR [--size WxH] [--frames N] [--fps N]
 Exit 0: passed; 1: failed; 77: skipped (no ffprobe, h5py or matplotlib).
 """
+import argparse
 import json
 import shutil
 import subprocess
@@ -37,25 +40,48 @@ def probe(path):
             "duration": float(info["format"].get("duration", 0))}
 
 
+def arguments():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("dir", type=Path)
+    parser.add_argument("--size", default="1280x720")
+    parser.add_argument("--frames", type=int, help="default: every recorded frame")
+    parser.add_argument("--fps", type=float, help="default: any")
+    return parser.parse_args()
+
+
+def png_size(path):
+    """Width and height of a PNG, from its IHDR chunk."""
+    head = path.read_bytes()[16:24]
+    return int.from_bytes(head[:4], "big"), int.from_bytes(head[4:], "big")
+
+
 def main():
-    run = Path(sys.argv[1])
+    args = arguments()
+    run = args.dir
+    width, height = (int(n) for n in args.size.split("x"))
     with h5py.File(run / "result.h5", "r") as f:
-        frames = len(f["animation/t"])
+        frames = args.frames or len(f["animation/t"])
     problems = []
     mp4 = probe(run / "animation.mp4")
     print(f"animation.mp4: {mp4}")
-    if (mp4["width"], mp4["height"]) != (1280, 720):
-        problems.append(f"the MP4 is {mp4['width']}x{mp4['height']}, not 1280x720")
+    if (mp4["width"], mp4["height"]) != (width, height):
+        problems.append(f"the MP4 is {mp4['width']}x{mp4['height']}, not {width}x{height}")
     if mp4["frames"] != frames:
-        problems.append(f"the MP4 has {mp4['frames']} frames, the record {frames}")
+        problems.append(f"the MP4 has {mp4['frames']} frames, not {frames}")
+    if args.fps and mp4["fps"] != args.fps:
+        problems.append(f"the MP4 plays {mp4['fps']} frames per second, not {args.fps}")
     if not abs(mp4["duration"] - frames / mp4["fps"]) <= 1.5 / mp4["fps"]:  # the container rounds to a frame
         problems.append(f"the MP4 plays {mp4['duration']} s, not {frames} frames at {mp4['fps']} per second")
     gif = probe(run / "animation.gif")
     print(f"animation.gif: {gif}")
-    if gif["width"] != 800 or gif["frames"] != frames:
-        problems.append(f"the GIF is {gif['width']} wide with {gif['frames']} frames, not 800 and {frames}")
-    if not (run / "animation.png").is_file():
+    gif_width = min(width, 800)
+    if gif["width"] != gif_width or gif["frames"] != frames:
+        problems.append(f"the GIF is {gif['width']} wide with {gif['frames']} frames, not {gif_width} and {frames}")
+    png = run / "animation.png"
+    if not png.is_file():
         problems.append("no animation.png (the last frame)")
+    elif png_size(png) != (width, height):
+        problems.append(f"animation.png is {png_size(png)}, not {width}x{height}")
     for p in problems:
         print("FAIL", p)
     sys.exit(1 if problems else 0)

@@ -49,5 +49,34 @@ TEST(FieldDistance, AConstantReferenceHasNoRelativeScale) {
   EXPECT_THROW(l1_distance({}, {}, L1Scale::absolute), InputError);
 }
 
+// A delta-shock (all the mass in one cell) one cell off: the densities share no
+// cell, so L1 says the whole mass is misplaced (2 of at most 2), while the mass
+// moved 1 cell of n: W1 / L = 1 / n exactly (cell averages, M at the midpoints).
+TEST(FieldDistance, ADeltaShockOneCellOffIsOneCellAwayInMassDistance) {
+  constexpr std::size_t n = 64;
+  std::vector<double> exact(n, 0.0), shifted(n, 0.0);
+  exact[20] = n, shifted[21] = n;  // unit mass on a unit domain, as cell averages
+  EXPECT_DOUBLE_EQ(l1_distance(shifted, exact, L1Scale::absolute).relative, 2.0);
+  EXPECT_DOUBLE_EQ(mass_distance(shifted, exact), 1.0 / n);
+  EXPECT_EQ(mass_distance(exact, exact), 0.0);
+}
+
+// Spread over the cells around it, the same delta-shock costs the mean
+// distance its mass moves: half of it one cell each way, 1/2 cell on average.
+// On a ring a shift of the whole density costs that shift, whichever way round.
+TEST(FieldDistance, MassDistanceIsTheMeanDistanceTheMassMoves) {
+  constexpr std::size_t n = 100;
+  std::vector<double> exact(n, 0.0), spread(n, 0.0);
+  exact[50] = n;
+  spread[49] = spread[51] = 0.25 * n, spread[50] = 0.5 * n;
+  EXPECT_NEAR(mass_distance(spread, exact), 0.5 / n, 1e-15);
+  std::vector<double> bumps(n), moved(n);
+  for (std::size_t i = 0; i < n; ++i) bumps[i] = i % 10 == 0 ? 10.0 : 0.0;  // a delta-shock every 10 cells
+  for (std::size_t i = 0; i < n; ++i) moved[(i + 3) % n] = bumps[i];  // each 3 cells on, 7 short of the next
+  EXPECT_NEAR(mass_distance(moved, bumps), 3.0 / n, 1e-12);
+  EXPECT_THROW(mass_distance({0, 0}, {1, 1}), InputError);
+  EXPECT_THROW(mass_distance({1, 1, 1}, {1, 1}), InputError);
+}
+
 }  // namespace
 }  // namespace shockgas::compare

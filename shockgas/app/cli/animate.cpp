@@ -1,9 +1,11 @@
 // shockgas animate DIR (animate.hpp).
 #include "shockgas/app/cli/animate.hpp"
 
+#include <charconv>
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <vector>
 
 #include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/directory/run_directory.hpp"
@@ -18,13 +20,14 @@ namespace shockgas::app {
 
 namespace fs = std::filesystem;
 
-bool has_frames(const std::string& result_path) {
-  const ResultContents file = read_result(result_path);
+std::size_t recorded_frames(const std::string& result_path) {
+  const std::string times = "/animation/t";
+  const ResultContents file =
+      read_result(result_path, [&](const std::string& path) { return path == times; });
   // As `shockgas info` says: a file without a manifest entry is read as it is.
   if (!file.verified()) std::cerr << "shockgas: warning: " << unverified_warning(result_path) << "\n";
-  for (const auto& d : file.datasets)
-    if (d.path == "/animation/t") return true;
-  return false;
+  const auto it = file.values.find(times);
+  return it == file.values.end() ? 0 : it->second.size();
 }
 
 namespace {
@@ -37,6 +40,47 @@ std::string first_variant(const Manifest& manifest) {
     if (e.path.size() > tail.size() && e.path.compare(e.path.size() - tail.size(), tail.size(), tail) == 0)
       return e.path.substr(0, e.path.size() - tail.size());
   return "";
+}
+
+// The whole of text as a decimal integer within [low, high]; nullopt otherwise.
+std::optional<long> whole_number(const std::string& text, long low, long high) {
+  long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < low || value > high)
+    return std::nullopt;
+  return value;
+}
+
+// The script's --fps and --size for the request; InputError naming the option.
+std::vector<std::string> picture_arguments(const AnimationRequest& request) {
+  std::vector<std::string> args;
+  if (!request.fps.empty()) {
+    const auto fps = whole_number(request.fps, 1, 60);
+    require(fps.has_value(), "--fps", request.fps, "an integer from 1 to 60 (frames per second)");
+    args.insert(args.end(), {"--fps", std::to_string(*fps)});
+  }
+  if (!request.size.empty()) {
+    const auto x = request.size.find('x');
+    const long w = whole_number(request.size.substr(0, x), 160, 3840).value_or(1);
+    const long h =
+        x == std::string::npos ? 1 : whole_number(request.size.substr(x + 1), 90, 2160).value_or(1);
+    require(w % 2 == 0 && h % 2 == 0, "--size", request.size,  // 1: not a number in range
+            "WxH in pixels, each even (H.264 halves the colour planes), from 160x90 to 3840x2160, e.g. "
+            "1920x1080");
+    args.insert(args.end(), {"--size", std::to_string(w) + "x" + std::to_string(h)});
+  }
+  return args;
+}
+
+// The script's --frames for the request, against the frames the run recorded.
+std::vector<std::string> frame_arguments(const AnimationRequest& request, std::size_t recorded) {
+  if (request.frames.empty()) return {};
+  const long most = static_cast<long>(recorded);
+  const auto frames = whole_number(request.frames, 2, most);
+  require(frames.has_value(), "--frames", request.frames,
+          "an integer from 2 to " + std::to_string(most) +
+              " (the frames result.h5 holds; a run records more with [output] animation_frames)");
+  return {"--frames", std::to_string(*frames)};
 }
 
 }  // namespace
@@ -60,7 +104,8 @@ void stage_run(const fs::path& dir, const fs::path& staging) {
 
 }  // namespace
 
-void animate(const std::string& dir) {
+void animate(const std::string& dir, const AnimationRequest& request) {
+  std::vector<std::string> args = picture_arguments(request);  // before any file is read
   const std::string result = (fs::path(dir) / "result.h5").string();
   require(fs::is_regular_file(result), "DIR", dir, "a run's output directory, holding result.h5");
   const auto manifest = read_manifest(dir);
@@ -82,10 +127,13 @@ void animate(const std::string& dir) {
   // files staged with the animation, moved into place when all is written.
   RunDirectory run(dir, *scene, true,
                    variant ? RunDirectory::LockOn::enclosing : RunDirectory::LockOn::target);
-  require(has_frames(result), "output.animation", std::string("false"),
+  const std::size_t recorded = recorded_frames(result);
+  require(recorded > 0, "output.animation", std::string("false"),
           "true: the run must record its frames (run the scene again with --set output.animation=true)");
+  const std::vector<std::string> frames = frame_arguments(request, recorded);
+  args.insert(args.end(), frames.begin(), frames.end());
   stage_run(dir, run.staging());
-  std::cerr << with_staging_as_target(make_animation(run.staging().string()));
+  std::cerr << with_staging_as_target(make_animation(run.staging().string(), "", args));
   write_report_html(run.staging());
   const Manifest written = write_manifest(run.staging(), *scene);
   run.commit();

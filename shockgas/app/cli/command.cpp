@@ -52,6 +52,7 @@ struct Arguments {
   studies::StudyOptions bench;
   studies::TailStudyOptions tail;
   std::vector<double> tail_sizes;  // --N, read as numbers so that 1e7 is allowed
+  AnimationRequest animation;      // read as text: animate() says what is allowed
 };
 
 // --out "" would name no directory: a run took its default, bench the root.
@@ -132,6 +133,10 @@ int do_run(const Arguments& args) {
   const Scene scene = args.resume.empty()
                           ? load_scene(args.scene_path, args.overrides)  // InputError: nothing written
                           : resumed_scene(args, options);
+  if (speaks_for_job())  // rank 0 speaks for an MPI job
+    for (const Scene& s : scene.has_sweep ? expand_sweep(scene) : std::vector<Scene>{scene})
+      if (!s.solver_note.empty())
+        std::cerr << "shockgas: note: " << (scene.has_sweep ? s.name + ": " : "") << s.solver_note << "\n";
   const std::string dir = run_scene(scene, options);
   if (!speaks_for_job()) return kExitOk;  // rank 0 writes and speaks for an MPI job
   std::cout << "results in " << as_directory(dir) << "\n";
@@ -183,7 +188,7 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     return kExitOk;
   }
   if (app.got_subcommand("animate")) {
-    animate(args.result_path);
+    animate(args.result_path, args.animation);
     std::cout << "animation in " << as_directory(args.result_path) << "\n";
     return kExitOk;
   }
@@ -237,6 +242,10 @@ int run_command(int argc, char** argv) {
   anim->add_option("DIR", args.result_path,
                    "a run's output directory (its scene has [output] animation = true)")
       ->required();
+  anim->add_option("--fps", args.animation.fps, "frames per second, 1 to 60 (default: 8 s in all, 4 to 24)");
+  anim->add_option("--size", args.animation.size, "WxH in pixels, each even (default 1280x720)");
+  anim->add_option("--frames", args.animation.frames,
+                   "how many of the recorded frames, spread evenly (default: all)");
   auto* bench =
       app.add_subcommand("bench", "Work-precision charts and stability maps of every method (CSV + PNG)");
   bench->add_option("--out", args.bench.out_dir, "output directory (default out/bench)")

@@ -15,6 +15,11 @@
 #include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::app {
+namespace {
+// Thrown from a realization's progress report when its pool is abandoned: the
+// engine unwinds from its next check point, as on an abort request.
+struct Abandoned {};
+}  // namespace
 
 struct RealizationPool::State {
   std::shared_ptr<const EnsemblePlan> plan;
@@ -24,6 +29,7 @@ struct RealizationPool::State {
   std::filesystem::path states_dir;
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
+  std::atomic<bool> abandoned{false};  // the running realizations stop unfinished
   std::atomic<bool> go{false};  // every worker started (or the pool refused)
 
   mutable std::mutex mutex;      // guards what follows
@@ -41,6 +47,7 @@ struct RealizationPool::State {
     particles::ParticleParams p = particle_params(plan->scene(item.ensemble));
     p.threads = threads_per_run;
     auto progress = [this, i](double f, double t) {
+      if (abandoned) throw Abandoned{};
       std::lock_guard lock(mutex);
       fraction[i] = f;
       sim_time = std::max(sim_time, t);
@@ -90,6 +97,8 @@ struct RealizationPool::State {
       }
       try {
         run(i);
+      } catch (const Abandoned&) {
+        break;  // neither a record nor a failure: nobody waits for either
       } catch (const InputError& e) {
         fail(i, std::current_exception(), e.what(), true);
       } catch (const std::exception& e) {
@@ -142,10 +151,12 @@ RealizationPool::RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::
   s.go.notify_all();
 }
 
+// Joins always: a thread left running would outlive the objects the process
+// destroys at its exit.
 RealizationPool::~RealizationPool() {
   state_->stop = true;
-  const bool leave = abandon_ && !finished();
-  for (auto& t : threads_) leave ? t.detach() : t.join();
+  if (abandon_) state_->abandoned = true;
+  for (auto& t : threads_) t.join();
 }
 
 std::vector<RealizationRecord> RealizationPool::take_finished() {

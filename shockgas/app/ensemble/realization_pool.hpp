@@ -29,8 +29,9 @@ class RealizationPool {
   };
 
   // Starts `items` of `plan` on `threads` threads (>= 1). abandon_unfinished:
-  // the destructor leaves realizations still running to finish on their own
-  // (the process is about to end the job) instead of waiting for them.
+  // the destructor stops the realizations still running at their engine's next
+  // progress report (about 0.1 s; the job is ending) instead of waiting for
+  // them to finish.
   // states_dir: where realization 0 of an ensemble whose scene keeps_states_apart
   // writes its states as it runs (state_file.hpp; its record then holds none);
   // empty: realization 0's record holds them. checkpoints: the running
@@ -39,7 +40,7 @@ class RealizationPool {
   RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::vector<WorkItem> items, std::size_t threads,
                   bool abandon_unfinished, std::filesystem::path states_dir = {},
                   Checkpointer* checkpoints = nullptr);
-  // Starts no further realization; waits for the running ones unless abandoned.
+  // Starts no further realization; waits for the running ones (stopped first if abandoned).
   ~RealizationPool();
   RealizationPool(const RealizationPool&) = delete;
   RealizationPool& operator=(const RealizationPool&) = delete;

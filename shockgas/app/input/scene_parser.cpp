@@ -245,6 +245,8 @@ Scene parse(const std::string& text, const std::string& path, const std::vector<
     throw FileProblem("SCENE", path, "runs nothing", "a scene needs [particles] or [continuum]");
   if (scene.name.empty()) scene.name = std::filesystem::path(path).stem().string();
   resolve_file(scene, path);
+  scene.solver_note = particles::solver_choice_note(scene.particles);
+  scene.particles.solver = particles::chosen_solver(scene.particles);
   try {
     validate_scene(scene);
   } catch (const InputError& e) {

@@ -105,7 +105,8 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
                 << plan->items().size() << " realizations kept from the checkpoint"
                 << checkpoints->resumed_states() << "\n";
     ProgressBar progress(options.progress && speaks_for_job());
-    progress.stage(job ? "particles, " + std::to_string(job->size()) + " ranks" : "particles");
+    progress.stage(job ? "particles, " + std::to_string(job->size()) + " ranks" : "particles",
+                   plan->items().size());
     computed = compute_records(job, plan, threads, progress, checkpoints.get(), states_dir);
   }
   if (!speaks_for_job()) return dir.string();

@@ -10,6 +10,7 @@
 
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/compare/field_evolution.hpp"
+#include "shockgas/compare/theory_scope.hpp"
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/initial_condition.hpp"
@@ -46,7 +47,8 @@ void check_animation(const Scene& scene);
 // those reached) as clusters, each solver's fields at frame_times
 // (shockgas/continuum/series.hpp), and the evolution of the exact solver's fields (else
 // the first solver's).
-Frames run_frames(const Scene& scene, const InitialCondition& initial,
+// shape: scene_shape(scene, initial) (theory_scopes.hpp), computed once per run.
+Frames run_frames(const Scene& scene, const InitialCondition& initial, const compare::SceneShape& shape,
                   const std::vector<particles::Snapshot>& snapshots, ProgressBar& progress);
 
 }  // namespace shockgas::app

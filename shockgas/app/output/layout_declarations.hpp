@@ -57,6 +57,7 @@ std::vector<Declaration> particle_datasets();  // with the initial condition's
 std::vector<Declaration> field_datasets();     // analysis, continuum, comparison, sweep
 
 std::vector<Declaration> run_keys();                // provenance, initial, particles, analysis
+std::vector<Declaration> theory_keys();             // theory_scopes.cpp: theory.<id>, one per law
 std::vector<Declaration> realization_datasets();    // output_realizations.cpp: each realization's series
 std::vector<Declaration> realization_error_keys();  // ... and the analysis' errors from them
 std::vector<Declaration> comparison_keys();         // continuum, comparison, sweep

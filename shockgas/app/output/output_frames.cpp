@@ -180,13 +180,19 @@ std::vector<Declaration> evolution() {
           "for initial.velocities = \"expression\"", with_frames([](const Frames& f, Emitter& out) {
             if (std::isfinite(f.breaking_time_theory)) out.json(f.breaking_time_theory);
           })),
-      with_theory(key(p, "evolution.amplitude_exponent", "1",
-                      "fitted a in (max v - min v) / 2 ~ t^a on [t_end / compare.fit_window, t_end]",
-                      "with 3 or more frames in the window", evolution_key([](const Evolution& e) {
-                        return e.amplitude_fit ? Json(e.amplitude_fit->exponent) : Json(nullptr);
-                      })),
-                  "-1/2 (N-wave), -1 (periodic sawtooth)"),
-      key(p, "evolution.amplitude_exponent_error", "1", "its least-squares standard error",
+      with_theory(
+          key(p, "evolution.amplitude_exponent", "1",
+              "fitted a in (max v - min v) / 2 ~ t^a on /animation/evolution/amplitude_fit_t: after the "
+              "first "
+              "shock, from theory.n_wave_decay's or theory.sawtooth_decay's window where one holds, and "
+              "from t_end / compare.fit_window",
+              "with 3 or more frames in the window", evolution_key([](const Evolution& e) {
+                return e.amplitude_fit ? Json(e.amplitude_fit->exponent) : Json(nullptr);
+              })),
+          "-1/2 (N-wave), -1 (periodic sawtooth)"),
+      key(p, "evolution.amplitude_exponent_error", "1",
+          "its least-squares standard error: the misfit of one deterministic run to a power law, not an "
+          "error bar",
           "with the exponent", evolution_key([](const Evolution& e) {
             return e.amplitude_fit ? Json(e.amplitude_fit->exponent_error) : Json(nullptr);
           })),

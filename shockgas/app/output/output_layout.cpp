@@ -160,6 +160,7 @@ const std::vector<Declaration>& dataset_declarations() {
 const std::vector<Declaration>& summary_declarations() {
   static const std::vector<Declaration> all = [] {
     std::vector<Declaration> d = layout::run_keys();
+    layout::append(d, layout::theory_keys());
     layout::append(d, layout::realization_error_keys());
     layout::append(d, layout::comparison_keys());
     layout::append(d, layout::extreme_keys());

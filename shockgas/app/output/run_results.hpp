@@ -18,6 +18,7 @@
 #include "shockgas/compare/particle_analysis.hpp"
 #include "shockgas/compare/realization_errors.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
+#include "shockgas/compare/theory_scope.hpp"
 #include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/core/initial_condition.hpp"
@@ -63,6 +64,7 @@ struct ContinuumRun {
   // v relative to the exact v's variation about its mean, rho relative to the mass.
   std::optional<compare::L1Distance> l1_v;
   std::optional<compare::L1Distance> l1_rho;  // where both have a density
+  std::optional<double> w1_rho;               // compare::mass_distance to the exact density (both)
 };
 
 struct Comparison {
@@ -99,6 +101,7 @@ struct ShardResults {
 struct RunResults {
   const Scene* scene = nullptr;
   const InitialCondition* initial = nullptr;  // none for a sweep
+  compare::SceneShape shape;  // what the laws' conditions read of the scene (theory_scopes.hpp)
   std::optional<ParticleResults> particles;
   std::vector<ContinuumRun> continuum;
   std::optional<Comparison> comparison;
@@ -119,7 +122,9 @@ using EnsembleSource = std::function<ComputedEnsemble(const Scene&)>;
 
 // The stages (stage_*.cpp). Each takes what earlier stages handed on. The
 // particles stage runs the ensemble here unless a source gives it.
-ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+// shape: scene_shape(scene, initial) (theory_scopes.hpp), computed once per run.
+ParticleResults run_particles(const Scene& scene, const InitialCondition& initial,
+                              const compare::SceneShape& shape, ProgressBar& progress,
                               const EnsembleSource& source = {});
 std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialCondition& initial,
                                         ProgressBar& progress);

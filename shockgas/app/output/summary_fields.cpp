@@ -68,8 +68,18 @@ std::vector<Declaration> continuum() {
           "(1/L) int |rho - rho_exact| dx: the mean distance to the exact density per unit length",
           "when both give a density", each(l1([](const Run& c) { return c.l1_rho; }, per_length))),
       key(p, "continuum.{solver}.l1_rho_relative", "1",
-          "int |rho - rho_exact| dx / int rho_exact dx: the fraction of the mass misplaced (at most 2)",
+          "int |rho - rho_exact| dx / int rho_exact dx (at most 2; large wherever a delta-shock is spread "
+          "over "
+          "other cells than the exact one's, even next to it: continuum.{solver}.w1_rho says where the mass "
+          "is)",
           "when both give a density", each(l1([](const Run& c) { return c.l1_rho; }, relative))),
+      with_theory(
+          key(p, "continuum.{solver}.w1_rho", "1",
+              "where the mass is: W1 / L = (1/L) min_c int |M - M_exact - c| dx of the cumulative mass "
+              "fractions M(x), the mean distance the mass must move as a fraction of the domain "
+              "(shockgas/compare/field_distance.hpp)",
+              "when both give a density", each([optional](const Run& c) { return optional(c.w1_rho); })),
+          "0; a mass fraction f one cell off costs f / cells"),
   };
 }
 

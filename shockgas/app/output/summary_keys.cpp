@@ -177,12 +177,18 @@ std::vector<Declaration> analysis() {
   using Fit = compare::PowerLawFit;
   using Dist = compare::DistributionAnalysis;
   return {
-      with_theory(key(p, "analysis.T_exponent", "1", "fitted exponent of T(t) on [t_end / fit_window, t_end]",
+      with_theory(key(p, "analysis.T_exponent", "1",
+                      "fitted exponent of T(t) on analysis.T_fit_window: theory.sticky_cooling's window "
+                      "where it holds, "
+                      "else [t_end / fit_window, t_end]",
                       "with 3 or more samples in the window",
                       fit([](const Cooling&, const Fit& f) { return f.exponent; })),
                   "-2/3 (sticky gas, t_stick << t << N^(3/2))"),
-      key(p, "analysis.T_exponent_error", "1", "its least-squares standard error", "",
-          fit([](const Cooling&, const Fit& f) { return f.exponent_error; })),
+      key(p, "analysis.T_exponent_error", "1",
+          "its least-squares standard error, several times too small (correlated sample times): not an error "
+          "bar; "
+          "the error is analysis.T_exponent_jackknife_error",
+          "", fit([](const Cooling&, const Fit& f) { return f.exponent_error; })),
       key(p, "analysis.T_fit_window", "time", "the fit window [t_min, t_max]", "",
           fit([](const Cooling&, const Fit& f) {
             return Json{f.t_min, f.t_max};

@@ -107,11 +107,17 @@ std::optional<std::string> png_title(const std::filesystem::path& png) {
     const std::string type(b.begin() + static_cast<std::ptrdiff_t>(at + 4),
                            b.begin() + static_cast<std::ptrdiff_t>(at + 8));
     if (type == "IDAT" || type == "IEND") break;  // matplotlib writes its text before the image data
-    if (type == "tEXt") {
-      const auto first = b.begin() + static_cast<std::ptrdiff_t>(at + 8);
-      const std::string data(first, first + length);
-      const auto nul = data.find('\0');
-      if (nul != std::string::npos && data.substr(0, nul) == "Title") return data.substr(nul + 1);
+    const auto first = b.begin() + static_cast<std::ptrdiff_t>(at + 8);
+    const std::string data(first, first + length);
+    const auto nul = data.find('\0');
+    const bool title = nul != std::string::npos && data.substr(0, nul) == "Title";
+    if (title && type == "tEXt") return data.substr(nul + 1);
+    // iTXt (matplotlib's for text beyond Latin-1): keyword 0 compressed method language 0 translated 0 UTF-8
+    if (title && type == "iTXt" && nul + 3 < data.size() && data[nul + 1] == 0) {
+      const auto language_end = data.find('\0', nul + 3);
+      const auto translated_end =
+          language_end == std::string::npos ? language_end : data.find('\0', language_end + 1);
+      if (translated_end != std::string::npos) return data.substr(translated_end + 1);
     }
     at += 12 + length;
   }

@@ -15,7 +15,8 @@ std::string escape(const std::string& text);
 // "data:<mime>;base64,..." holding the file's bytes.
 std::string data_uri(const std::filesystem::path& file, const std::string& mime);
 
-// The PNG's tEXt "Title" (matplotlib's savefig metadata), if it has one.
+// The PNG's "Title" (matplotlib's savefig metadata: tEXt, or uncompressed iTXt
+// when it holds more than Latin-1, as a title in plain Unicode does), if it has one.
 std::optional<std::string> png_title(const std::filesystem::path& png);
 
 // The whole page: title, inline style (large type for a projector, one column

@@ -48,11 +48,14 @@ void remove_partial_pictures(const fs::path& dir) {
     if (entry.path().extension() == ".partial" && entry.is_regular_file(ec)) fs::remove(entry.path(), ec);
 }
 
+// The drawing scripts' folder under a data directory (data_dir.hpp).
+fs::path plots_in(const fs::path& data) { return data / "plots"; }
+
 }  // namespace
 
 fs::path plots_dir() {
   const auto data = data_dir();
-  return data ? *data / "plots" : fs::path();
+  return data ? plots_in(*data) : fs::path();
 }
 
 std::string run_plot_script(const std::string& script, const char* env_override, const std::string& dir,
@@ -60,10 +63,11 @@ std::string run_plot_script(const std::string& script, const char* env_override,
                             const std::vector<std::string>& args) {
   const char* env = env_override ? std::getenv(env_override) : nullptr;
   std::string tried;
-  if (!env && !data_dir(&tried))
+  const auto data = data_dir(&tried);  // looked up once: the warning names where
+  if (!env && !data)
     return "shockgas: warning: no " + what + " (the plotting package is in none of " + tried +
            "; set SHOCKGAS_DATA_DIR to the folder holding plots/)\n";
-  const std::string python = "/usr/bin/python3", path = env ? env : (plots_dir() / script).string();
+  const std::string python = "/usr/bin/python3", path = env ? env : (plots_in(*data) / script).string();
   if (!fs::exists(python) || !fs::exists(path))
     return "shockgas: warning: no " + what + " (" + (fs::exists(python) ? path : python) +
            " not found; run scripts/setup)\n";
@@ -113,8 +117,10 @@ std::string make_plots(const std::string& dir, bool animation, const std::string
                          within, {"--animation"});
 }
 
-std::string make_animation(const std::string& dir, const std::string& within) {
-  return run_plot_script("animate.py", "SHOCKGAS_ANIMATE_SCRIPT", dir, "animation", "animation.log", within);
+std::string make_animation(const std::string& dir, const std::string& within,
+                           const std::vector<std::string>& args) {
+  return run_plot_script("animate.py", "SHOCKGAS_ANIMATE_SCRIPT", dir, "animation", "animation.log", within,
+                         args);
 }
 
 std::string make_bench_charts(const std::string& dir) {

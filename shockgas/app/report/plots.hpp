@@ -37,7 +37,9 @@ std::string make_plots(const std::string& dir, bool animation, const std::string
 
 // The animation of a result directory alone (plots/animate.py, `shockgas
 // animate`), from its result.h5; a failed script's messages in animation.log.
-std::string make_animation(const std::string& dir, const std::string& within = "");
+// args: the script's options (--fps N, --size WxH, --frames N), checked by the caller.
+std::string make_animation(const std::string& dir, const std::string& within = "",
+                           const std::vector<std::string>& args = {});
 
 // The charts of `shockgas bench` (plots/plot_bench.py), read only from the CSV
 // files of the studies in dir; a failed script's messages in charts.log.

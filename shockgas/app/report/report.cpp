@@ -3,8 +3,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
+#include "shockgas/app/output/theory_scopes.hpp"
+#include "shockgas/compare/cooling_corrections.hpp"
 #include "shockgas/compare/theory.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -46,42 +49,64 @@ void particles_part(std::ostream& out, const Scene& scene, const particles::Ense
   out << ".\n\n";
 }
 
-void cooling_part(std::ostream& out, const compare::CoolingAnalysis& a) {
+// "+- e (jackknife over n realizations)", or the words that say there is none.
+std::string error_text(const std::optional<compare::JackknifeEstimate>& e) {
+  if (e && std::isfinite(e->error))
+    return "+- " + brief(e->error) + " (jackknife over " + std::to_string(e->samples) + " realizations)";
+  return "(no error estimate from one realization)";
+}
+
+void cooling_part(std::ostream& out, const RunResults& r) {
+  const compare::CoolingAnalysis& a = r.particles->cooling;
   if (!a.not_determined.empty()) out << "- cooling_law: not determined (" << a.not_determined << ").\n\n";
   if (!a.fit) return;
   const auto& fit = *a.fit;
   const auto& c = a.crossovers;
+  const auto& errors = r.particles->errors;
+  const auto jackknife = errors ? std::optional(errors->T_exponent) : std::nullopt;
   out << "## Cooling law\n\n";
-  out << "- T ~ t^a with a = " << brief(fit.exponent) << " +- " << brief(fit.exponent_error) << " on ["
-      << brief(fit.t_min) << ", " << brief(fit.t_max)
-      << "] (sticky-gas regime theory: " << compare::kStickyCoolingExponentText << ").\n";
+  out << "- T ~ t^a with a = " << brief(fit.exponent) << " " << error_text(jackknife) << " on ["
+      << brief(fit.t_min) << ", " << brief(fit.t_max) << "]; " << law_note(r, compare::Law::sticky_cooling)
+      << ".\n";
+  if (law_scope(r, compare::Law::sticky_cooling).holds) {
+    const auto corrections = compare::cooling_corrections(
+        r.scene->initial.N, r.scene->initial.positions == Positions::lattice, fit.t_min, fit.t_max);
+    out << "- "
+        << compare::cooling_departure_text(fit.exponent, jackknife ? jackknife->error : std::nan(""),
+                                           jackknife ? jackknife->samples : 1, corrections, fit.t_min,
+                                           fit.t_max)
+        << "\n";
+  }
   out << "- Crossovers read off d ln T / d ln t: t_dissip = " << brief(c.t_dissip)
-      << " (theory ~ 1/eps = " << brief(c.t_dissip_theory) << "), t_stick = " << brief(c.t_stick)
-      << " (theory ~ eps^(-3/2) = " << brief(c.t_stick_theory)
-      << "); nan = the local exponent never reaches the t^-2 regime (none for moderately inelastic gases, "
-         "e.g. "
-         "r = 0.5) or the crossover is outside the sampled window.\n\n";
+      << ", t_stick = " << brief(c.t_stick) << " (nan: not crossed in the sampled window); ";
+  if (law_scope(r, compare::Law::crossovers).holds)
+    out << law_note(r, compare::Law::crossovers) << " = " << brief(c.t_dissip_theory) << ", "
+        << brief(c.t_stick_theory) << ".\n\n";
+  else
+    out << law_note(r, compare::Law::crossovers) << ".\n\n";
 }
 
-void distribution_part(std::ostream& out, const compare::DistributionAnalysis& a) {
+void distribution_part(std::ostream& out, const RunResults& r) {
+  const compare::DistributionAnalysis& a = r.particles->distribution;
+  const std::string theory = law_note(r, compare::Law::velocity_scaling);
   if (a.collapse_distance)
     out << "## Velocity distribution\n\n- Collapse of P(v,t) t^(-1/3) against z = (v - <v>) t^(1/3) over "
         << a.late.size() << " times in [" << brief(a.late.front().t) << ", " << brief(a.late.back().t)
-        << "]: mean L1 distance " << brief(*a.collapse_distance)
-        << " (0 = perfect collapse, 2 = disjoint).\n";
+        << "]: mean L1 distance " << brief(*a.collapse_distance) << " (0 = perfect collapse, 2 = disjoint); "
+        << theory << ".\n";
   if (!a.not_determined.empty()) {
     out << "- velocity_distribution: not determined (" << a.not_determined << ").\n\n";
     return;
   }
   if (!a.collapse_distance) return;
-  const std::string theory = "theory: " + brief(compare::kTailExponent);
   out << "- Tail ln Phi ~ -c |z|^a for |z| >= " << brief(a.tail_z_min);
   if (a.tail.at_bound)
-    out << ": not determined (the best a sits at the scan bound: too few or too noisy tail points; " << theory
-        << ").\n\n";
+    out << ": not determined (the best a sits at the scan bound: too few or too noisy tail points).\n\n";
   else
-    out << " (one standard deviation): a = " << brief(a.tail.exponent) << " +- "
-        << brief(a.tail.exponent_error) << " (" << theory << ").\n\n";
+    out << " (one standard deviation): a = " << brief(a.tail.exponent) << " "
+        << error_text(r.particles->errors ? std::optional(r.particles->errors->distribution.tail_exponent)
+                                          : std::nullopt)
+        << ".\n\n";
 }
 
 void continuum_part(std::ostream& out, const Scene& scene, const std::vector<ContinuumRun>& runs) {
@@ -92,9 +117,11 @@ void continuum_part(std::ostream& out, const Scene& scene, const std::vector<Con
     if (run.l1_v) {
       out << "; L1 distance to the exact solution per unit length: v " << brief(run.l1_v->per_length) << " ("
           << percent(run.l1_v->relative) << " of the exact v's variation about its mean)";
-      if (run.l1_rho)
-        out << ", rho " << brief(run.l1_rho->per_length) << " (" << percent(run.l1_rho->relative)
-            << " of the mass misplaced)";
+      if (run.w1_rho)
+        out << "; where the mass is: it must move on average " << percent(*run.w1_rho)
+            << " of the domain to match the exact density (Wasserstein-1 of the cumulative masses; one cell "
+               "is "
+            << percent(1.0 / static_cast<double>(r.x.size())) << ")";
     }
     if (!r.method_note.empty()) out << " (" << r.method_note << ")";
     out << "\n";
@@ -102,25 +129,39 @@ void continuum_part(std::ostream& out, const Scene& scene, const std::vector<Con
   out << "\n";
 }
 
-void comparison_part(std::ostream& out, const Scene& scene, const Comparison& cmp) {
+// A cell of the comparison's table: the ideal where the law holds, else why there is none.
+std::string ideal(const RunResults& r, compare::Law law, const std::string& value) {
+  if (!law_scope(r, law).holds) return law_note(r, law);
+  const compare::TheoryDeclaration& d = compare::declaration(law);
+  return value + " (theory `" + d.id + "`, " + d.source + ")";
+}
+
+void comparison_part(std::ostream& out, const RunResults& r) {
+  using compare::Law;
+  const Comparison& cmp = *r.comparison;
   const auto& c = cmp.snapshot;
   if (!cmp.note.empty())
     out << "- The particles stopped at t = " << brief(c.t) << " < t_end: `" << cmp.solver
         << "` is compared at that time.\n\n";
   out << "## Shocks and clusters at t = " << brief(c.t) << " (solver `" << cmp.solver << "`)\n\n";
-  out << "| figure of merit | value | theory / ideal |\n|---|---|---|\n";
-  out << "| shocks (mass >= " << brief(c.min_mass) << ") | " << c.n_shocks << " | N t^(-2/3) = "
-      << brief(std::round(compare::expected_shock_count(static_cast<double>(scene.initial.N), c.t)))
-      << " (ratio " << brief(c.shock_count_ratio) << ")";
+  out << "| figure of merit | value | ideal |\n|---|---|---|\n";
+  const double expected = compare::expected_shock_count(static_cast<double>(r.scene->initial.N), c.t);
+  out << "| shocks (mass >= " << brief(c.min_mass) << ") | " << c.n_shocks << " | "
+      << ideal(r, Law::shock_count,
+               "N t^(-2/3) = " + brief(std::round(expected)) + ", ratio " + brief(c.shock_count_ratio));
   if (cmp.n_shocks_exact) out << "; exact for this white noise: " << brief(*cmp.n_shocks_exact);
   out << " |\n";
-  out << "| clusters (mass >= " << brief(c.min_mass) << ") | " << c.n_clusters << " | = shocks |\n";
-  out << "| matched cluster mass fraction | " << brief(c.match.matched_mass_fraction) << " | 1 |\n";
-  out << "| largest matched position error | " << brief(c.match.max_position_error) << " | 0 |\n";
+  out << "| clusters (mass >= " << brief(c.min_mass) << ") | " << c.n_clusters << " | "
+      << ideal(r, Law::clusters_are_shocks, "= shocks") << " |\n";
+  out << "| matched cluster mass fraction | " << brief(c.match.matched_mass_fraction) << " | "
+      << ideal(r, Law::clusters_are_shocks, "1") << " |\n";
+  out << "| largest matched position error | " << brief(c.match.max_position_error) << " | "
+      << ideal(r, Law::clusters_are_shocks, "0") << " |\n";
+  const std::string slope = ideal(r, Law::ramp_slope, brief(compare::kSawtoothSlopeTimesT));
   out << "| median sawtooth slope x t (continuum) | " << brief(c.sawtooth.slope_times_t.median) << " | "
-      << brief(compare::kSawtoothSlopeTimesT) << " |\n";
+      << slope << " |\n";
   out << "| median sawtooth slope x t (particles) | " << brief(c.particle_sawtooth.slope_times_t.median)
-      << " | " << brief(compare::kSawtoothSlopeTimesT) << " |\n\n";
+      << " | " << slope << " |\n\n";
 }
 
 }  // namespace
@@ -144,11 +185,11 @@ std::string report_text(const RunResults& r) {
   out << report_header(scene);
   if (r.particles) {
     particles_part(out, scene, r.particles->ensemble);
-    cooling_part(out, r.particles->cooling);
-    distribution_part(out, r.particles->distribution);
+    cooling_part(out, r);
+    distribution_part(out, r);
   }
   if (!r.continuum.empty()) continuum_part(out, scene, r.continuum);
-  if (r.comparison) comparison_part(out, scene, *r.comparison);
+  if (r.comparison) comparison_part(out, r);
   return out.str();
 }
 

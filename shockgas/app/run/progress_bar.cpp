@@ -21,23 +21,38 @@ const std::chrono::steady_clock::time_point process_start = std::chrono::steady_
 
 }  // namespace
 
-ProgressBar::ProgressBar(bool enabled, Listener listener)
+ProgressBar::ProgressBar(bool enabled, Listener listener, std::function<Clock::time_point()> now)
     : enabled_(enabled),
       tty_(isatty(STDERR_FILENO) != 0),
       listener_(std::move(listener)),
-      start_(Clock::now()),
+      now_(now ? std::move(now) : [] { return Clock::now(); }),
+      start_(now_()),
       last_draw_(start_),
       unwinding_(std::uncaught_exceptions()) {}
 
 ProgressBar::~ProgressBar() {
   end_phase(std::uncaught_exceptions() > unwinding_ ? "stopped" : nullptr);
   finish();
+  say_short_phases();
 }
 
-void ProgressBar::stage(const std::string& name) {
+void ProgressBar::say_short_phases() {
+  if (!enabled_ || !spoke_) return;
+  std::string line;
+  char seconds[32];
+  for (std::size_t i = 0; i < timed_.size(); ++i) {
+    if (said_[i]) continue;
+    std::snprintf(seconds, sizeof seconds, " %.2f s", timed_[i].second);
+    line += (line.empty() ? "" : "; ") + timed_[i].first + seconds;  // names hold commas
+  }
+  if (!line.empty()) std::fprintf(stderr, "phases without a line of their own: %s\n", line.c_str());
+}
+
+void ProgressBar::stage(const std::string& name, std::size_t realizations) {
   finish();
   stage_ = name;
-  start_ = last_draw_ = Clock::now();
+  realizations_ = realizations;
+  start_ = last_draw_ = now_();
   last_decile_ = -1;
   last_time_ = 0;
   base_ = std::nullopt;
@@ -50,7 +65,7 @@ void ProgressBar::update(double fraction, double sim_time) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (listener_) listener_(stage_, fraction, sim_time);
   if (!enabled_) return;
-  const auto now = Clock::now();
+  const auto now = now_();
   // The base is the first update that reports any progress: a resumed run's
   // workers report where they took up only after the first poll, which says 0.
   if (!base_ && (fraction > 0 || sim_time > 0)) base_ = Base{now, std::clamp(fraction, 0.0, 1.0), sim_time};
@@ -69,29 +84,51 @@ void ProgressBar::update(double fraction, double sim_time) {
   }
 }
 
-void ProgressBar::draw(double fraction, double sim_time) {
-  const auto now = Clock::now();
-  const double elapsed = std::chrono::duration<double>(now - start_).count();
-  // Rate and remaining time from the work done since the first update: a
-  // resumed run starts where its checkpoint was, not at 0.
-  const Base base = base_.value_or(Base{now, fraction, sim_time});
+// Rate and remaining time from the work done since the first update: a
+// resumed run starts where its checkpoint was, not at 0.
+std::string ProgressBar::eta_text(double fraction, Clock::time_point now) const {
+  const Base base = base_.value_or(Base{now, fraction, 0.0});
   const double since = std::chrono::duration<double>(now - base.clock).count();
-  const double rate = since > 0 ? (sim_time - base.time) / since : 0;
   const double done = fraction - base.fraction;
-  char eta[24] = "?";  // unknown until this process has done some of the work
-  if (done > 0) std::snprintf(eta, sizeof eta, "%.0f", since * (1 - fraction) / done);
-  char line[200];
+  if (!(done > 0)) return "?";  // unknown until this process has done some of the work
+  char eta[32];
+  std::snprintf(eta, sizeof eta, "%.0f s", since * (1 - fraction) / done);
+  return eta;
+}
+
+// Realizations are equal shares of an ensemble's fraction: the one under way is
+// the next after those whose shares are done (with several at once, the lowest).
+std::string ProgressBar::realization_text(double fraction) const {
+  if (realizations_ < 2) return "";
+  const auto n = static_cast<double>(realizations_);
+  const auto k = static_cast<std::size_t>(std::min(n, std::floor(fraction * n) + 1));
+  return "realization " + std::to_string(k) + " of " + std::to_string(realizations_);
+}
+
+void ProgressBar::draw(double fraction, double sim_time) {
+  const auto now = now_();
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  const std::string eta = eta_text(fraction, now);
+  // An ensemble's simulated time is that of its furthest realization: not a measure of its progress.
+  std::string which = realization_text(fraction);
+  if (which.empty()) {
+    char t[48];
+    std::snprintf(t, sizeof t, tty_ ? "t = %-10.4g" : "t = %.4g", sim_time);
+    which = t;
+  }
+  char line[240];
   if (tty_) {
     constexpr int width = 30;
     const int filled = static_cast<int>(width * fraction);
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    std::snprintf(line, sizeof line, "\r%-18s [%s] %3.0f%%  t = %-10.4g  %.3g time units/s  eta %s s  ",
-                  stage_.c_str(), bar.c_str(), 100 * fraction, sim_time, rate, eta);
+    std::snprintf(line, sizeof line, "\r%-18s [%s] %3.0f%%  %s  eta %s  ", stage_.c_str(), bar.c_str(),
+                  100 * fraction, which.c_str(), eta.c_str());
   } else {
-    std::snprintf(line, sizeof line, "%s: %3.0f%%  t = %.4g  %.3g time units/s  elapsed %.1f s\n",
-                  stage_.c_str(), 100 * fraction, sim_time, rate, elapsed);
+    std::snprintf(line, sizeof line, "%s: %3.0f%%  %s  elapsed %.1f s  eta %s\n", stage_.c_str(),
+                  100 * fraction, which.c_str(), elapsed, eta.c_str());
   }
+  spoke_ = true;
   if (line_open_) std::fputs("\n", stderr);  // the phase's time follows on a line of its own
   line_open_ = false;
   std::fputs(line, stderr);
@@ -114,7 +151,7 @@ void ProgressBar::phase(const std::string& name) {
   end_phase(nullptr);
   std::lock_guard<std::mutex> lock(mutex_);
   phase_ = name + about_;
-  phase_start_ = Clock::now();
+  phase_start_ = now_();
   in_phase_ = true;  // timed even when nothing is said
   if (!enabled_) return;
   if (phase_start_ - process_start >= kSilent) {
@@ -131,7 +168,7 @@ void ProgressBar::announce() {
   end_line();
   std::fprintf(stderr, "%s ... ", phase_.c_str());
   std::fflush(stderr);
-  announced_ = line_open_ = true;
+  announced_ = line_open_ = spoke_ = true;
 }
 
 void ProgressBar::end_phase() { end_phase(nullptr); }
@@ -139,8 +176,11 @@ void ProgressBar::end_phase() { end_phase(nullptr); }
 void ProgressBar::end_phase(const char* outcome) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    const double seconds = std::chrono::duration<double>(Clock::now() - phase_start_).count();
-    if (in_phase_) timed_.emplace_back(phase_, seconds);
+    const double seconds = std::chrono::duration<double>(now_() - phase_start_).count();
+    if (in_phase_) {
+      timed_.emplace_back(phase_, seconds);
+      said_.push_back(announced_ && enabled_);
+    }
     if (in_phase_ && announced_) {
       char done[32];
       std::snprintf(done, sizeof done, "%.1f s", seconds);

@@ -1,9 +1,13 @@
 #pragma once
 // Progress of a run on stderr: a redrawn bar when stderr is a terminal, one
-// line per 10 % otherwise; silent during the first second, so that short runs
-// print nothing. Between the measured stages, the phases of a run whose
-// progress is not measured (the comparison, the result files, the plots) each
-// say what the run is doing, on one line completed with their wall time.
+// line per 10 % otherwise, each with the stage's fraction, which realization
+// of how many an ensemble is at, and the time left, eta = elapsed * (1 - f) /
+// (f - f0) from the rate measured since the stage's first progress f0; silent
+// during the first second, so that short runs print nothing. Between the
+// measured stages, the phases of a run whose progress is not measured (the
+// comparison, the result files, the plots) each say what the run is doing, on
+// one line completed with their wall time; a run that said anything ends with
+// one line that times the phases too short to have a line of their own.
 #include <chrono>
 #include <condition_variable>
 #include <functional>
@@ -23,16 +27,21 @@ class ProgressBar {
   // Told of every update (stage, fraction, simulated time), under the bar's lock.
   using Listener = std::function<void(const std::string& stage, double fraction, double sim_time)>;
 
+  using Clock = std::chrono::steady_clock;
   // enabled = false prints nothing (tests, --quiet); listener, if any, hears
-  // every update whether or not anything is printed.
-  explicit ProgressBar(bool enabled = true, Listener listener = {});
+  // every update whether or not anything is printed; now, if given, is the
+  // clock (a scripted one in tests), else Clock::now.
+  explicit ProgressBar(bool enabled = true, Listener listener = {},
+                       std::function<Clock::time_point()> now = {});
   // Ends the current phase: its time, or "stopped" when an exception unwinds.
   ~ProgressBar();
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
 
   // Starts a stage ("particles", "continuum/godunov"); resets the fraction.
-  void stage(const std::string& name);
+  // realizations > 1: the stage is an ensemble of that many, each an equal
+  // share of its fraction, and its lines say "realization k of n".
+  void stage(const std::string& name, std::size_t realizations = 0);
   // fraction of the stage done, in [0, 1]; sim_time the simulated time reached.
   // Thread-safe.
   void update(double fraction, double sim_time);
@@ -62,14 +71,18 @@ class ProgressBar {
   ProgressCallback callback();
 
  private:
-  using Clock = std::chrono::steady_clock;
   void draw(double fraction, double sim_time);
-  void end_line();                      // under mutex_
-  void end_phase(const char* outcome);  // outcome: nullptr for the wall time
-  void announce();                      // under mutex_
+  std::string eta_text(double fraction, Clock::time_point now) const;  // "12 s", or "?" before any progress
+  std::string realization_text(double fraction) const;                 // "realization 3 of 8", or ""
+  void say_short_phases();                                             // the final timing line
+  void end_line();                                                     // under mutex_
+  void end_phase(const char* outcome);                                 // outcome: nullptr for the wall time
+  void announce();                                                     // under mutex_
   bool enabled_, tty_;
   Listener listener_;
+  std::function<Clock::time_point()> now_;
   std::string stage_;
+  std::size_t realizations_ = 0;
   Clock::time_point start_, last_draw_;
   int last_decile_ = -1;
   double last_time_ = 0;
@@ -88,6 +101,8 @@ class ProgressBar {
   Clock::time_point phase_start_;
   bool in_phase_ = false, announced_ = false, line_open_ = false;
   std::vector<std::pair<std::string, double>> timed_;
+  std::vector<bool> said_;  // per timed phase: whether its own line gave its time
+  bool spoke_ = false;      // anything printed
   std::thread announcer_;
   std::condition_variable phase_ended_;
   int unwinding_ = 0;  // std::uncaught_exceptions() when constructed

@@ -13,6 +13,7 @@
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/output/output_layout.hpp"
+#include "shockgas/app/output/theory_scopes.hpp"
 #include "shockgas/app/output/xdmf_file.hpp"
 #include "shockgas/app/report/plots.hpp"
 #include "shockgas/app/report/report.hpp"
@@ -148,10 +149,11 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
   RunResults r;
   r.scene = &scene;
   r.initial = &initial;
+  r.shape = scene_shape(scene, initial);
   sink(r, Part::provenance);
   sink(r, Part::initial);
   if (scene.has_particles) {
-    r.particles = run_particles(scene, initial, progress, source);
+    r.particles = run_particles(scene, initial, r.shape, progress, source);
     sink(r, Part::particles);
     sink(r, Part::analysis);
     release_records(*r.particles);
@@ -168,7 +170,7 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
   }
   if (scene.output.animation) {
     progress.phase("frames: " + std::to_string(scene.output.animation_frames) + " for the animation");
-    r.frames = run_frames(scene, initial,
+    r.frames = run_frames(scene, initial, r.shape,
                           r.particles ? r.particles->frames : std::vector<particles::Snapshot>{}, progress);
     sink(r, Part::animation);
   }

@@ -25,8 +25,10 @@ void assess(ContinuumRun& run, const continuum::ContinuumResult* exact, double m
   if (!r.rho.empty()) run.mass_drift = total(r.rho, r.length) / mass0 - 1;  // 0 up to rounding if conserved
   if (!exact || exact == &r || exact->v.size() != r.v.size()) return;
   run.l1_v = compare::l1_distance(r.v, exact->v, compare::L1Scale::about_mean);
-  if (!r.rho.empty() && r.rho.size() == exact->rho.size())
+  if (!r.rho.empty() && r.rho.size() == exact->rho.size()) {
     run.l1_rho = compare::l1_distance(r.rho, exact->rho, compare::L1Scale::absolute);
+    run.w1_rho = compare::mass_distance(r.rho, exact->rho);
+  }
 }
 
 }  // namespace

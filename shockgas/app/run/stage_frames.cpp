@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "shockgas/app/output/frames.hpp"
+#include "shockgas/app/output/theory_scopes.hpp"
 #include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/app/run/run_internal.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
@@ -35,9 +36,16 @@ std::size_t measured_solver(const std::vector<std::string>& solvers) {
   return it == solvers.end() ? 0 : static_cast<std::size_t>(it - solvers.begin());
 }
 
+// Where the amplitude's decay law holds (N-wave or sawtooth, theory_scope.hpp), its window's start; else 0.
+double decay_fit_start(const Scene& scene, const compare::SceneShape& shape) {
+  for (const compare::Law law : {compare::Law::n_wave_decay, compare::Law::sawtooth_decay})
+    if (const compare::Scope s = compare::scope(law, shape, law_time(scene, law)); s.holds) return s.t_min;
+  return 0.0;
+}
+
 }  // namespace
 
-Frames run_frames(const Scene& scene, const InitialCondition& initial,
+Frames run_frames(const Scene& scene, const InitialCondition& initial, const compare::SceneShape& shape,
                   const std::vector<particles::Snapshot>& snapshots, ProgressBar& progress) {
   Frames f;
   f.t = frame_times(scene);
@@ -55,9 +63,9 @@ Frames run_frames(const Scene& scene, const InitialCondition& initial,
   }
   const std::size_t k = measured_solver(scene.continuum.solvers);
   f.evolution_solver = scene.continuum.solvers[k];
-  f.evolution = compare::analyse_field_evolution(f.fields[k], scene.compare.fit_window);
-  if (!initial.field().from_bodies())
-    f.breaking_time_theory = compare::breaking_time(initial.field().v0, initial.length());
+  f.evolution =
+      compare::analyse_field_evolution(f.fields[k], scene.compare.fit_window, decay_fit_start(scene, shape));
+  f.breaking_time_theory = shape.breaking_time;  // NaN for data given as bodies
   return f;
 }
 

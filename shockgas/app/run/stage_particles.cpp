@@ -7,6 +7,7 @@
 
 #include "shockgas/app/output/frames.hpp"
 #include "shockgas/app/output/run_results.hpp"
+#include "shockgas/app/output/theory_scopes.hpp"
 #include "shockgas/app/records/state_file.hpp"
 #include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
@@ -50,7 +51,8 @@ std::optional<particles::Cluster> heaviest_cluster(const ParticleResults& r, con
 
 }  // namespace
 
-ParticleResults run_particles(const Scene& scene, const InitialCondition& initial, ProgressBar& progress,
+ParticleResults run_particles(const Scene& scene, const InitialCondition& initial,
+                              const compare::SceneShape& shape, ProgressBar& progress,
                               const EnsembleSource& source) {
   ParticleResults r;
   // A phase of progress, until compute_parts starts the next one.
@@ -62,7 +64,7 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
     r.parallel = computed.parallel;
     r.states = std::move(computed.states);
   } else {
-    progress.stage("particles");
+    progress.stage("particles", scene.particles.realizations);
     r.ensemble = particles::run_ensemble(initial, particle_params(scene), progress.callback());
     progress.finish();
     progress.phase(analysis);
@@ -76,16 +78,16 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   r.heaviest = heaviest_cluster(r, scene, initial);
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
-  r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r,
-                                       scene.particles.t_end, scene.compare.fit_window);
+  const TimeWindow fit = cooling_fit_window(scene, shape);
+  r.cooling =
+      compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r, fit.t_min, fit.t_max);
   r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
   r.exact = compare::white_noise_references(scene.initial);
   if (r.exact && r.histogram.bins > 0)
     r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
-  r.errors =
-      compare::jackknife_analysis(r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r,
-                                  scene.particles.t_end, scene.compare.fit_window, r.histogram,
-                                  r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
+  r.errors = compare::jackknife_analysis(
+      r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r, fit.t_min, fit.t_max, r.histogram,
+      r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
   return r;
 }
 

@@ -68,6 +68,9 @@ struct Scene {
   std::string path;                    // file it came from
   std::string text;                    // the scene text as given (before overrides)
   std::vector<std::string> overrides;  // --set key=value, in order
+  // What particles.solver = "auto" chose, and why (particles::solver_choice_note);
+  // "" for another solver. particles.solver holds the choice.
+  std::string solver_note;
 
   InitialParams initial;
   particles::ParticleParams particles;

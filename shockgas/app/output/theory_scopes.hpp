@@ -1,0 +1,36 @@
+#pragma once
+// The laws of shockgas/compare/theory_scope.hpp applied to a run: the scene's
+// shape as their conditions read it, the time each law is held at (the
+// particles' end, the comparison's time, the last frame), and the summary keys
+// theory.<id> that say, for every law, whether it holds for the scene and on
+// which window (plots and report.md state a law only where it holds).
+#include <string>
+#include <vector>
+
+#include "shockgas/app/scene/scene.hpp"
+#include "shockgas/compare/theory_scope.hpp"
+#include "shockgas/core/initial_condition.hpp"
+
+namespace shockgas::app {
+
+struct RunResults;
+
+// The shape of a scene's start (its realization 0 and the continuum's view of it).
+compare::SceneShape scene_shape(const Scene& scene, const InitialCondition& initial);
+
+// When the data a law is held against end: particles.t_end for the particles'
+// laws, the continuum's t_end for the comparison's, the last frame for a wave's.
+double law_time(const Scene& scene, compare::Law law);
+
+// The law's scope and its report text for this run (compare::scope, theory_note).
+compare::Scope law_scope(const RunResults& r, compare::Law law);
+std::string law_note(const RunResults& r, compare::Law law);
+
+// The window of the T(t) fit: the sticky-gas law's where it holds, else
+// [t_end / fit_window, t_end].
+struct TimeWindow {
+  double t_min = 0, t_max = 0;  // [time]
+};
+TimeWindow cooling_fit_window(const Scene& scene, const compare::SceneShape& shape);
+
+}  // namespace shockgas::app

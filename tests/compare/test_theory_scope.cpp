@@ -1,0 +1,95 @@
+// Where each law holds (shockgas/compare/theory_scope.hpp), on scenes whose
+// physics is known: a gas of random velocities, a sine wave, an N-wave, a
+// Riemann problem, three particles.
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "shockgas/compare/theory.hpp"
+#include "shockgas/compare/theory_scope.hpp"
+
+namespace shockgas::compare {
+namespace {
+
+SceneShape gas(double r, std::size_t N = 20000) {
+  SceneShape s;
+  s.N = N, s.r = r, s.random_velocities = s.uniform_density = true;
+  return s;
+}
+
+SceneShape wave(double t_star, double pulse_fraction, bool particles) {
+  SceneShape s;
+  s.breaking_time = t_star, s.pulse_fraction = pulse_fraction, s.uniform_density = true;
+  if (particles) s.N = 2000, s.r = 0;
+  return s;
+}
+
+// r = 0.5, t_stick = 8: the default scene's window [t_end / 100, t_end] starts
+// past 10 t_stick and stays; no homogeneous-cooling regime between 1/eps = 4 and 8.
+TEST(TheoryScope, AGasAtHalfRestitutionCoolsAsTheStickyGasOnItsWindow) {
+  SceneShape s = gas(0.5);
+  s.fit_window = 100;
+  const Scope cooling = scope(Law::sticky_cooling, s, 1e4);
+  ASSERT_TRUE(cooling.holds) << cooling.reason;
+  EXPECT_EQ(cooling.t_min, 100);
+  EXPECT_EQ(cooling.t_max, 1e4);
+  EXPECT_FALSE(scope(Law::crossovers, s, 1e4).holds);
+  for (Law law : {Law::velocity_scaling, Law::shock_count, Law::clusters_are_shocks, Law::ramp_slope})
+    EXPECT_TRUE(scope(law, s, 1e4).holds) << declaration(law).id;
+  for (Law law : {Law::breaking, Law::n_wave_decay, Law::sawtooth_decay, Law::lobe_areas})
+    EXPECT_FALSE(scope(law, s, 1e4).holds) << declaration(law).id;
+}
+
+// r = 0.99: t_stick = eps^(-3/2) = 2828, so at t = 10^4 the gas is not yet
+// sticky (10 t_stick = 28284) while its crossovers are far apart (eps^(-1/2) = 14).
+// At r = 0.97 the window starts a decade after t_stick, not at t_end / fit_window.
+TEST(TheoryScope, TheStickyLawStartsADecadeAfterTStick) {
+  EXPECT_FALSE(scope(Law::sticky_cooling, gas(0.99), 1e4).holds);
+  EXPECT_TRUE(scope(Law::crossovers, gas(0.99), 1e4).holds);
+  const Scope late = scope(Law::sticky_cooling, gas(0.97), 2e4);
+  ASSERT_TRUE(late.holds);
+  EXPECT_DOUBLE_EQ(late.t_min, 10 * sticking_time(0.97));
+  EXPECT_FALSE(scope(Law::sticky_cooling, gas(0.5, 3), 1e4).holds);  // three particles
+}
+
+// A sine of period 1 breaks at t* = 1/(2 pi): its breaking holds, but up to
+// t = 0.5 = 3.1 t* neither its sawtooth's 1/t ramps nor its decay do; by t = 20
+// the decay holds from 10 t*; an N-wave's laws never apply to it.
+TEST(TheoryScope, ASineBreaksButIsNoSawtoothBeforeTenTimesItsBreakingTime) {
+  const double t_star = 1 / (2 * std::numbers::pi);
+  const SceneShape sine = wave(t_star, 1.0, true);
+  EXPECT_TRUE(scope(Law::breaking, sine, 0.5).holds);
+  EXPECT_TRUE(scope(Law::clusters_are_shocks, sine, 0.5).holds);  // r = 0, uniform density
+  for (Law law : {Law::sticky_cooling, Law::crossovers, Law::velocity_scaling, Law::shock_count,
+                  Law::ramp_slope, Law::sawtooth_decay, Law::n_wave_decay, Law::lobe_areas})
+    EXPECT_FALSE(scope(law, sine, 0.5).holds) << declaration(law).id;
+  const Scope decay = scope(Law::sawtooth_decay, sine, 20);
+  ASSERT_TRUE(decay.holds);
+  EXPECT_DOUBLE_EQ(decay.t_min, 2.0);  // t_end / fit_window = 2 > 10 t* = 1.59
+  EXPECT_FALSE(scope(Law::n_wave_decay, sine, 20).holds);
+  EXPECT_EQ(theory_note(Law::sawtooth_decay, sine, 0.5).rfind("no theory for this scene", 0), 0u);
+  EXPECT_EQ(theory_note(Law::sawtooth_decay, sine, 20),
+            "theory `sawtooth_decay` (Whitham ch. 2): exponent -1");
+}
+
+// An isolated pulse keeps its lobes and decays as t^(-1/2); a jump (a Riemann
+// problem, t* = 0) has no breaking and no decay law.
+TEST(TheoryScope, AnIsolatedPulseIsAnNWaveAndAJumpNoWaveAtAll) {
+  const SceneShape pulse = wave(0.008, 0.05, true);
+  EXPECT_TRUE(scope(Law::n_wave_decay, pulse, 4).holds);
+  EXPECT_TRUE(scope(Law::lobe_areas, pulse, 4).holds);
+  EXPECT_FALSE(scope(Law::sawtooth_decay, pulse, 4).holds);
+  const SceneShape jump = wave(0.0, 0.9, false);
+  for (Law law : {Law::breaking, Law::n_wave_decay, Law::sawtooth_decay, Law::lobe_areas, Law::ramp_slope,
+                  Law::clusters_are_shocks})
+    EXPECT_FALSE(scope(law, jump, 0.2).holds) << declaration(law).id;
+}
+
+TEST(TheoryScope, EveryLawIsDeclaredOnceInTheOrderOfTheEnum) {
+  const auto& all = theory_declarations();
+  for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(static_cast<std::size_t>(all[i].law), i);
+  EXPECT_EQ(all.back().law, Law::lobe_areas);
+}
+
+}  // namespace
+}  // namespace shockgas::compare
