@@ -33,8 +33,11 @@ constexpr double kHistogramCopies = 3, kSpacetimeCopies = 1;
 constexpr double kCellResultBytes = 24;  // x, v, rho kept per cell and solver
 constexpr double kSeriesColumns = 10;    // the time series of a run (run_result.hpp)
 // On disk (tests/app/test_resources.cpp holds the total against the bytes real
-// runs wrote): result.h5's metadata and attributes (55 kB at the default
-// scene), summary.json, report.md and report.html without pictures (30 kB),
+// runs wrote and against their values uncompressed): every value uncompressed,
+// as float64, an upper bound of what result.h5 stores (layout 2.0 deflates the
+// values and keeps some as float32 or integers: 2.5 to 3.4 times fewer bytes
+// in that test's runs, depending on the values); result.h5's metadata and
+// attributes (55 kB at the default scene), summary.json, report.md and report.html without pictures (30 kB),
 // and the model's shortfalls elsewhere (the default scene at 2000 cells wrote
 // 110 kB beyond its other items); the cells
 // of the initial condition (x, v, rho) and of the comparison (x, v, rho,
