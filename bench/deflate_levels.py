@@ -1,7 +1,7 @@
 """zlib's level for result.h5: write time against size.
 
-Rewrites the datasets of a result file (default: the default scene's, as the
-previous layout wrote it) the way shockgas writes them now (hdf5_file_write.cpp):
+Rewrites the datasets of a run's result file (RUN: a run directory or its
+result.h5, of either layout) the way shockgas writes them now (hdf5_file_write.cpp):
 chunks of about 2^16 values (whole rows of a matrix), shuffle, deflate at each
 level, Fletcher32, the latest file format; each dataset in the type its layout
 declares (`shockgas info --layout`, its type column: float32 for drawn data, int64 for counts).
@@ -9,7 +9,11 @@ h5py calls the same libhdf5 and zlib as shockgas, so the time per level is
 zlib's cost on these data. Process CPU time (the machine may be shared); levels
 alternate round after round and the median of the rounds is printed.
 
-    /usr/bin/python3 bench/deflate_levels.py [FILE] [--types build/shockgas] [--rounds 5]
+    /usr/bin/python3 bench/deflate_levels.py RUN [--types build/shockgas] [--rounds 5]
+
+RUN for docs/performance/command.md's table (every world line of the default scene):
+    build/shockgas run data/scenes/default.toml --set particles.spacetime_particles=20000 \
+        --out out/default-all-lines --no-plots
 """
 
 import argparse
@@ -80,12 +84,13 @@ def write(data, target, level):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("file", nargs="?", default="/work/ref/base/default/result.h5")
+    p.add_argument("run", help="a run directory (its result.h5) or a result file")
     p.add_argument("--types", default="", help="a shockgas binary whose layout gives the types")
     p.add_argument("--rounds", type=int, default=5)
     p.add_argument("--levels", default="0,1,2,3,4,6,9")
     a = p.parse_args()
-    data = read_all(a.file, declared_types(a.types))
+    file = os.path.join(a.run, "result.h5") if os.path.isdir(a.run) else a.run
+    data = read_all(file, declared_types(a.types))
     levels = [int(x) for x in a.levels.split(",")]
     times = {level: [] for level in levels}
     sizes = {}
