@@ -67,8 +67,10 @@ class ParticleRun(Record):
       merges [1], dissipated [mass length^2/time^2].
     final: Bodies at stop.time. snapshots: list of Bodies with their time t.
     histogram: z [length/time^(2/3)], t [time], density (rows: times) of
-      z = (v - <v>) t^(1/3), or None. spacetime: t [time], x [length] (rows:
-      frames, columns: particles), or None.
+      z = (v - <v>) t^(1/3), or None. spacetime: label [1] (the
+      recorded particles, at most spacetime_particles of them evenly spaced,
+      the first and the last always), t [time], x [length] (rows: frames,
+      columns: the labels), or None.
     stop: reason ("completed", "collapse", "event_limit", "wall_limit",
       "rounding_stall"), time [time], position [length].
     total_collisions [1], wall_seconds [s].

@@ -27,7 +27,8 @@ class Result:
     directory     where the files were written (None if only in memory)
 
     result[name] looks up a dataset ("/particles/T"), an attribute
-    ("/particles@stop_reason") or a figure ("analysis.T_exponent").
+    ("/particles@stop_reason") or a figure ("analysis.T_exponent");
+    result.to_xarray() gives the fields and series as an xarray.Dataset.
     """
 
     def __init__(self, outputs):
@@ -45,6 +46,14 @@ class Result:
                 return table[name]
         raise KeyError(f"{name!r}: not a dataset, attribute or summary key of this result "
                        "(see .datasets, .attributes, .figures)")
+
+    def to_xarray(self):
+        """The fields and series as an xarray.Dataset: coordinates solver, x and t,
+        units and descriptions in the attributes of each variable, the scene in the
+        Dataset's (shockgas/_xarray.py; needs python3-xarray)."""
+        from ._xarray import to_xarray  # noqa: PLC0415 (xarray only when asked for)
+
+        return to_xarray(self)
 
     def __contains__(self, name):
         return name in self.datasets or name in self.attributes or name in self.figures

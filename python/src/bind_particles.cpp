@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <span>
 
 #include "arrays.hpp"
@@ -69,9 +70,10 @@ py::dict run_dict(particles::RunResult&& r) {
   }
   d["spacetime"] = py::none();
   if (auto& s = r.spacetime; !s.t.empty()) {
-    const auto rows = static_cast<py::ssize_t>(s.t.size()), cols = static_cast<py::ssize_t>(s.n);
-    d["spacetime"] = py::dict(py::arg("t") = to_numpy(std::move(s.t)),
-                              py::arg("x") = to_numpy(std::move(s.x), {rows, cols}));
+    const auto rows = static_cast<py::ssize_t>(s.t.size()), cols = static_cast<py::ssize_t>(s.labels.size());
+    d["spacetime"] = py::dict(
+        py::arg("label") = to_numpy(std::vector<std::int64_t>(s.labels.begin(), s.labels.end())),
+        py::arg("t") = to_numpy(std::move(s.t)), py::arg("x") = to_numpy(std::move(s.x), {rows, cols}));
   }
   d["stop"] = py::dict(py::arg("reason") = particles::to_string(r.stop.reason), py::arg("time") = r.stop.time,
                        py::arg("position") = r.stop.position);

@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <variant>
@@ -77,11 +78,20 @@ InputError located_in_python(const InputError& e) {
   return e.located("scene['" + e.key().substr(0, dot) + "']['" + e.key().substr(dot + 1) + "']");
 }
 
+// The values as the file stores them (storage.hpp): float32 rounded to the
+// nearest, integers exact, float64 as they are.
+py::array stored_array(std::vector<double>&& values, const std::vector<py::ssize_t>& shape, app::Storage s) {
+  if (s == app::Storage::float32) return to_numpy(std::vector<float>(values.begin(), values.end()), shape);
+  if (s == app::Storage::integer)
+    return to_numpy(std::vector<std::int64_t>(values.begin(), values.end()), shape);
+  return to_numpy(std::move(values), shape);
+}
+
 py::dict outputs_dict(app::CapturedOutputs&& out, const std::string& directory) {
   py::dict datasets, units, descriptions, attributes;
   for (auto& [path, d] : out.datasets) {
     std::vector<py::ssize_t> shape(d.shape.begin(), d.shape.end());
-    datasets[py::str(path)] = to_numpy(std::move(d.data), shape);
+    datasets[py::str(path)] = stored_array(std::move(d.data), shape, d.storage);
     units[py::str(path)] = d.unit;
     descriptions[py::str(path)] = d.description;
   }
@@ -249,7 +259,10 @@ void bind_run(py::module_& m) {
                                             : e.kind == app::LayoutEntry::Kind::attribute ? "attribute"
                                                                                           : "summary",
                           py::arg("path") = e.path, py::arg("unit") = e.unit,
-                          py::arg("description") = e.description, py::arg("when") = e.when));
+                          py::arg("description") = e.description, py::arg("when") = e.when,
+                          py::arg("type") = e.kind == app::LayoutEntry::Kind::dataset
+                                                ? app::storage_name(e.storage)
+                                                : std::string()));
     return out;
   });
 }

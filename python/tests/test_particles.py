@@ -74,6 +74,12 @@ def test_records_snapshots_histogram_spacetime():
     assert run.histogram["density"].shape == (len(run.histogram["t"]), 8)
     assert run.spacetime["x"].shape == (5, 1000)
     assert run.T.flags.owndata is False and run.T.base is not None  # the engine's own vector, not a copy
+    # at most spacetime_particles world lines, evenly spaced: the whole record's columns at their labels
+    few = shockgas.particles.simulate(b.x, b.v, r=0.5, t_end=100.0, samples=10, snapshots=[1.0, 10.0],
+                                      histogram_bins=8, spacetime=True, spacetime_frames=5, spacetime_particles=4)
+    assert few.spacetime["label"].tolist() == [0, 333, 666, 999]
+    assert few.spacetime["label"].dtype == np.int64
+    assert_same_bits(few.spacetime["x"], run.spacetime["x"][:, few.spacetime["label"]], "spacetime x")
 
 
 def test_help_lists_every_key_with_its_unit_and_the_hull_example_runs():

@@ -100,7 +100,8 @@ def test_load_returns_the_object_run_returned(tmp_path):
     scene = tomllib.loads(SCENE)
     ran = shockgas.run(scene, out=tmp_path / "run", plots=False)
     assert ran.directory == str(tmp_path / "run")
-    assert sorted(os.listdir(tmp_path / "run")) == ["manifest.json", "report.html", "report.md", "result.h5", "summary.json"]
+    assert sorted(os.listdir(tmp_path / "run")) == [
+        "manifest.json", "report.html", "report.md", "result.h5", "result.xdmf", "summary.json"]
     loaded = shockgas.load(tmp_path / "run" / "result.h5")
     assert sorted(loaded.datasets) == sorted(ran.datasets)
     for name in ran.datasets:

@@ -48,6 +48,10 @@ ParameterTable<ParticleParams> declare() {
         allowed(above(0)));
   t.add(&P::spacetime_frames, "spacetime_frames", "1",
         "frames of the space-time record, equally spaced in [0, t_end]", allowed(at_least(2)));
+  t.add(&P::spacetime_particles, "spacetime_particles", "1",
+        "particles whose world lines the space-time record keeps: at most this many, evenly spaced in "
+        "label, the first and the last always (all of them when N is not larger)",
+        allowed(at_least(2)));
   t.add(&P::clusters, "clusters", "", "count clusters (default criteria) at the sample times");
   t.add(&P::max_collisions, "max_collisions", "1",
         "stop a realization at its first safe point with at least this many collisions (the end of a time "

@@ -66,6 +66,7 @@ struct ParticleParams {
   std::size_t histogram_bins = 0;  // 0 = no histogram
   double histogram_zmax = 4.0;
   std::size_t spacetime_frames = 200;
+  std::size_t spacetime_particles = 2000;  // world lines recorded (run_result.hpp: spacetime_labels)
   bool clusters = true;
   std::uint64_t max_collisions = 0;  // 0 = no limit (checked at safe points: kGlobalQueueCheckEvery)
   double max_wall_seconds = 0.0;     // 0 = no limit

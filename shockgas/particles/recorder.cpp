@@ -36,7 +36,7 @@ std::vector<double> sample_times(double t_end, std::size_t samples) {
 }
 
 Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, const StateSink* sink)
-    : p_(p), n_(n), L_(L), ring_(ring), sink_(sink) {
+    : p_(p), L_(L), ring_(ring), sink_(sink) {
   samples_ = sample_times(p.t_end, p.samples);
   snapshots_ = sorted_copy(p.snapshots);
   if (p.spacetime) frames_ = frame_times(p.t_end, p.spacetime_frames);
@@ -44,7 +44,7 @@ Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, 
                                               : default_cluster_criteria(p.delta, L / static_cast<double>(n));
   out_.histogram.zmax = p.histogram_zmax;
   out_.histogram.bins = p.histogram_bins;
-  out_.spacetime.n = p.spacetime ? n : 0;
+  if (p.spacetime) out_.spacetime.labels = spacetime_labels(n, p.spacetime_particles);
 }
 
 double Recorder::next_stop() const {
@@ -137,14 +137,19 @@ std::size_t Recorder::count_clusters(const ChainView& s, ClusterCounter& counter
   return clusters;
 }
 
-// Each original particle at its body's position: body b holds first[b] ..
-// first[b+1]-1, the last body the rest up to n and (ring) those before first[0].
+// Each recorded particle at its body's position: body b holds the labels
+// first[b] .. first[b+1]-1, the last body the rest up to n and (ring) those
+// before first[0]; column(l) is the column of the first recorded label >= l.
 void Recorder::frame(double t, const ChainView& s) {
   SpaceTime& st = out_.spacetime;
+  const std::vector<std::size_t>& labels = st.labels;
   st.t.push_back(t);
   const std::size_t base = st.x.size();
-  st.x.resize(base + n_);
-  double* row = st.x.data() + base;
+  st.x.resize(base + labels.size());
+  double* const row = st.x.data() + base;
+  auto column = [&](std::size_t l) {
+    return row + (std::lower_bound(labels.begin(), labels.end(), l) - labels.begin());
+  };
   std::size_t first = 0, pending = 0;
   bool started = false;
   double x = 0;
@@ -152,7 +157,7 @@ void Recorder::frame(double t, const ChainView& s) {
       [&](const ChainChunk& c) {
         for (std::size_t k = 0; k < c.size; ++k) {
           if (started)
-            std::fill(row + pending, row + c.first[k], x);  // the previous body's particles
+            std::fill(column(pending), column(c.first[k]), x);  // the previous body's particles
           else
             first = c.first[k], started = true;
           pending = c.first[k];
@@ -160,8 +165,8 @@ void Recorder::frame(double t, const ChainView& s) {
         }
       },
       Fields::all);
-  std::fill(row + pending, row + n_, x);
-  std::fill(row, row + first, x);
+  std::fill(column(pending), row + labels.size(), x);
+  std::fill(row, column(first), x);
 }
 
 double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }

@@ -73,7 +73,6 @@ class Recorder {
   double wrap(double x) const;
 
   const ParticleParams& p_;
-  std::size_t n_;
   double L_;
   bool ring_;
   const StateSink* sink_;

@@ -44,6 +44,10 @@ void Recorder::restore(RunStateReader& in) {
   for (Snapshot& s : out_.snapshots) s.t = get<double>(in), get_bodies(in, s.bodies);
   get_vector(in, out_.spacetime.t, "the space-time record"),
       get_vector(in, out_.spacetime.x, "the space-time record");
+  if (out_.spacetime.x.size() != out_.spacetime.t.size() * out_.spacetime.labels.size())
+    throw RunError(
+        "a saved run state: its space-time record does not fit the run it is resumed in (other "
+        "particles.spacetime_particles)");
 }
 
 }  // namespace shockgas::particles::detail

@@ -51,14 +51,25 @@ struct ScaledHistogram {
   std::vector<double> density;  // row-major, t.size() x bins [time^(2/3)/length]
 };
 
-// Space-time record for small N (the paper's Fig. 3): the position of every
-// original particle (a merged particle at its cluster's position) at equally
-// spaced times in [0, t_end].
+// Space-time record for small N (the paper's Fig. 3): the position of each
+// recorded original particle (a merged particle at its cluster's position) at
+// equally spaced times in [0, t_end]; the recorded particles are
+// spacetime_labels(N, params.spacetime_particles).
 struct SpaceTime {
-  std::size_t n = 0;      // original particles per frame
-  std::vector<double> t;  // frame times [time]
-  std::vector<double> x;  // row-major, t.size() x n; ring: in [0, L) [length]
+  std::vector<std::size_t> labels;  // the recorded particles' labels (0 .. N-1, initial order), increasing
+  std::vector<double> t;            // frame times [time]
+  std::vector<double> x;            // row-major, t.size() x labels.size(); ring: in [0, L) [length]
 };
+
+// The labels of K = min(n, most) of n particles, evenly spaced:
+// floor(k (n - 1) / (K - 1)) for k = 0 .. K-1, so the first (0) and the last
+// (n - 1) are always among them; all n when n <= most. n < 2^32 (no overflow).
+inline std::vector<std::size_t> spacetime_labels(std::size_t n, std::size_t most) {
+  const std::size_t K = n < most ? n : most;
+  std::vector<std::size_t> labels(K);
+  for (std::size_t k = 0; k < K; ++k) labels[k] = K == 1 ? 0 : k * (n - 1) / (K - 1);
+  return labels;
+}
 
 // How a run ended.
 enum class StopReason : std::uint8_t {

@@ -137,7 +137,8 @@ TEST(JobEnsembles, ARealizationStillRunningWhenTheJobFailsEndsWithIt) {
   FakeJob job;
   job.from_rank_1(kFailed, doubles({0, 0, 1}) + "out of memory");
   const auto plan = std::make_shared<const EnsemblePlan>(
-      parse_scene("[initial]\nN = 100000\n[particles]\nr = 0.5\nt_end = 100000\nrealizations = 2\n", "long.toml"),
+      parse_scene("[initial]\nN = 100000\n[particles]\nr = 0.5\nt_end = 100000\nrealizations = 2\n",
+                  "long.toml"),
       std::nullopt, std::nullopt);
   ProgressBar quiet(false);
   EXPECT_THROW(compute_records(&job, plan, 1, quiet), RunError);

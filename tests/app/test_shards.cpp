@@ -145,8 +145,12 @@ TEST_F(Shards, ShardsOfAnotherSceneAreRefused) {
 TEST_F(Shards, ShardsOfAnotherBuildAreRefused) {
   ASSERT_EQ(shard("scene.toml", "--realizations", "0:5", "a"), 0);
   ASSERT_EQ(shard("scene.toml", "--realizations", "5:10", "b"), 0);
-  Hdf5File::update(path("b/result.h5")).set_attribute("/", "git_commit", "0000000");
-  write_manifest(dir_ / "b", "scene");  // as that build wrote it
+  // As that build wrote it: close() writes the file's own checksum again, so
+  // the merge refuses the build and not a damaged file.
+  Hdf5File other_build = Hdf5File::update(path("b/result.h5"));
+  other_build.set_attribute("/", "git_commit", "0000000");
+  other_build.close();
+  write_manifest(dir_ / "b", "scene");
   EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
   EXPECT_NE(said_.find("shards written by one build"), std::string::npos) << said_;
   EXPECT_FALSE(fs::exists(dir_ / "merged"));

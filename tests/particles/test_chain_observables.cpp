@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numeric>
 
 #include "chain_fixtures.hpp"
@@ -61,6 +62,7 @@ ParticleParams record_everything(double delta) {
   p.snapshots = {10.0};
   p.spacetime = true;
   p.spacetime_frames = 2;
+  p.spacetime_particles = std::numeric_limits<std::size_t>::max();  // every world line, as ref_frame
   return p;
 }
 
@@ -70,6 +72,17 @@ RunResult record(const Chain& s, const ParticleParams& p, bool ring) {
   for (double t = recorder.next_stop(); t != Recorder::done; t = recorder.next_stop())
     recorder.observe(t, view_of(s), Counters{});
   return recorder.finish(view_of(s), RunStop{}, Counters{});
+}
+
+// A record of 7 world lines holds the reference frame's columns at its labels.
+void expect_world_lines_of_labels(const Chain& s, ParticleParams p, bool ring,
+                                  const std::vector<double>& frame) {
+  p.spacetime_particles = 7;
+  const SpaceTime st = record(s, p, ring).spacetime;
+  ASSERT_EQ(st.labels, spacetime_labels(s.particles, 7));
+  ASSERT_EQ(st.x.size(), 2 * st.labels.size());
+  for (std::size_t j = 0; j < st.labels.size(); ++j)
+    EXPECT_EQ(st.x[st.labels.size() + j], frame[st.labels[j]]);
 }
 
 void expect_bodies_equal(const Bodies& a, const Bodies& b) {
@@ -101,6 +114,7 @@ void expect_matches_reference(const Chain& s, const ParticleParams& p, bool ring
   const std::vector<double> frame = ref_frame(s, ring);
   ASSERT_EQ(out.spacetime.x.size(), 2 * s.particles);
   EXPECT_TRUE(std::equal(frame.begin(), frame.end(), out.spacetime.x.begin() + s.particles));
+  expect_world_lines_of_labels(s, p, ring, frame);
 }
 
 TEST(ChainObservables, RandomRingChainsEqualTheSortedCopy) {

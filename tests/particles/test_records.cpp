@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <vector>
 
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/initial_condition.hpp"
@@ -80,6 +82,48 @@ TEST(Records, SpaceTimeFollowsEveryParticle) {
   std::sort(last.begin(), last.end());
   EXPECT_EQ(static_cast<std::size_t>(std::unique(last.begin(), last.end()) - last.begin()),
             out.final_state.size());
+}
+
+// The labels kept: K = min(n, most), increasing, the first and the last always,
+// gaps that differ by at most one (floor(k (n - 1) / (K - 1))).
+TEST(Records, SpaceTimeLabelsAreEvenlySpaced) {
+  EXPECT_EQ(spacetime_labels(5, 2000), (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(spacetime_labels(10, 4), (std::vector<std::size_t>{0, 3, 6, 9}));
+  EXPECT_EQ(spacetime_labels(1, 2), (std::vector<std::size_t>{0}));
+  for (std::size_t n : {2u, 3u, 1999u, 2000u, 2001u, 20000u, 100000u}) {
+    const auto labels = spacetime_labels(n, 2000);
+    ASSERT_EQ(labels.size(), std::min<std::size_t>(n, 2000)) << n;
+    EXPECT_EQ(labels.front(), 0u) << n;
+    EXPECT_EQ(labels.back(), n - 1) << n;
+    std::vector<std::size_t> gaps(labels.size());
+    std::adjacent_difference(labels.begin(), labels.end(), gaps.begin());
+    const auto [least, most] = std::minmax_element(gaps.begin() + 1, gaps.end());
+    EXPECT_GE(*least, 1u) << n;
+    EXPECT_LE(*most - *least, 1u) << n;
+  }
+}
+
+// A record of fewer world lines holds the whole record's columns at its labels, bit for bit.
+TEST(Records, SpaceTimeOfFewerParticlesIsTheWholeRecordAtTheirLabels) {
+  ParticleParams p;
+  p.r = 0.5;
+  p.delta = 1e-2;
+  p.t_end = 100.0;
+  p.spacetime = true;
+  p.spacetime_frames = 11;
+  const Bodies b = gas(200);
+  const RunResult whole = simulate(b, 200.0, p);
+  p.spacetime_particles = 9;
+  const RunResult some = simulate(b, 200.0, p);
+  ASSERT_EQ(whole.spacetime.labels.size(), 200u);
+  ASSERT_EQ(some.spacetime.labels, spacetime_labels(200, 9));
+  ASSERT_EQ(some.spacetime.x.size(), 11u * 9u);
+  EXPECT_EQ(some.spacetime.t, whole.spacetime.t);
+  for (std::size_t f = 0; f < 11; ++f)
+    for (std::size_t j = 0; j < 9; ++j)
+      EXPECT_EQ(some.spacetime.x[f * 9 + j], whole.spacetime.x[f * 200 + some.spacetime.labels[j]])
+          << f << " " << j;
+  EXPECT_EQ(some.final_state.x, whole.final_state.x);  // the record does not touch the run
 }
 
 TEST(Records, BadInputNamesTheKey) {

@@ -112,7 +112,7 @@ void expect_same(const RunResult& a, const RunResult& b) {
   }
   EXPECT_EQ(a.histogram.t, b.histogram.t);
   EXPECT_EQ(a.histogram.density, b.histogram.density);
-  EXPECT_EQ(a.spacetime.n, b.spacetime.n);
+  EXPECT_EQ(a.spacetime.labels, b.spacetime.labels);
   EXPECT_EQ(a.spacetime.t, b.spacetime.t);
   EXPECT_EQ(a.spacetime.x, b.spacetime.x);
   EXPECT_EQ(a.stop.reason, b.stop.reason);

@@ -19,6 +19,7 @@ PLOTS = os.path.join(ROOT, "plots")
 sys.path.insert(0, PLOTS)
 from shockplot.pictures import figures as figures_from  # noqa: E402
 from shockplot.run_files import open_result, read_summary  # noqa: E402
+from shockplot.spacetime import shown_lines  # noqa: E402
 
 # White noise on a lattice (the exact laws apply), particles, three solvers of
 # which hopf_cole gives no density, and the comparison.
@@ -364,3 +365,10 @@ def test_the_script_writes_every_picture(runs):
     subprocess.run(["/usr/bin/python3", os.path.join(PLOTS, "plot_result.py"), str(out)], check=True)
     for name in ("temperature.png", "velocity_distribution.png", "fields.png", "clusters.png", "spacetime.png"):
         assert (out / name).stat().st_size > 10000, name
+
+
+def test_the_space_time_title_says_which_world_lines_are_drawn(figures):
+    (ax,) = figures["gas"]["spacetime.png"].axes
+    assert "world lines of every particle" in ax.get_title()  # N = 600: every one recorded and drawn
+    assert shown_lines(np.array([0, 50, 100])) == "every 50th particle"
+    assert shown_lines(np.array([0, 50, 100, 151])) == "4 particles, about every 50.3th"

@@ -25,12 +25,23 @@ std::string shape_text(const std::vector<std::uint64_t>& shape) {
   return s + (shape.size() == 1 ? ",)" : ")");
 }
 
+std::string intact_text(Verification v) {
+  switch (v) {
+    case Verification::manifest:
+      return "  (intact: size and SHA-256 as its manifest.json records)";
+    case Verification::own_checksum:
+      return "  (intact: size and SHA-256 as its first 512 bytes record)";
+    case Verification::no_manifest:
+      break;
+  }
+  return "";
+}
+
 // The listing of a file's contents; every text from the file is shown as
 // printable text (a damaged or hostile file may hold any byte).
 std::string describe(const ResultContents& file) {
   std::ostringstream out;
-  out << file.path << (file.verified() ? "  (intact: size and SHA-256 as its manifest.json records)" : "")
-      << "\n\nprovenance:\n";
+  out << file.path << intact_text(file.verification) << "\n\nprovenance:\n";
   std::string scene_text, resolved;
   for (const auto& [name, value] : file.attributes_of("/")) {
     if (name == "scene_text")
@@ -79,23 +90,49 @@ std::string describe_checkpoint(const fs::path& dir) {
   return out.str();
 }
 
+// Where the damage of a file that failed its checksum lies, read through the
+// result reader (in a child process): the datasets whose chunks fail their
+// Fletcher32 checksums, or the library's reason where it cannot read the
+// file's structure.
+std::string damaged_parts(const fs::path& file) {
+  try {
+    read_every_chunk(file, Verification::no_manifest);
+  } catch (const FileProblem& e) {
+    const bool chunks = e.problem() == "damaged" && e.detail().rfind("dataset ", 0) == 0;
+    return chunks ? e.detail() : "its HDF5 structure: " + e.detail();
+  }
+  return "every dataset reads back whole: the damage lies in its metadata, attributes or unused bytes";
+}
+
+// check_result_file(file), a damage named where it lies (damaged_parts).
+Verification checked_naming_damage(const fs::path& file) {
+  try {
+    return check_result_file(file);
+  } catch (const FileProblem& e) {
+    if (e.problem() != "damaged") throw;
+    throw result_problem(file.string(), "damaged", e.detail() + "; " + damaged_parts(file));
+  }
+}
+
 }  // namespace
 
 std::string describe_result(const std::string& path) {
-  // An output directory without a result file by its own manifest (`shockgas
-  // bench`): nothing to describe but its files.
   std::error_code ec;
   if (fs::is_directory(path, ec) && !fs::exists(fs::path(path) / "result.h5", ec) &&
       fs::exists(checkpoint_path(path), ec))
-    return describe_checkpoint(path);
+    return describe_checkpoint(path);  // a run that stopped
+  // An output directory without a result file by its own manifest (`shockgas
+  // bench`): nothing to describe but its files.
   if (fs::is_directory(path, ec) && !fs::exists(fs::path(path) / "result.h5", ec))
     if (const auto manifest = read_manifest(path); manifest && !manifest->find("result.h5"))
       return path + ": the output of \"" + manifest->scene + "\", which has no result file\n";
   const fs::path file = result_file_of(path);
-  const Verification checked = check_result_file(file);
-  if (checked != Verification::manifest)
+  const Verification checked = checked_naming_damage(file);
+  if (checked == Verification::no_manifest)
     std::cerr << "shockgas: warning: " << unverified_warning(file) << "\n";
-  return describe(read_result(file, checked));
+  // Even a file whose bytes are as written has every chunk read, its Fletcher32
+  // checked (a chunk damaged before its file's checksum was taken).
+  return describe(read_every_chunk(file, checked));
 }
 
 RunFilesCheck check_run_files(const std::string& path, bool result_checked) {

@@ -12,6 +12,7 @@
 #include "shockgas/app/directory/run_target.hpp"
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/files/own_checksum.hpp"
 #include "shockgas/app/files/sha256.hpp"
 #include "shockgas/app/records/checkpoint.hpp"
 
@@ -63,6 +64,19 @@ FileState difference(const ManifestEntry& e, const fs::path& file, std::uint64_t
 void check_against(const ManifestEntry& e, const fs::path& file, std::uint64_t size) {
   const FileState state = difference(e, file, size, file.parent_path() / kManifestFile);
   if (!state.intact()) throw result_problem(file.string(), state.problem, state.detail);
+}
+
+// A file that carries its own checksum is checked against it (own_checksum):
+// FileProblem "damaged" where it differs. One without is as `otherwise` says.
+Verification check_own(const fs::path& file, Verification otherwise) {
+  OwnChecksumCheck own;
+  try {
+    own = check_own_checksum(file);
+  } catch (const std::exception& error) {
+    throw result_problem(file.string(), "unreadable", error.what());
+  }
+  if (own.state == OwnChecksum::damaged) throw result_problem(file.string(), "damaged", own.detail);
+  return own.state == OwnChecksum::sound ? Verification::own_checksum : otherwise;
 }
 
 FileState listed_file_state(const fs::path& dir, const ManifestEntry& e) {
@@ -120,21 +134,18 @@ Verification check_result_file(const fs::path& file) {
   const auto size = static_cast<std::uint64_t>(st.st_size);
   const auto manifest = read_manifest(file.parent_path());
   const ManifestEntry* entry = manifest ? manifest->find(file.filename().string()) : nullptr;
-  if (entry) {
-    check_against(*entry, file, size);
-    return Verification::manifest;
-  }
+  if (entry) check_against(*entry, file, size);
   // A manifest lists every file of its run: one that leaves this file out was
   // edited (a line taken out exempts nothing), or the file was put there since.
-  if (manifest)
+  if (!entry && manifest)
     throw result_problem(file.string(), "not as its manifest.json records",
                          (file.parent_path() / kManifestFile).string() +
                              " does not list it, though a run lists every file it writes");
-  if (size == 0)
+  if (!entry && size == 0)
     throw result_problem(file.string(), "empty", "0 bytes: the run that wrote it did not finish");
-  if (!has_hdf5_signature(file, size))
+  if (!entry && !has_hdf5_signature(file, size))
     throw result_problem(file.string(), "not an HDF5 file", "it does not start with the HDF5 signature");
-  return Verification::no_manifest;
+  return check_own(file, entry ? Verification::manifest : Verification::no_manifest);
 }
 
 std::vector<FileState> check_listed_files(const fs::path& dir, const Manifest& manifest,
@@ -176,9 +187,10 @@ std::string differences_of(const std::vector<FileState>& states) {
 }
 
 std::string unverified_warning(const fs::path& file) {
-  return file.string() + " is not listed in a " + kManifestFile +
-         " beside it (written before shockgas recorded checksums, or copied without it): its integrity "
-         "cannot be checked";
+  return file.string() +
+         " has no checksum of its own (layout 1.0, written before result files carried one) "
+         "and is not listed in a " +
+         kManifestFile + " beside it: its integrity cannot be checked";
 }
 
 }  // namespace shockgas::app

@@ -2,7 +2,9 @@
 // What every reader in shockgas checks before the HDF5 library touches a
 // result file: the library cannot be trusted to reject a damaged file (it may
 // crash inside it), so a file is compared with the size and SHA-256 that the
-// run directory's manifest.json recorded when it was written (manifest.hpp).
+// run directory's manifest.json recorded when it was written (manifest.hpp),
+// and with its own checksum, which it carries wherever it is copied
+// (own_checksum.hpp; files of layout 2.0 on).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,14 +16,15 @@ namespace shockgas::app {
 
 // A result file a reader refuses: FileProblem with key "RESULT" and the problem
 // "no such file", "a directory", "not a regular file", "empty", "truncated",
-// "damaged", "not an HDF5 file" or "unreadable".
+// "damaged", "not an HDF5 file", "unreadable" or "too large to read".
 inline FileProblem result_problem(const std::string& path, std::string problem, const std::string& detail) {
   return FileProblem("RESULT", path, std::move(problem), detail);
 }
 
 enum class Verification {
-  manifest,     // size and SHA-256 equal to the manifest's record
-  no_manifest,  // no manifest.json beside it, or the file is not listed in it: not checked
+  manifest,      // size and SHA-256 equal to the manifest's record (a file without its own checksum)
+  own_checksum,  // its own checksum verified (and the manifest's record, where one lists it)
+  no_manifest,   // neither: no own checksum (layout 1.0), and no manifest.json beside it that lists it
 };
 
 // The result file a path names: the path itself, or the result.h5 inside a run
@@ -30,7 +33,10 @@ std::filesystem::path result_file_of(const std::filesystem::path& path);
 
 // Checks a result file before it is opened: FileProblem when it is missing,
 // not a regular file, empty, shorter or other than its manifest's record, left
-// out of the manifest beside it, or without the HDF5 signature.
+// out of the manifest beside it, other than its own checksum records
+// ("damaged"), or without the HDF5 signature. One verdict for both checks:
+// own_checksum where the file carries one (and the manifest agrees, if it lists
+// the file), else manifest where the manifest lists it, else no_manifest.
 Verification check_result_file(const std::filesystem::path& file);
 
 inline constexpr const char* kLeftOut = "left out of manifest.json";

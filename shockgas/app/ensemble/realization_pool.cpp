@@ -30,7 +30,7 @@ struct RealizationPool::State {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::atomic<bool> abandoned{false};  // the running realizations stop unfinished
-  std::atomic<bool> go{false};  // every worker started (or the pool refused)
+  std::atomic<bool> go{false};         // every worker started (or the pool refused)
 
   mutable std::mutex mutex;      // guards what follows
   std::vector<double> fraction;  // per item

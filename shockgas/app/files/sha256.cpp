@@ -46,9 +46,11 @@ struct Fd {
 
 }  // namespace
 
-std::string sha256_of_file(const std::filesystem::path& path) {
+std::string sha256_of_file(const std::filesystem::path& path, std::uint64_t from) {
   Fd file{open(path.c_str(), O_RDONLY | O_CLOEXEC)};
   if (file.fd < 0) throw RunError("cannot read " + path.string() + ": " + std::strerror(errno));
+  if (from > 0 && lseek(file.fd, static_cast<off_t>(from), SEEK_SET) < 0)
+    throw RunError("cannot read " + path.string() + ": " + std::strerror(errno));
   Digest ctx = start_digest();
   std::vector<char> block(1 << 20);
   for (;;) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "shockgas/app/output/run_results.hpp"
+#include "shockgas/app/output/storage.hpp"
 
 namespace shockgas::app {
 
@@ -32,6 +33,7 @@ struct LayoutEntry {
   // word of where it holds ("-2/3 (sticky gas)"), or another key's value
   // ("~ {analysis.t_dissip_theory}"). Reports show it beside the value.
   std::string theory;
+  Storage storage = Storage::float64;  // a dataset's values in the file (storage.hpp)
 };
 
 // Hands the values of one declaration to the file or the summary: each call

@@ -1,10 +1,13 @@
+// The file, its attributes and reading it back; the datasets written are in
+// hdf5_file_write.cpp.
 #include "shockgas/app/output/hdf5_file.hpp"
-
-#include <hdf5.h>
 
 #include <mutex>
 #include <utility>
 
+#include "shockgas/app/files/own_checksum.hpp"
+#include "shockgas/app/output/hdf5_file_calls.hpp"
+#include "shockgas/app/output/layout_version.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -14,15 +17,14 @@ std::recursive_mutex& hdf5_calls() {
   return calls;
 }
 
-namespace {
+namespace hdf5 {
 
-// Once per process, before any other HDF5 call: HDF5's own error printing
-// silenced (failures are reported by check()), and no clean-up at exit: the
-// identifier of a file whose closing flush failed (a full disk) stays
-// registered, and HDF5's exit handler crashes closing it again (HDF5 1.10.8:
-// SIGSEGV in H5F__close_cb). shockgas closes every file itself (a failed close
-// is a RunError), so an exit handler has nothing to do.
-void init_hdf5() {
+// HDF5's own error printing silenced (failures are reported by check()), and no
+// clean-up at exit: the identifier of a file whose closing flush failed (a full
+// disk) stays registered, and HDF5's exit handler crashes closing it again
+// (HDF5 1.10.8: SIGSEGV in H5F__close_cb). shockgas closes every file itself (a
+// failed close is a RunError), so an exit handler has nothing to do.
+void init() {
   static const bool done = [] {
     H5dont_atexit();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
@@ -30,6 +32,8 @@ void init_hdf5() {
   }();
   (void)done;
 }
+
+namespace {
 
 // Walks HDF5's error stack, innermost entry first.
 template <class F>
@@ -41,9 +45,11 @@ void walk_errors(F&& visit) {
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, cb, &visit);
 }
 
-// Why the last HDF5 call failed, from its error stack: the system's reason where
-// HDF5 gives one ("No space left on device"), else the innermost description.
-std::string hdf5_reason() {
+}  // namespace
+
+// The system's reason where HDF5 gives one ("No space left on device"), else
+// the innermost description.
+std::string reason() {
   std::string system, innermost;
   walk_errors([&](const H5E_error2_t& e) {
     const std::string desc = e.desc ? e.desc : "";
@@ -57,29 +63,32 @@ std::string hdf5_reason() {
   return system.empty() ? innermost : system;
 }
 
-bool hdf5_says_truncated() {
-  bool truncated = false;
-  walk_errors([&](const H5E_error2_t& e) { truncated |= e.min_num == H5E_TRUNCATED; });
-  return truncated;
-}
-
 std::int64_t check(std::int64_t id, const char* call, const std::string& object) {
   if (id < 0) {
-    const std::string reason = hdf5_reason();
+    const std::string why = reason();
     throw RunError(std::string("HDF5: ") + call + " failed on " + object +
-                   (reason.empty() ? "" : " (" + reason + ")"));
+                   (why.empty() ? "" : " (" + why + ")"));
   }
   return id;
 }
 
-int close_file(std::int64_t id) { return H5Fclose(id); }
-int close_group(std::int64_t id) { return H5Gclose(id); }
-int close_dataset(std::int64_t id) { return H5Dclose(id); }
-int close_space(std::int64_t id) { return H5Sclose(id); }
-int close_type(std::int64_t id) { return H5Tclose(id); }
-int close_attr(std::int64_t id) { return H5Aclose(id); }
-int close_plist(std::int64_t id) { return H5Pclose(id); }
-int close_object(std::int64_t id) { return H5Oclose(id); }
+}  // namespace hdf5
+
+using namespace hdf5;
+
+namespace {
+
+bool hdf5_says_truncated() {
+  bool truncated = false;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned, const H5E_error2_t* e, void* out) -> herr_t {
+        *static_cast<bool*>(out) |= e->min_num == H5E_TRUNCATED;
+        return 0;
+      },
+      &truncated);
+  return truncated;
+}
 
 H5Handle string_type() {
   H5Handle t(check(H5Tcopy(H5T_C_S1), "H5Tcopy", "string type"), close_type);
@@ -130,6 +139,59 @@ std::string read_string_attribute(hid_t object, const char* name) {
   return value;
 }
 
+// Calls visit(path, dataset id) for every dataset, in name order.
+template <class F>
+void each_dataset(hid_t file, F&& visit) {
+  std::vector<std::string> paths;
+  auto collect = [](hid_t, const char* name, const H5O_info_t* info, void* out) -> herr_t {
+    if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(out)->push_back(name);
+    return 0;
+  };
+  check(H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, collect, &paths, H5O_INFO_BASIC), "H5Ovisit", "file");
+  for (const std::string& name : paths) {
+    const std::string path = "/" + name;
+    H5Handle set(check(H5Dopen2(file, path.c_str(), H5P_DEFAULT), "H5Dopen2", path), close_dataset);
+    visit(path, set.get());
+  }
+}
+
+std::vector<hsize_t> dims_of(hid_t set, const std::string& path) {
+  H5Handle space = space_of(set, path);
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  std::vector<hsize_t> dims(rank > 0 ? rank : 0);
+  if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+  return dims;
+}
+
+// Reads a dataset block by block along its first dimension, each block whole
+// chunks (so every chunk is read, and its checksum checked, once).
+void read_in_blocks(hid_t set, const std::string& path) {
+  const std::vector<hsize_t> dims = dims_of(set, path);
+  if (dims.empty()) return;
+  H5Handle dcpl(check(H5Dget_create_plist(set), "H5Dget_create_plist", path), close_plist);
+  std::vector<hsize_t> chunk(dims.size(), 1);
+  if (H5Pget_layout(dcpl.get()) == H5D_CHUNKED)
+    H5Pget_chunk(dcpl.get(), static_cast<int>(chunk.size()), chunk.data());
+  std::vector<hsize_t> block = dims;
+  block[0] = std::min<hsize_t>(dims[0], std::max<hsize_t>(chunk[0], 1));
+  hsize_t per_row = 1;
+  for (std::size_t i = 1; i < dims.size(); ++i) per_row *= dims[i];
+  std::vector<double> values(block[0] * per_row);
+  H5Handle file_space = space_of(set, path);
+  for (hsize_t row = 0; row < dims[0]; row += block[0]) {
+    std::vector<hsize_t> start(dims.size(), 0), count = block;
+    start[0] = row;
+    count[0] = std::min(block[0], dims[0] - row);
+    check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+          "H5Sselect_hyperslab", path);
+    H5Handle memory(check(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr),
+                          "H5Screate_simple", path),
+                    close_space);
+    check(H5Dread(set, H5T_NATIVE_DOUBLE, memory.get(), file_space.get(), H5P_DEFAULT, values.data()),
+          "H5Dread", path);
+  }
+}
+
 }  // namespace
 
 H5Handle& H5Handle::operator=(H5Handle&& o) noexcept {
@@ -150,39 +212,53 @@ void H5Handle::reset() {
   id_ = -1;
 }
 
+// The latest format (its metadata checksummed) and a user block for the file's own checksum.
 Hdf5File Hdf5File::create(const std::string& path) {
   const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
-  init_hdf5();
+  init();
+  H5Handle fcpl = plist(H5P_FILE_CREATE, path), fapl = plist(H5P_FILE_ACCESS, path);
+  check(H5Pset_userblock(fcpl.get(), kOwnChecksumBytes), "H5Pset_userblock", path);
+  check(H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST), "H5Pset_libver_bounds", path);
   return Hdf5File(
-      H5Handle(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), "H5Fcreate", path),
+      H5Handle(check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get()), "H5Fcreate", path),
                close_file),
-      path, Verification::manifest);
+      path, Verification::own_checksum, true);
 }
 
 Hdf5File Hdf5File::open(const std::string& path) { return open(path, check_result_file(path)); }
 
 Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
   const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
-  init_hdf5();
+  init();
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0 && hdf5_says_truncated())
     throw result_problem(path, "truncated", "shorter than the end of file its HDF5 superblock records");
-  if (id < 0) throw result_problem(path, "unreadable", "the HDF5 library refuses it: " + hdf5_reason());
-  return Hdf5File(H5Handle(id, close_file), path, verified);
+  if (id < 0) throw result_problem(path, "unreadable", "the HDF5 library refuses it: " + reason());
+  Hdf5File file(H5Handle(id, close_file), path, verified, false);
+  H5Handle root(check(H5Gopen2(id, "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
+  check_layout_version(path, read_string_attribute(root.get(), "layout_version"));
+  return file;
+}
+
+Hdf5File Hdf5File::update(const std::string& path) {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
+  init();
+  return Hdf5File(
+      H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file), path,
+      Verification::no_manifest, true);
 }
 
 void Hdf5File::close() {
   const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   const std::int64_t id = file_.release();
-  if (id >= 0) check(H5Fclose(id), "H5Fclose", path_);
-}
-
-Hdf5File Hdf5File::update(const std::string& path) {
-  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
-  init_hdf5();
-  return Hdf5File(
-      H5Handle(check(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), "H5Fopen", path), close_file), path,
-      Verification::no_manifest);
+  if (id < 0) return;
+  hsize_t user_block = 0;
+  if (writes_) {
+    H5Handle fcpl(check(H5Fget_create_plist(id), "H5Fget_create_plist", path_), close_plist);
+    check(H5Pget_userblock(fcpl.get(), &user_block), "H5Pget_userblock", path_);
+  }
+  check(H5Fclose(id), "H5Fclose", path_);
+  if (user_block == kOwnChecksumBytes) write_own_checksum(path_);
 }
 
 H5Handle Hdf5File::ensure_group(const std::string& path) {
@@ -191,84 +267,11 @@ H5Handle Hdf5File::ensure_group(const std::string& path) {
     return H5Handle(check(H5Gopen2(file_.get(), "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
   if (H5Lexists(file_.get(), path.c_str(), H5P_DEFAULT) > 0)
     return H5Handle(check(H5Oopen(file_.get(), path.c_str(), H5P_DEFAULT), "H5Oopen", path), close_object);
-  H5Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate", path), close_plist);
+  H5Handle lcpl = plist(H5P_LINK_CREATE, path);
   check(H5Pset_create_intermediate_group(lcpl.get(), 1), "H5Pset_create_intermediate_group", path);
   return H5Handle(
       check(H5Gcreate2(file_.get(), path.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), "H5Gcreate2", path),
       close_group);
-}
-
-H5Handle Hdf5File::create_dataset(const std::string& path, std::int64_t type, std::vector<std::uint64_t> dims,
-                                  const std::string& unit, const std::string& description) {
-  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
-  std::vector<hsize_t> hdims(dims.begin(), dims.end());
-  H5Handle space(check(H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr),
-                       "H5Screate_simple", path),
-                 close_space);
-  H5Handle lcpl(check(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate", path), close_plist);
-  check(H5Pset_create_intermediate_group(lcpl.get(), 1), "H5Pset_create_intermediate_group", path);
-  H5Handle set(
-      check(H5Dcreate2(file_.get(), path.c_str(), type, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
-            "H5Dcreate2", path),
-      close_dataset);
-  write_string_attribute(set.get(), "unit", unit);
-  if (!description.empty()) write_string_attribute(set.get(), "description", description);
-  return set;
-}
-
-void Hdf5File::write_raw(const std::string& path, const void* data, std::int64_t type,
-                         std::vector<std::uint64_t> dims, const std::string& unit,
-                         const std::string& description) {
-  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
-  std::size_t count = 1;
-  for (auto d : dims) count *= d;
-  H5Handle set = create_dataset(path, type, std::move(dims), unit, description);
-  if (count > 0) check(H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", path);
-}
-
-Hdf5File::Writer Hdf5File::start(const std::string& path, std::size_t size, const std::string& unit,
-                                 const std::string& description) {
-  return Writer(create_dataset(path, H5T_NATIVE_DOUBLE, {size}, unit, description), path, size);
-}
-
-// Each piece a hyperslab of the file's dataset, written from the caller's memory.
-void Hdf5File::Writer::append(const double* data, std::size_t count) {
-  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
-  if (count == 0) return;
-  if (written_ + count > size_) throw RunError("HDF5: more values than " + path_ + " holds");
-  const hsize_t offset = written_, n = count;
-  H5Handle file_space(check(H5Dget_space(set_.get()), "H5Dget_space", path_), close_space);
-  check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, &offset, nullptr, &n, nullptr),
-        "H5Sselect_hyperslab", path_);
-  H5Handle memory(check(H5Screate_simple(1, &n, nullptr), "H5Screate_simple", path_), close_space);
-  check(H5Dwrite(set_.get(), H5T_NATIVE_DOUBLE, memory.get(), file_space.get(), H5P_DEFAULT, data),
-        "H5Dwrite", path_);
-  written_ += count;
-}
-
-void Hdf5File::Writer::finish() {
-  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
-  if (written_ != size_)
-    throw RunError("HDF5: " + path_ + " got " + std::to_string(written_) + " of its " +
-                   std::to_string(size_) + " values");
-  const std::int64_t id = set_.release();
-  check(H5Dclose(id), "H5Dclose", path_);
-}
-
-void Hdf5File::write(const std::string& path, const std::vector<double>& data, const std::string& unit,
-                     const std::string& description) {
-  write_raw(path, data.data(), H5T_NATIVE_DOUBLE, {data.size()}, unit, description);
-}
-
-void Hdf5File::write(const std::string& path, const std::vector<std::int64_t>& data, const std::string& unit,
-                     const std::string& description) {
-  write_raw(path, data.data(), H5T_NATIVE_INT64, {data.size()}, unit, description);
-}
-
-void Hdf5File::write_matrix(const std::string& path, const std::vector<double>& data, std::size_t rows,
-                            std::size_t cols, const std::string& unit, const std::string& description) {
-  if (data.size() != rows * cols) throw RunError("HDF5: matrix " + path + " has the wrong size");
-  write_raw(path, data.data(), H5T_NATIVE_DOUBLE, {rows, cols}, unit, description);
 }
 
 void Hdf5File::set_attribute(const std::string& object, const std::string& name, const std::string& value) {
@@ -289,49 +292,31 @@ void Hdf5File::set_attribute(const std::string& object, const std::string& name,
   check(H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value), "H5Awrite", name);
 }
 
-namespace {
-herr_t collect_dataset(hid_t root, const char* name, const H5O_info_t* info, void* out) {
-  if (info->type != H5O_TYPE_DATASET) return 0;
-  auto& list = *static_cast<std::vector<DatasetInfo>*>(out);
-  H5Handle set(H5Dopen2(root, name, H5P_DEFAULT), close_dataset);
-  if (set.get() < 0) return -1;
-  H5Handle space(H5Dget_space(set.get()), close_space);
-  H5Handle type(H5Dget_type(set.get()), close_type);
-  DatasetInfo d;
-  d.path = std::string("/") + name;
-  const int rank = H5Sget_simple_extent_ndims(space.get());
-  std::vector<hsize_t> dims(rank > 0 ? rank : 0);
-  if (rank > 0) H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
-  d.shape.assign(dims.begin(), dims.end());
-  d.type = type_name(type.get());
-  d.unit = read_string_attribute(set.get(), "unit");
-  d.description = read_string_attribute(set.get(), "description");
-  list.push_back(std::move(d));
-  return 0;
-}
-}  // namespace
-
 std::vector<DatasetInfo> Hdf5File::datasets() const {
   const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<DatasetInfo> list;
-  check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect_dataset, &list, H5O_INFO_BASIC),
-        "H5Ovisit", "file");
+  each_dataset(file_.get(), [&](const std::string& path, hid_t set) {
+    H5Handle type(check(H5Dget_type(set), "H5Dget_type", path), close_type);
+    const std::vector<hsize_t> dims = dims_of(set, path);
+    list.push_back({path,
+                    {dims.begin(), dims.end()},
+                    type_name(type.get()),
+                    read_string_attribute(set, "unit"),
+                    read_string_attribute(set, "description")});
+  });
   return list;
 }
-
-namespace {
-herr_t collect_group(hid_t, const char* name, const H5O_info_t* info, void* out) {
-  if (info->type != H5O_TYPE_GROUP) return 0;
-  const std::string path(name);
-  static_cast<std::vector<std::string>*>(out)->push_back(path == "." ? "/" : "/" + path);
-  return 0;
-}
-}  // namespace
 
 std::vector<std::string> Hdf5File::groups() const {
   const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   std::vector<std::string> list;
-  check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect_group, &list, H5O_INFO_BASIC), "H5Ovisit",
+  auto collect = [](hid_t, const char* name, const H5O_info_t* info, void* out) -> herr_t {
+    if (info->type != H5O_TYPE_GROUP) return 0;
+    const std::string path(name);
+    static_cast<std::vector<std::string>*>(out)->push_back(path == "." ? "/" : "/" + path);
+    return 0;
+  };
+  check(H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, collect, &list, H5O_INFO_BASIC), "H5Ovisit",
         "file");
   return list;
 }
@@ -353,12 +338,53 @@ std::vector<std::pair<std::string, std::string>> Hdf5File::attributes(const std:
 std::vector<double> Hdf5File::read(const std::string& path) const {
   const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
   H5Handle set(check(H5Dopen2(file_.get(), path.c_str(), H5P_DEFAULT), "H5Dopen2", path), close_dataset);
-  H5Handle space(check(H5Dget_space(set.get()), "H5Dget_space", path), close_space);
+  H5Handle space = space_of(set.get(), path);
   const auto n = H5Sget_simple_extent_npoints(space.get());
   std::vector<double> data(n > 0 ? n : 0);
   if (n > 0)
     check(H5Dread(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "H5Dread", path);
   return data;
+}
+
+std::vector<UnreadableDataset> Hdf5File::unreadable_datasets() const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
+  std::vector<UnreadableDataset> out;
+  each_dataset(file_.get(), [&](const std::string& path, hid_t set) {
+    try {
+      read_in_blocks(set, path);
+    } catch (const RunError& e) {
+      out.push_back({path, e.what()});
+    }
+  });
+  return out;
+}
+
+void Hdf5File::check_every_chunk() const {
+  std::string names;
+  for (const UnreadableDataset& d : unreadable_datasets())
+    names += (names.empty() ? "dataset " : ", dataset ") + d.path + " (" + d.reason + ")";
+  if (!names.empty()) throw result_problem(path_, "damaged", names + " does not read back whole");
+}
+
+std::vector<ChunkExtent> Hdf5File::chunk_extents() const {
+  const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
+  std::vector<ChunkExtent> out;
+  H5Handle fcpl(check(H5Fget_create_plist(file_.get()), "H5Fget_create_plist", path_), close_plist);
+  hsize_t base = 0;  // chunk addresses count from the superblock, after the user block
+  check(H5Pget_userblock(fcpl.get(), &base), "H5Pget_userblock", path_);
+  each_dataset(file_.get(), [&](const std::string& path, hid_t set) {
+    hsize_t n = 0;
+    const H5Handle space = space_of(set, path);  // H5S_ALL is refused here (HDF5 1.10.8)
+    check(H5Dget_num_chunks(set, space.get(), &n), "H5Dget_num_chunks", path);
+    for (hsize_t i = 0; i < n; ++i) {
+      haddr_t addr = 0;
+      hsize_t size = 0;
+      unsigned mask = 0;
+      check(H5Dget_chunk_info(set, space.get(), i, nullptr, &mask, &addr, &size), "H5Dget_chunk_info", path);
+      out.push_back({path, base + addr, size});
+    }
+  });
+  return out;
 }
 
 }  // namespace shockgas::app

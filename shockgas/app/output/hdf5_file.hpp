@@ -5,6 +5,13 @@
 // (result_reader.hpp) never starts while another thread is inside the
 // library. A result file is read through result_reader.hpp, never opened
 // here directly: the library may crash inside a damaged file.
+//
+// Every file is written in the library's latest format (superblock, object
+// headers and chunk indexes with checksums), with every dataset chunked and
+// filtered by shuffle, deflate and Fletcher32 (hdf5_file_write.cpp), and its
+// first 512 bytes (a user block, which the library leaves to the program) hold
+// the SHA-256 of the rest (own_checksum.hpp): a copied file can tell that it
+// is damaged, wherever the damage lies.
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -13,6 +20,7 @@
 #include <vector>
 
 #include "shockgas/app/directory/result_check.hpp"
+#include "shockgas/app/output/storage.hpp"
 
 namespace shockgas::app {
 
@@ -43,9 +51,20 @@ class H5Handle {
 struct DatasetInfo {
   std::string path;                  // "/particles/T"
   std::vector<std::uint64_t> shape;  // dimensions
-  std::string type;                  // "float64", "int64", "string", ...
+  std::string type;                  // "float64", "float32", "int64", "string", ...
   std::string unit;                  // attribute "unit", if any
   std::string description;           // attribute "description", if any
+};
+
+// Where one chunk of a dataset lies in the file (for the tests of damage).
+struct ChunkExtent {
+  std::string dataset;
+  std::uint64_t offset = 0, bytes = 0;  // from the start of the file
+};
+
+// A dataset whose values could not be read back, and the library's reason.
+struct UnreadableDataset {
+  std::string path, reason;
 };
 
 class Hdf5File {
@@ -53,30 +72,30 @@ class Hdf5File {
   // Creates (truncates) a file for writing.
   static Hdf5File create(const std::string& path);
   // Opens an existing file read-only that check_result_file() (result_check.hpp)
-  // has passed with this verdict: FileProblem for a file the library refuses.
-  // For result_reader.cpp, which does so where a crash cannot hurt, and tests.
+  // has passed with this verdict: FileProblem (exit 2) for a file the library
+  // refuses, and for a file of a newer layout than this build reads
+  // (layout_version.hpp). For result_reader.cpp, which does so where a crash
+  // cannot hurt, and tests.
   static Hdf5File open(const std::string& path, Verification checked);
   // The same after check_result_file(): for tests, on files they made.
   static Hdf5File open(const std::string& path);
-  // Opens an existing file to add to it (RunError if it cannot be opened; tests).
+  // Opens an existing file to add to it (RunError if it cannot be opened); its
+  // own checksum is written again on close().
   static Hdf5File update(const std::string& path);
-  // Whether open() checked the file against its manifest.
-  bool verified() const { return verification_ == Verification::manifest; }
+  // How open() checked the file; verified(): against its manifest or its own checksum.
+  Verification verification() const { return verification_; }
+  bool verified() const { return verification_ != Verification::no_manifest; }
   const std::string& path() const { return path_; }
 
-  // Datasets; intermediate groups are created as needed. unit and description
-  // become string attributes of the dataset.
-  void write(const std::string& path, const std::vector<double>& data, const std::string& unit,
-             const std::string& description);
-  void write(const std::string& path, const std::vector<std::int64_t>& data, const std::string& unit,
-             const std::string& description);
-  // A rows x cols matrix, row-major.
-  void write_matrix(const std::string& path, const std::vector<double>& data, std::size_t rows,
-                    std::size_t cols, const std::string& unit, const std::string& description);
+  // Datasets of `dims` (1 or 2) from doubles in row-major order, stored as
+  // `storage` says; intermediate groups are created as needed; unit and
+  // description become string attributes of the dataset.
+  void write(const std::string& path, const double* data, const std::vector<std::uint64_t>& dims,
+             Storage storage, const std::string& unit, const std::string& description);
 
-  // A 1-D float64 dataset of `size` values written in pieces, in order, never
-  // held whole: append() each piece, then finish() (RunError unless exactly
-  // `size` values were given). The same dataset as write() of them all.
+  // A 1-D dataset of `size` values written in pieces, in order, never held
+  // whole: append() each piece, then finish() (RunError unless exactly `size`
+  // values were given). The same dataset as write() of them all.
   class Writer {
    public:
     void append(const double* data, std::size_t count);
@@ -84,13 +103,16 @@ class Hdf5File {
 
    private:
     friend class Hdf5File;
-    Writer(H5Handle set, std::string path, std::size_t size)
-        : set_(std::move(set)), path_(std::move(path)), size_(size) {}
+    Writer(H5Handle set, std::string path, std::size_t size, Storage storage, std::size_t chunk);
+    void write_block();
     H5Handle set_;
     std::string path_;
     std::size_t size_, written_ = 0;
+    Storage storage_;
+    std::vector<double> block_;  // one chunk's values: every chunk is written whole, once
+    std::size_t chunk_;
   };
-  Writer start(const std::string& path, std::size_t size, const std::string& unit,
+  Writer start(const std::string& path, std::size_t size, Storage storage, const std::string& unit,
                const std::string& description);
 
   // Attributes on a group or dataset ("/" for the file); the group is created if missing.
@@ -102,23 +124,33 @@ class Hdf5File {
   // Every group, "/" first ("/particles", "/continuum/godunov", ...).
   std::vector<std::string> groups() const;
   std::vector<std::pair<std::string, std::string>> attributes(const std::string& object) const;
+  // The values as doubles, whatever the storage (float32 and int64 are exact in a double).
   std::vector<double> read(const std::string& path) const;
+  // Reads every chunk of every dataset (their Fletcher32 checksums checked):
+  // those that fail, with the library's reason; empty when all read.
+  std::vector<UnreadableDataset> unreadable_datasets() const;
+  // The same as a verdict: FileProblem "damaged" (exit 2) naming every dataset
+  // that does not read back whole. What `info` runs on every file, and any
+  // command may run before it trusts a file's values.
+  void check_every_chunk() const;
+  // Where every chunk of every dataset lies in the file.
+  std::vector<ChunkExtent> chunk_extents() const;
 
-  // Closes the file (its last data flushed); RunError if that fails. Without
-  // it the destructor closes and ignores a failure (a run that failed anyway).
+  // Closes the file (its last data flushed), then writes its own checksum
+  // (own_checksum.hpp) if it was written; RunError if that fails. Without it
+  // the destructor closes and ignores a failure (a run that failed anyway).
   void close();
 
  private:
-  Hdf5File(H5Handle file, std::string path, Verification v)
-      : file_(std::move(file)), path_(std::move(path)), verification_(v) {}
+  Hdf5File(H5Handle file, std::string path, Verification v, bool writes)
+      : file_(std::move(file)), path_(std::move(path)), verification_(v), writes_(writes) {}
   H5Handle ensure_group(const std::string& path);
-  void write_raw(const std::string& path, const void* data, std::int64_t type,
-                 std::vector<std::uint64_t> dims, const std::string& unit, const std::string& description);
-  H5Handle create_dataset(const std::string& path, std::int64_t type, std::vector<std::uint64_t> dims,
+  H5Handle create_dataset(const std::string& path, Storage storage, const std::vector<std::uint64_t>& dims,
                           const std::string& unit, const std::string& description);
   H5Handle file_;
   std::string path_;
   Verification verification_;
+  bool writes_;
 };
 
 }  // namespace shockgas::app

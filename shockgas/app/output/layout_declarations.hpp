@@ -40,6 +40,13 @@ inline Declaration with_theory(Declaration d, std::string theory) {
   return d;
 }
 
+// d, a dataset, stored as `storage` (storage.hpp): float32 for data that are
+// only drawn, integer for counts, indices and masks.
+inline Declaration stored_as(Storage storage, Declaration d) {
+  d.entry.storage = storage;
+  return d;
+}
+
 // Appends b to a.
 inline void append(std::vector<Declaration>& a, std::vector<Declaration> b) {
   for (auto& d : b) a.push_back(std::move(d));

@@ -3,6 +3,7 @@
 #include <ctime>
 
 #include "shockgas/app/output/layout_declarations.hpp"
+#include "shockgas/app/output/layout_version.hpp"
 #include "shockgas/app/records/state_file.hpp"
 #include "shockgas/continuum/field.hpp"
 #include "shockgas/core/initial_stream.hpp"
@@ -140,13 +141,16 @@ std::vector<Declaration> bodies(const std::string& group, const std::string& wha
 std::vector<Declaration> records() {
   const Part p = Part::particles;
   std::vector<Declaration> d;
-  append(d, bodies("/particles/final", "state at t_end (realization 0)", "",
+  append(d, bodies("/particles/final", "state at t_end (realization 0)", "as output.final says",
                    [](const RunResults& r, const auto& put) {
                      if (!r.particles) return;
-                     if (const auto& stored = r.particles->states)
-                       put(StoredColumns(stored->final_state()), {});
-                     else
+                     const KeepState keep = r.scene->output.final_state;
+                     if (const auto& stored = r.particles->states) {
+                       if (keeps_state(keep, stored->final_state().size()))
+                         put(StoredColumns(stored->final_state()), {});
+                     } else if (keeps_state(keep, r.particles->ensemble.first.final_state.size())) {
                        put(HeldColumns(r.particles->ensemble.first.final_state), {});
+                     }
                    }));
   append(d, bodies("/particles/snapshots/{k}", "snapshot (realization 0)", "at particles.snapshots",
                    [](const RunResults& r, const auto& put) {
@@ -205,10 +209,21 @@ std::vector<Declaration> records() {
   };
   d.push_back(dataset(p, "/particles/spacetime/t", "time", "frame times", st,
                       spacetime([](const particles::SpaceTime& s, Emitter& out) { out.values(s.t); })));
-  d.push_back(dataset(
-      p, "/particles/spacetime/x", "length",
-      "position of every original particle at each frame (realization 0)", st,
-      spacetime([](const particles::SpaceTime& s, Emitter& out) { out.matrix(s.x, s.t.size(), s.n); })));
+  d.push_back(stored_as(
+      Storage::integer,
+      dataset(p, "/particles/spacetime/label", "1",
+              "the labels (0 .. N-1, in initial order) of the particles whose world lines x holds, one per "
+              "column: at most particles.spacetime_particles, evenly spaced, the first and the last always",
+              st, spacetime([](const particles::SpaceTime& s, Emitter& out) {
+                out.values(std::vector<double>(s.labels.begin(), s.labels.end()));
+              }))));
+  d.push_back(stored_as(Storage::float32,
+                        dataset(p, "/particles/spacetime/x", "length",
+                                "position of each recorded particle (columns: /particles/spacetime/label) at "
+                                "each frame (realization 0), for drawing its world line",
+                                st, spacetime([](const particles::SpaceTime& s, Emitter& out) {
+                                  out.matrix(s.x, s.t.size(), s.labels.size());
+                                }))));
   return d;
 }
 
@@ -240,6 +255,10 @@ std::vector<Declaration> stop() {
 std::vector<Declaration> provenance_datasets() {
   const Part p = Part::provenance;
   return {
+      attribute(p, "/@layout_version", "",
+                "the layout of this file, major.minor: a reader reads its major and below (docs/output.md, "
+                "Layout version); absent in layout 1.0",
+                "", [](const RunResults&, Emitter& out) { out.text(layout_version_text()); }),
       attribute(p, "/@shockgas_version", "", "the program that wrote the file", "",
                 [](const RunResults&, Emitter& out) { out.text(kVersion); }),
       attribute(p, "/@git_commit", "", "its commit (-dirty: with uncommitted changes)", "",
@@ -263,7 +282,8 @@ std::vector<Declaration> particle_datasets() {
   // the positions' column draws and sorts random positions; v and m skip them.
   auto initial = [](int column) {
     return [column](const RunResults& r, Emitter& out) {
-      if (!r.scene->has_particles || !r.initial) return;
+      if (!r.scene->has_particles || !r.initial || !keeps_state(r.scene->output.initial, r.scene->initial.N))
+        return;
       InitialStream bodies = stream_realization(
           *r.initial, 0, column == 0 ? InitialStream::Parts::all : InitialStream::Parts::velocities);
       out.pieces(bodies.size(), [&](const Emitter::PutPiece& put) {
@@ -275,7 +295,7 @@ std::vector<Declaration> particle_datasets() {
   };
   // The continuum's initial cell averages (continuum::cell_averages), when a solver runs.
   const char* cells = "when [continuum] runs";
-  const char* bodies = "when [particles] runs";
+  const char* bodies = "when [particles] runs, as output.initial says";
   enum class Cells { centres, velocity, density };
   auto initial_cells = [](Cells column) {
     return [column](const RunResults& r, Emitter& out) {
@@ -300,8 +320,10 @@ std::vector<Declaration> particle_datasets() {
               initial_cells(Cells::density)),
       dataset(Part::particles, "/particles/t", "time", "log-spaced sample times", "",
               from_particles([](const ParticleResults& pr, Emitter& out) { out.values(pr.ensemble.t); })),
-      dataset(Part::particles, "/particles/count", "1", "realizations that reached each sample", "",
-              from_particles([](const ParticleResults& pr, Emitter& out) { out.values(pr.ensemble.count); })),
+      stored_as(Storage::integer,
+                dataset(Part::particles, "/particles/count", "1", "realizations that reached each sample", "",
+                        from_particles(
+                            [](const ParticleResults& pr, Emitter& out) { out.values(pr.ensemble.count); }))),
   };
   append(d, series());
   append(d, records());

@@ -155,11 +155,14 @@ std::vector<Declaration> comparison() {
               "particle momentum / mass in the cells with mass (/compare/occupied = 1); an empty cell holds "
               "the velocity interpolated linearly (periodically) between its occupied neighbours, not data",
               "", snap([](const Snap& c, Emitter& out) { out.values(c.particle_fields.v); })),
-      dataset(p, "/compare/occupied", "1",
+      stored_as(
+          Storage::integer,
+          dataset(
+              p, "/compare/occupied", "1",
               "1 where particle mass was deposited in the cell, 0 where /compare/v_particles is interpolated",
               "", snap([](const Snap& c, Emitter& out) {
                 out.values(column(c.particle_fields.mass, [](double m) { return m > 0 ? 1.0 : 0.0; }));
-              })),
+              }))),
       dataset(p, "/compare/clusters_x", "length", "cluster positions", "",
               snap([](const Snap& c, Emitter& out) {
                 out.values(column(c.clusters, [](auto& k) { return k.x; }));
@@ -182,15 +185,20 @@ std::vector<Declaration> comparison() {
               snap([](const Snap& c, Emitter& out) {
                 out.values(column(c.shocks, [](auto& s) { return s.jump; }));
               })),
-      dataset(p, "/compare/matched_shock", "1", "each matched pair's shock: its index in /compare/shocks_x",
-              "", snap([](const Snap& c, Emitter& out) {
-                out.values(column(c.match.pairs, [](auto& q) { return static_cast<double>(q.shock); }));
-              })),
-      dataset(p, "/compare/matched_cluster", "1",
-              "each matched pair's cluster: its index in /compare/clusters_x", "",
-              snap([](const Snap& c, Emitter& out) {
-                out.values(column(c.match.pairs, [](auto& q) { return static_cast<double>(q.cluster); }));
-              })),
+      stored_as(Storage::integer, dataset(p, "/compare/matched_shock", "1",
+                                          "each matched pair's shock: its index in /compare/shocks_x", "",
+                                          snap([](const Snap& c, Emitter& out) {
+                                            out.values(column(c.match.pairs, [](auto& q) {
+                                              return static_cast<double>(q.shock);
+                                            }));
+                                          }))),
+      stored_as(Storage::integer, dataset(p, "/compare/matched_cluster", "1",
+                                          "each matched pair's cluster: its index in /compare/clusters_x", "",
+                                          snap([](const Snap& c, Emitter& out) {
+                                            out.values(column(c.match.pairs, [](auto& q) {
+                                              return static_cast<double>(q.cluster);
+                                            }));
+                                          }))),
       dataset(p, "/compare/matched_position_error", "length", "x_cluster - x_shock of each matched pair", "",
               snap([](const Snap& c, Emitter& out) {
                 out.values(column(c.match.pairs, [](auto& q) { return q.position_error; }));
@@ -202,10 +210,11 @@ std::vector<Declaration> comparison() {
               [](const RunResults& r, Emitter& out) {
                 if (r.comparison) out.values(r.comparison->mass_edges);
               }),
-      dataset(p, "/compare/cluster_mass_count", "1", "clusters of the particle state in each mass bin", "",
-              [](const RunResults& r, Emitter& out) {
-                if (r.comparison) out.values(r.comparison->mass_count);
-              }),
+      stored_as(Storage::integer, dataset(p, "/compare/cluster_mass_count", "1",
+                                          "clusters of the particle state in each mass bin", "",
+                                          [](const RunResults& r, Emitter& out) {
+                                            if (r.comparison) out.values(r.comparison->mass_count);
+                                          })),
       dataset(
           p, "/compare/cluster_mass_exact", "1",
           "the exact expected number of shocks of Burgers turbulence from this white noise in each mass bin "

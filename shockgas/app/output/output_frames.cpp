@@ -70,6 +70,9 @@ Emit evolution_key(F f) {
   });
 }
 
+// The frames are drawn (the animation), never measured again: float32 (storage.hpp).
+Declaration drawn(Declaration d) { return stored_as(Storage::float32, std::move(d)); }
+
 std::vector<Declaration> record() {
   const Part p = Part::animation;
   const char* particles = "when particles run";
@@ -79,27 +82,30 @@ std::vector<Declaration> record() {
               "", with_frames([](const Frames& f, Emitter& out) { out.values(f.t); })),
       dataset(p, "/animation/clusters/t", "time", "the frame times the particles reached (realization 0)",
               particles, with_clusters([](const Frames& f, Emitter& out) { out.values(f.cluster_t); })),
-      dataset(p, "/animation/clusters/count", "1", "clusters in each of those frames", particles,
-              with_clusters([](const Frames& f, Emitter& out) { out.values(counts(f)); })),
-      dataset(p, "/animation/clusters/x", "length",
-              "cluster centres of mass, frame after frame (count[k] entries per frame)", particles,
-              with_clusters([](const Frames& f, Emitter& out) { out.values(concatenated(f, &Bodies::x)); })),
-      dataset(p, "/animation/clusters/v", "length/time", "cluster velocities (momentum / mass), as x",
-              particles,
-              with_clusters([](const Frames& f, Emitter& out) { out.values(concatenated(f, &Bodies::v)); })),
-      dataset(p, "/animation/clusters/m", "mass", "cluster masses, as x", particles,
-              with_clusters([](const Frames& f, Emitter& out) { out.values(concatenated(f, &Bodies::m)); })),
-      dataset(p, "/animation/fields/{solver}/x", "length", "cell centres", continuum,
-              with_frames([](const Frames& f, Emitter& out) {
-                for (const auto& s : f.fields)
-                  if (!s.empty()) out.values(s.front().x, {s.front().solver});
-              })),
-      dataset(p, "/animation/fields/{solver}/v", "length/time",
-              "cell averages of v at each frame (rows: frames)", continuum,
-              field_matrix(&continuum::ContinuumResult::v)),
-      dataset(p, "/animation/fields/{solver}/rho", "mass/length",
-              "cell averages of rho at each frame (rows: frames)", "solvers that give a density",
-              field_matrix(&continuum::ContinuumResult::rho)),
+      stored_as(Storage::integer,
+                dataset(p, "/animation/clusters/count", "1", "clusters in each of those frames", particles,
+                        with_clusters([](const Frames& f, Emitter& out) { out.values(counts(f)); }))),
+      drawn(dataset(
+          p, "/animation/clusters/x", "length",
+          "cluster centres of mass, frame after frame (count[k] entries per frame)", particles,
+          with_clusters([](const Frames& f, Emitter& out) { out.values(concatenated(f, &Bodies::x)); }))),
+      drawn(dataset(
+          p, "/animation/clusters/v", "length/time", "cluster velocities (momentum / mass), as x", particles,
+          with_clusters([](const Frames& f, Emitter& out) { out.values(concatenated(f, &Bodies::v)); }))),
+      drawn(dataset(
+          p, "/animation/clusters/m", "mass", "cluster masses, as x", particles,
+          with_clusters([](const Frames& f, Emitter& out) { out.values(concatenated(f, &Bodies::m)); }))),
+      drawn(dataset(p, "/animation/fields/{solver}/x", "length", "cell centres", continuum,
+                    with_frames([](const Frames& f, Emitter& out) {
+                      for (const auto& s : f.fields)
+                        if (!s.empty()) out.values(s.front().x, {s.front().solver});
+                    }))),
+      drawn(dataset(p, "/animation/fields/{solver}/v", "length/time",
+                    "cell averages of v at each frame (rows: frames)", continuum,
+                    field_matrix(&continuum::ContinuumResult::v))),
+      drawn(dataset(p, "/animation/fields/{solver}/rho", "mass/length",
+                    "cell averages of rho at each frame (rows: frames)", "solvers that give a density",
+                    field_matrix(&continuum::ContinuumResult::rho))),
       attribute(p, "/animation/fields@exact", "",
                 "the exact solver's name (plots draw it black, dashed, as \"exact\")",
                 "when the exact solver runs", with_frames([](const Frames& f, Emitter& out) {
@@ -121,11 +127,14 @@ std::vector<Declaration> record() {
       dataset(p, "/animation/evolution/negative_area", "length^2/time",
               "int (v - <v>)^- dx: the lobes below it", continuum,
               evolution_series(&Evolution::negative_area)),
-      dataset(p, "/animation/evolution/shocks", "1", "shocks at each frame", continuum,
-              evolution_series(&Evolution::shocks)),
-      dataset(p, "/animation/evolution/breaking_fit", "1",
-              "1 for the smooth, resolved frames whose -1 / min dv/dx the breaking time is fitted on, else 0",
-              continuum, evolution_series(&Evolution::formation_fit)),
+      stored_as(Storage::integer, dataset(p, "/animation/evolution/shocks", "1", "shocks at each frame",
+                                          continuum, evolution_series(&Evolution::shocks))),
+      stored_as(
+          Storage::integer,
+          dataset(p, "/animation/evolution/breaking_fit", "1",
+                  "1 for the smooth, resolved frames whose -1 / min dv/dx the breaking time is fitted on, "
+                  "else 0",
+                  continuum, evolution_series(&Evolution::formation_fit))),
       dataset(p, "/animation/evolution/amplitude_fit_t", "time",
               "the window of the amplitude's power-law fit", "with the fit",
               with_frames([](const Frames& f, Emitter& out) {

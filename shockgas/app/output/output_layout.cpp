@@ -18,17 +18,19 @@ class FileEmitter : public Emitter {
  public:
   FileEmitter(Hdf5File& h5, const LayoutEntry& e) : h5_(h5), e_(e) {}
   void values(const std::vector<double>& data, const std::vector<std::string>& at) override {
-    h5_.write(fill_path(e_.path, at), data, e_.unit, e_.description);
+    h5_.write(fill_path(e_.path, at), data.data(), {data.size()}, e_.storage, e_.unit, e_.description);
   }
   void pieces(std::size_t size, const std::function<void(const PutPiece&)>& put,
               const std::vector<std::string>& at) override {
-    Hdf5File::Writer w = h5_.start(fill_path(e_.path, at), size, e_.unit, e_.description);
+    Hdf5File::Writer w = h5_.start(fill_path(e_.path, at), size, e_.storage, e_.unit, e_.description);
     put([&](const double* p, std::size_t count) { w.append(p, count); });
     w.finish();
   }
   void matrix(const std::vector<double>& data, std::size_t rows, std::size_t cols,
               const std::vector<std::string>& at) override {
-    h5_.write_matrix(fill_path(e_.path, at), data, rows, cols, e_.unit, e_.description);
+    const std::string path = fill_path(e_.path, at);
+    if (data.size() != rows * cols) throw RunError("HDF5: matrix " + path + " has the wrong size");
+    h5_.write(path, data.data(), {rows, cols}, e_.storage, e_.unit, e_.description);
   }
   void text(const std::string& value, const std::vector<std::string>& at) override {
     const auto [object, name] = split(fill_path(e_.path, at));
@@ -112,19 +114,27 @@ std::string cell(const std::string& text) {
   return out;
 }
 
+// The type column: a dataset's storage, an attribute's kind (text or float64).
+std::string type_cell(const LayoutEntry& e) {
+  if (e.kind == LayoutEntry::Kind::dataset) return storage_name(e.storage);
+  return e.unit.empty() ? "text" : "float64";
+}
+
 void table(std::ostringstream& out, const std::vector<Declaration>& decls, Part part, const char* head) {
   bool any = false;
+  const bool typed = decls.empty() || decls.front().entry.kind != LayoutEntry::Kind::summary;
   for (const auto& d : decls) {
     const LayoutEntry& e = d.entry;
     if (e.part != part) continue;
     if (!any)
-      out << "\n### " << part_title(part) << "\n\n| " << head << " | unit | meaning |\n|---|---|---|\n";
+      out << "\n### " << part_title(part) << "\n\n| " << head << " | unit" << (typed ? " | type" : "")
+          << " | meaning |\n|---|---|" << (typed ? "---|" : "") << "---|\n";
     any = true;
     std::string meaning = e.description;
     if (!e.when.empty()) meaning += " (" + e.when + ")";
     if (!e.theory.empty()) meaning += "; theory: " + theory_markdown(e.theory);
-    out << "| `" << e.path << "` | " << (e.unit.empty() ? "" : cell(e.unit)) << " | " << cell(meaning)
-        << " |\n";
+    out << "| `" << e.path << "` | " << (e.unit.empty() ? "" : cell(e.unit)) << " | "
+        << (typed ? type_cell(e) + " | " : "") << cell(meaning) << " |\n";
   }
 }
 

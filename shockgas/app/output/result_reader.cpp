@@ -1,13 +1,16 @@
 #include "shockgas/app/output/result_reader.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "shockgas/app/files/byte_buffer.hpp"
+#include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/file_problem.hpp"
 #include "shockgas/app/files/isolated_call.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/memory_limit.hpp"
 
 namespace shockgas::app {
 
@@ -28,45 +31,14 @@ void frame(const Send& send, Tag tag, const ByteWriter& payload) {
   send(payload.bytes().data(), payload.bytes().size());
 }
 
-// More values than the file's bytes can hold (our datasets are stored whole,
-// uncompressed): a damaged count, refused before the library allocates them.
-void require_room(const DatasetInfo& d, std::uint64_t file_bytes) {
-  double values = 1;
-  for (const auto n : d.shape) values *= static_cast<double>(n);
-  if (values * 8 > 2.0 * static_cast<double>(file_bytes) + 1e6)
-    throw RunError("dataset " + d.path + " claims " + to_text(values, 3) +
-                   " values, more than the file holds");
-}
-
-// What the library reads of the file, as frames (in the child process).
-void read_frames(const std::string& path, Verification checked, const ValueFilter& values, const Send& send) {
+// What the library reads of the file, as frames (in the reading process):
+// `part` sends its frames, then the end; or the problem where the library
+// refused the file.
+void read_frames(const std::string& path, Verification checked,
+                 const std::function<void(const Hdf5File&, const Send&)>& part, const Send& send) {
   try {
     const Hdf5File file = Hdf5File::open(path, checked);
-    const std::uint64_t bytes = fs::file_size(path);
-    const std::vector<DatasetInfo> datasets = file.datasets();
-    for (const DatasetInfo& d : datasets) {
-      ByteWriter w;
-      w.text(d.path), w.text(d.type), w.text(d.unit), w.text(d.description), w.u64(d.shape.size());
-      for (const auto n : d.shape) w.u64(n);
-      frame(send, kDataset, w);
-    }
-    for (const std::string& group : file.groups()) {
-      ByteWriter g;
-      g.text(group);
-      frame(send, kGroup, g);
-      for (const auto& [name, value] : file.attributes(group)) {
-        ByteWriter a;
-        a.text(group), a.text(name), a.text(value);
-        frame(send, kAttribute, a);
-      }
-    }
-    for (const DatasetInfo& d : datasets) {
-      if (!values || !values(d.path)) continue;
-      require_room(d, bytes);
-      ByteWriter v;
-      v.text(d.path), v.numbers(file.read(d.path));
-      frame(send, kValues, v);
-    }
+    part(file, send);
     frame(send, kEnd, ByteWriter());
   } catch (const FileProblem& e) {
     ByteWriter p;
@@ -76,6 +48,35 @@ void read_frames(const std::string& path, Verification checked, const ValueFilte
     ByteWriter p;
     p.text("damaged"), p.text(std::string("the HDF5 library cannot read it: ") + e.what());
     frame(send, kProblem, p);
+  }
+}
+
+// The file's layout: every dataset, every group with its attributes.
+void send_layout(const Hdf5File& file, const Send& send) {
+  for (const DatasetInfo& d : file.datasets()) {
+    ByteWriter w;
+    w.text(d.path), w.text(d.type), w.text(d.unit), w.text(d.description), w.u64(d.shape.size());
+    for (const auto n : d.shape) w.u64(n);
+    frame(send, kDataset, w);
+  }
+  for (const std::string& group : file.groups()) {
+    ByteWriter g;
+    g.text(group);
+    frame(send, kGroup, g);
+    for (const auto& [name, value] : file.attributes(group)) {
+      ByteWriter a;
+      a.text(group), a.text(name), a.text(value);
+      frame(send, kAttribute, a);
+    }
+  }
+}
+
+// The values of the datasets `paths`, one after the other.
+void send_values(const Hdf5File& file, const std::vector<std::string>& paths, const Send& send) {
+  for (const std::string& path : paths) {
+    ByteWriter v;
+    v.text(path), v.numbers(file.read(path));
+    frame(send, kValues, v);
   }
 }
 
@@ -161,32 +162,124 @@ ResultContents read_result(const fs::path& file, const ValueFilter& values) {
   return read_result(path, check_result_file(path), values);
 }
 
-ResultContents read_result(const fs::path& file, Verification checked, const ValueFilter& values) {
+namespace {
+
+// Why the library may have failed inside a file that passed check_result_file().
+std::string damage_note(Verification checked) {
+  switch (checked) {
+    case Verification::manifest:
+      return "though it is as manifest.json records: that manifest was written for the damaged file";
+    case Verification::own_checksum:
+      return "though it is as its own checksum records: it was written damaged, or its checksum written "
+             "again";
+    case Verification::no_manifest:
+      break;
+  }
+  return "and it has no manifest.json to check it against";
+}
+
+// zlib's deflate stores at most 1032 bytes in 1 (its limit: a run of 258 equal
+// bytes in 2 bits); a file of layout 1.0 stores its values uncompressed.
+constexpr double kMostDeflated = 1032;
+// Copies of the values asked for, as float64, that are held at once: in the
+// reading process the library's read and its frame (byte_buffer.hpp); here
+// the frame as it arrives, its payload and the values kept (FrameReader).
+constexpr double kReaderCopies = 2, kKeptCopies = 3;
+
+// The reading process's room besides the values: the HDF5 library and its
+// caches (512 MiB), and three times the file's bytes for the metadata it reads.
+double library_room(double file_bytes) { return 3 * file_bytes + 512.0 * (1 << 20); }
+
+// The values of a dataset as float64, as its metadata declare them [bytes].
+double declared_bytes(const DatasetInfo& d) {
+  double values = 1;
+  for (const auto n : d.shape) values *= static_cast<double>(n);
+  return 8 * values;
+}
+
+// More values than the file's bytes can hold, deflated as much as deflate can:
+// a damaged count, refused before the library allocates them.
+void require_room(const std::string& path, const DatasetInfo& d, double file_bytes) {
+  if (declared_bytes(d) > kMostDeflated * file_bytes + 1e6)
+    throw result_problem(path, "damaged",
+                         "dataset " + d.path + " declares " + to_text(declared_bytes(d) / 8, 3) +
+                             " values, more than its " + size_text(file_bytes) + " can hold deflated (" +
+                             to_text(kMostDeflated) + " to 1 at most)");
+}
+
+// Values whose copies cannot fit in the memory this process may use: refused
+// before they are read.
+void require_memory_for(const std::string& path, double declared) {
+  const MemoryLimit limit = memory_limit();
+  const double need = (kReaderCopies + kKeptCopies) * declared;
+  if (need <= limit.bytes) return;
+  throw result_problem(path, "too large to read",
+                       "its datasets declare " + size_text(declared) +
+                           " of values (as float64); reading them takes about " + size_text(need) + ", " +
+                           size_text(limit.bytes) + " available (" + limit.source + ")");
+}
+
+// Reads one part of the file into `out`, in a reading process that may use
+// `memory` bytes more than this one holds at the fork: FileProblem where the
+// library refused the file or failed inside it.
+void read_part(ResultContents& out, Verification checked, double memory,
+               const std::function<void(const Hdf5File&, const Send&)>& part) {
+  FrameReader frames(out);
+  const auto read = [&](const Send& send) { read_frames(out.path, checked, part, send); };
+  const auto receive = [&](const char* data, std::size_t size) { frames.add(data, size); };
+  std::string ended;
+  if (reads_in_process(checked))
+    read(receive);
+  else
+    ended = run_isolated(read, receive, static_cast<std::uint64_t>(std::min(memory, 1e18)), &hdf5_calls());
+  if (!frames.problem().empty()) throw result_problem(out.path, frames.problem(), frames.detail());
+  if (frames.ended() && ended.empty()) return;
+  throw result_problem(out.path, "damaged",
+                       "the HDF5 library failed inside it (" +
+                           (ended.empty() ? std::string("no answer") : ended) + "), " + damage_note(checked));
+}
+
+// The layout first (with every_chunk, every chunk read block by block), in a
+// reading process sized by the file's bytes; then the values asked for, in one
+// sized by their declared (uncompressed) size: deflate lets a file hold 1000
+// times its bytes of values.
+ResultContents read_contents(const fs::path& file, Verification checked, const ValueFilter& values,
+                             bool every_chunk) {
   ResultContents out;
   out.path = file.string();
   out.verification = checked;
-  FrameReader frames(out);
-  const auto read = [&](const Send& send) { read_frames(out.path, checked, values, send); };
-  const auto receive = [&](const char* data, std::size_t size) { frames.add(data, size); };
-  std::string ended;
-  if (reads_in_process(checked)) {
-    read(receive);
-  } else {
-    std::error_code ec;
-    const auto bytes = static_cast<std::uint64_t>(fs::file_size(file, ec));
-    ended = run_isolated(read, receive, 3 * bytes + (512u << 20), &hdf5_calls());
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(file, ec);
+  const double file_bytes = ec ? 0 : static_cast<double>(size);
+  read_part(out, checked, library_room(file_bytes), [every_chunk](const Hdf5File& h5, const Send& send) {
+    if (every_chunk) h5.check_every_chunk();
+    send_layout(h5, send);
+  });
+  std::vector<std::string> asked;
+  double declared = 0;
+  for (const DatasetInfo& d : out.datasets) {
+    if (!values || !values(d.path)) continue;
+    require_room(out.path, d, file_bytes);
+    asked.push_back(d.path);
+    declared += declared_bytes(d);
   }
-  if (!frames.problem().empty()) throw result_problem(out.path, frames.problem(), frames.detail());
-  if (frames.ended() && ended.empty()) {
-    if (out.verified()) require_manifest_scene(out);
-    return out;
+  if (!asked.empty()) {
+    require_memory_for(out.path, declared);
+    read_part(out, checked, library_room(file_bytes) + kReaderCopies * declared,
+              [&asked](const Hdf5File& h5, const Send& send) { send_values(h5, asked, send); });
   }
-  throw result_problem(
-      out.path, "damaged",
-      "the HDF5 library failed inside it (" + (ended.empty() ? std::string("no answer") : ended) + "), " +
-          (out.verified()
-               ? "though it is as manifest.json records: that manifest was written for the damaged file"
-               : "and it has no manifest.json to check it against"));
+  if (out.verified()) require_manifest_scene(out);
+  return out;
+}
+
+}  // namespace
+
+ResultContents read_result(const fs::path& file, Verification checked, const ValueFilter& values) {
+  return read_contents(file, checked, values, false);
+}
+
+ResultContents read_every_chunk(const fs::path& file, Verification checked) {
+  return read_contents(file, checked, {}, true);
 }
 
 }  // namespace shockgas::app

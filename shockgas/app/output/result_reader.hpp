@@ -6,13 +6,18 @@
 // crash, loop or claim more memory than there is. A file is therefore first
 // checked (result_check.hpp: missing, truncated, not HDF5, other than its
 // manifest records), then read by the library in a child process
-// (isolated_call.hpp), its contents streamed back: a crash, a refusal or any
+// (isolated_call.hpp), its contents streamed back. The layout is read first,
+// by a child whose memory is sized by the file's bytes; then the values asked
+// for, by a child sized by their declared (uncompressed) size: a file that
+// declares more than deflate can pack into its bytes is "damaged", one whose
+// values cannot be held in the memory available "too large to read" (both
+// FileProblem, exit 2, before a value is read). A crash, a refusal or any
 // failure of the library there is a FileProblem "damaged" (exit 2, from
 // Python an InputError) naming the file, and this process never runs the
-// library on it. A manifest can be edited along with the file it lists, so
-// its record is no proof that the file is sound: only a file whose own
-// checksums are verified (a later format) could be read in this process, and
-// read_result() is where that choice is made (reads_in_process()).
+// library on it. A manifest can be edited along with the file it lists, and
+// a file's own checksum (own_checksum.hpp) along with the file, so neither
+// is proof that the file is sound: read_result() is where the choice to read
+// in this process would be made (reads_in_process()).
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -34,7 +39,8 @@ struct ResultContents {
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> attributes;
   std::map<std::string, std::vector<double>> values;  // the datasets asked for
 
-  bool verified() const { return verification == Verification::manifest; }
+  // Checked against its manifest or its own checksum.
+  bool verified() const { return verification != Verification::no_manifest; }
   // The attributes of a group (none for a group the file does not have).
   const std::vector<std::pair<std::string, std::string>>& attributes_of(const std::string& group) const;
   // One attribute; "" where the group or the attribute is missing.
@@ -52,8 +58,13 @@ ResultContents read_result(const std::filesystem::path& file, const ValueFilter&
 ResultContents read_result(const std::filesystem::path& file, Verification checked,
                            const ValueFilter& values = {});
 
+// The same, every chunk of every dataset read first in the child process, its
+// Fletcher32 checked (Hdf5File::check_every_chunk): FileProblem "damaged"
+// naming the datasets that do not read back whole. What `info` reads.
+ResultContents read_every_chunk(const std::filesystem::path& file, Verification checked);
+
 // Whether a file checked so is read in this process: one whose own checksums
-// were verified (none yet: every file is read in a child process).
+// were verified (none: every file is read in a child process).
 bool reads_in_process(Verification checked);
 
 }  // namespace shockgas::app

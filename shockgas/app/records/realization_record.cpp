@@ -87,7 +87,8 @@ RecordFields to_fields(const RunResult& run) {
     put_bodies(f, prefix, run.snapshots[k].bodies);
   }
   if (!run.spacetime.t.empty()) {
-    f.emplace_back("spacetime/n", std::vector<double>{static_cast<double>(run.spacetime.n)});
+    f.emplace_back("spacetime/labels",
+                   std::vector<double>(run.spacetime.labels.begin(), run.spacetime.labels.end()));
     f.emplace_back("spacetime/t", run.spacetime.t);
     f.emplace_back("spacetime/x", run.spacetime.x);
   }
@@ -120,7 +121,8 @@ RunResult from_fields(const RecordFields& fields) {
     run.snapshots.push_back({in.numbers(prefix + "/t", 1)[0], in.bodies(prefix)});
   }
   if (in.has("spacetime/t")) {
-    run.spacetime.n = static_cast<std::size_t>(in.numbers("spacetime/n", 1)[0]);
+    for (double label : in.array("spacetime/labels"))
+      run.spacetime.labels.push_back(static_cast<std::size_t>(label));
     run.spacetime.t = in.array("spacetime/t");
     run.spacetime.x = in.array("spacetime/x");
   }

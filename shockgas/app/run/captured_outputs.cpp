@@ -19,13 +19,13 @@ class CaptureEmitter : public Emitter {
  public:
   CaptureEmitter(CapturedOutputs& out, const LayoutEntry& e) : out_(out), e_(e) {}
   void values(const std::vector<double>& data, const std::vector<std::string>& at) override {
-    out_.datasets[fill_path(e_.path, at)] = {data, {data.size()}, e_.unit, e_.description};
+    out_.datasets[fill_path(e_.path, at)] = {data, {data.size()}, e_.unit, e_.description, e_.storage};
   }
   void matrix(const std::vector<double>& data, std::size_t rows, std::size_t cols,
               const std::vector<std::string>& at) override {
     if (data.size() != rows * cols)
       throw RunError("output layout: matrix " + e_.path + " has the wrong size");
-    out_.datasets[fill_path(e_.path, at)] = {data, {rows, cols}, e_.unit, e_.description};
+    out_.datasets[fill_path(e_.path, at)] = {data, {rows, cols}, e_.unit, e_.description, e_.storage};
   }
   void text(const std::string& value, const std::vector<std::string>& at) override {
     out_.attributes[fill_path(e_.path, at)] = value;
@@ -93,8 +93,13 @@ CapturedOutputs read_outputs(const std::string& path) {
   ResultContents file = read_result(h5_path, [](const std::string&) { return true; });
   CapturedOutputs out;
   for (const DatasetInfo& d : file.datasets)
-    out.datasets[d.path] = {
-        std::move(file.values[d.path]), {d.shape.begin(), d.shape.end()}, d.unit, d.description};
+    out.datasets[d.path] = {std::move(file.values[d.path]),
+                            {d.shape.begin(), d.shape.end()},
+                            d.unit,
+                            d.description,
+                            d.type == "float32" ? Storage::float32
+                            : d.type == "int64" ? Storage::integer
+                                                : Storage::float64};
   for (const std::string& group : file.groups)
     for (const auto& [name, text] : file.attributes_of(group)) {
       const std::string concrete = group + "@" + name;

@@ -10,14 +10,16 @@
 #include <variant>
 #include <vector>
 
+#include "shockgas/app/output/storage.hpp"
 #include "shockgas/app/run/run_internal.hpp"
 
 namespace shockgas::app {
 
 struct CapturedDataset {
-  std::vector<double> data;        // row-major
-  std::vector<std::size_t> shape;  // {n}, or {rows, cols}
-  std::string unit, description;   // as declared
+  std::vector<double> data;            // row-major
+  std::vector<std::size_t> shape;      // {n}, or {rows, cols}
+  std::string unit, description;       // as declared
+  Storage storage = Storage::float64;  // as declared: the type the file (and Python) gives the values
 };
 
 struct CapturedOutputs {

@@ -2,11 +2,8 @@
 // limits of the process.
 #include "shockgas/app/run/resources.hpp"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "shockgas/app/directory/run_target.hpp"
@@ -36,8 +33,11 @@ constexpr double kHistogramCopies = 3, kSpacetimeCopies = 1;
 constexpr double kCellResultBytes = 24;  // x, v, rho kept per cell and solver
 constexpr double kSeriesColumns = 10;    // the time series of a run (run_result.hpp)
 // On disk (tests/app/test_resources.cpp holds the total against the bytes real
-// runs wrote): result.h5's metadata and attributes (55 kB at the default
-// scene), summary.json, report.md and report.html without pictures (30 kB),
+// runs wrote and against their values uncompressed): every value uncompressed,
+// as float64, an upper bound of what result.h5 stores (layout 2.0 deflates the
+// values and keeps some as float32 or integers: 2.5 to 3.4 times fewer bytes
+// in that test's runs, depending on the values); result.h5's metadata and
+// attributes (55 kB at the default scene), summary.json, report.md and report.html without pictures (30 kB),
 // and the model's shortfalls elsewhere (the default scene at 2000 cells wrote
 // 110 kB beyond its other items); the cells
 // of the initial condition (x, v, rho) and of the comparison (x, v, rho,
@@ -49,6 +49,11 @@ constexpr double kInitialCellBytes = 24, kCompareCellBytes = 32;
 constexpr double kPlotsBytes = 0.9e6 * (1 + 4.0 / 3);
 
 double d(std::size_t n) { return static_cast<double>(n); }
+
+// The columns of the space-time record (particles/run_result.hpp: spacetime_labels).
+double recorded_world_lines(const Scene& s) {
+  return d(std::min<std::size_t>(s.initial.N, s.particles.spacetime_particles));
+}
 
 // The realizations that run at once: the ensemble's own split of the threads.
 std::size_t concurrent_runs(const particles::ParticleParams& p) {
@@ -81,8 +86,9 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
   if (p.spacetime)
     items.push_back({"particles.spacetime",
                      "the space-time records of every realization",
-                     (R + kSpacetimeCopies) * d(p.spacetime_frames) * N * 8,
-                     {"particles.spacetime_frames", "initial.N", "particles.realizations"}});
+                     (R + kSpacetimeCopies) * d(p.spacetime_frames) * recorded_world_lines(s) * 8,
+                     {"particles.spacetime_frames", "particles.spacetime_particles", "initial.N",
+                      "particles.realizations"}});
 }
 
 // A continuum solver at work, bytes per cell (its registration's measure); a
@@ -141,8 +147,8 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
     if (p.spacetime)
       items.push_back({"particles.spacetime",
                        "the space-time record",
-                       d(p.spacetime_frames) * N * 8,
-                       {"particles.spacetime_frames", "initial.N"}});
+                       d(p.spacetime_frames) * recorded_world_lines(s) * 8,
+                       {"particles.spacetime_frames", "particles.spacetime_particles", "initial.N"}});
     if (!p.snapshots.empty())
       items.push_back({"particles.snapshots", "the snapshots", d(p.snapshots.size()) * N * kBodyBytes});
     if (keeps_states_apart(s))
@@ -171,59 +177,6 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
 std::vector<Scene> runs_of(const Scene& scene) {
   if (!scene.has_sweep) return {scene};
   return expand_sweep(scene);
-}
-
-std::optional<double> read_number(const fs::path& file) {
-  std::ifstream in(file);
-  std::string word;
-  if (!(in >> word) || word == "max") return std::nullopt;
-  try {
-    return std::stod(word);
-  } catch (...) {
-    return std::nullopt;
-  }
-}
-
-// "memory:/path" (v1) or "0::/path" (v2) of /proc/self/cgroup.
-std::optional<fs::path> cgroup_path(const fs::path& root, bool v2) {
-  std::ifstream in(root / "proc/self/cgroup");
-  for (std::string line; std::getline(in, line);) {
-    const auto a = line.find(':'), b = line.find(':', a + 1);
-    if (a == std::string::npos || b == std::string::npos) continue;
-    const std::string controllers = line.substr(a + 1, b - a - 1);
-    if (v2 ? line.substr(0, a) == "0" && controllers.empty()
-           : ("," + controllers + ",").find(",memory,") != std::string::npos)
-      return fs::path(line.substr(b + 1)).relative_path();
-  }
-  return std::nullopt;
-}
-
-void consider(MemoryLimit& limit, std::optional<double> bytes, const std::string& source) {
-  if (bytes && *bytes < limit.bytes) limit = {std::max(0.0, *bytes), source};
-}
-
-// limit - usage of a cgroup directory (either file missing: no limit known).
-std::optional<double> cgroup_room(const fs::path& dir, const char* limit_file, const char* usage_file) {
-  const auto limit = read_number(dir / limit_file);
-  if (!limit || *limit > 1e18) return std::nullopt;  // v1 writes "no limit" as 2^63 - 4096
-  return *limit - read_number(dir / usage_file).value_or(0);
-}
-
-std::optional<double> meminfo(const fs::path& root, const std::string& key) {
-  std::ifstream in(root / "proc/meminfo");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(key + ":", 0) == 0) return 1024 * std::stod(line.substr(key.size() + 1));  // in kB
-  return std::nullopt;
-}
-
-std::optional<double> rlimit_room(int resource, const fs::path& root, const std::string& in_use) {
-  struct rlimit r {};
-  if (getrlimit(resource, &r) != 0 || r.rlim_cur == RLIM_INFINITY) return std::nullopt;
-  std::ifstream in(root / "proc/self/status");
-  double used = 0;
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(in_use + ":", 0) == 0) used = 1024 * std::stod(line.substr(in_use.size() + 1));
-  return static_cast<double>(r.rlim_cur) - used;
 }
 
 // The key's value as the scene gives it, for the message.
@@ -312,23 +265,6 @@ ResourceEstimate estimate_disk(const Scene& scene, bool plots) {
     e.items.push_back(
         {"", "the sweep's own files", kFileOverhead + (plots && scene.output.plots ? kPlotsBytes : 0)});
   return e;
-}
-
-MemoryLimit memory_limit(const fs::path& root) {
-  MemoryLimit limit{std::numeric_limits<double>::infinity(), "no limit known"};
-  consider(limit, meminfo(root, "MemAvailable"), "MemAvailable in /proc/meminfo");
-  const fs::path cg = root / "sys/fs/cgroup";
-  consider(limit, cgroup_room(cg, "memory.max", "memory.current"), "the cgroup's memory.max");
-  if (const auto own = cgroup_path(root, true))
-    consider(limit, cgroup_room(cg / *own, "memory.max", "memory.current"), "the cgroup's memory.max");
-  if (const auto own = cgroup_path(root, false))
-    consider(limit, cgroup_room(cg / "memory" / *own, "memory.limit_in_bytes", "memory.usage_in_bytes"),
-             "the cgroup's memory.limit_in_bytes");
-  consider(limit, cgroup_room(cg / "memory", "memory.limit_in_bytes", "memory.usage_in_bytes"),
-           "the cgroup's memory.limit_in_bytes");
-  consider(limit, rlimit_room(RLIMIT_AS, root, "VmSize"), "ulimit -v (address space)");
-  consider(limit, rlimit_room(RLIMIT_DATA, root, "VmData"), "ulimit -d (data segment)");
-  return limit;
 }
 
 void require_memory(const ResourceEstimate& memory, const std::string& what,

@@ -17,6 +17,7 @@
 
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/core/memory_limit.hpp"
 
 namespace shockgas::app {
 
@@ -40,17 +41,6 @@ ResourceEstimate estimate_memory(const Scene& scene);
 // Bytes the run directory will hold (a sweep: every variant and its own files);
 // plots: whether the run draws them (--no-plots).
 ResourceEstimate estimate_disk(const Scene& scene, bool plots);
-
-// The memory this process may still use, and where that limit comes from.
-struct MemoryLimit {
-  double bytes = 0;
-  std::string source;  // "MemAvailable in /proc/meminfo", "the cgroup's memory.max", "ulimit -v", ...
-};
-// The smallest of: the system's available memory, the limit of the process's
-// cgroup (v2 memory.max, v1 memory.limit_in_bytes) less its usage, and the
-// address-space and data limits (ulimit) less what is in use. root: where /proc
-// and /sys are found (tests give a tree of their own).
-MemoryLimit memory_limit(const std::filesystem::path& root = "/");
 
 // Refuses a scene that does not fit: InputError located at the scene's key
 // (memory) or naming --out (disk: the file system that will hold the results).

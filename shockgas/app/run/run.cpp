@@ -14,6 +14,7 @@
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/output/output_layout.hpp"
 #include "shockgas/app/output/theory_scopes.hpp"
+#include "shockgas/app/output/xdmf_file.hpp"
 #include "shockgas/app/report/plots.hpp"
 #include "shockgas/app/report/report.hpp"
 #include "shockgas/app/report/report_html.hpp"
@@ -198,6 +199,7 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
     progress.phase("writing result.h5, summary.json");
     h5.close();
   }
+  write_xdmf(dir.string());
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   if (options.plots && scene.output.plots)
     draw_plots(dir, scene.output.animation, progress,

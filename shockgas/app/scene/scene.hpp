@@ -32,10 +32,27 @@ constexpr std::array<EnumName<FrameSpacing>, 2> enum_names(FrameSpacing) {
   return {{{FrameSpacing::linear, "linear"}, {FrameSpacing::log, "log"}}};
 }
 
+// Whether result.h5 keeps a state of realization 0 (/initial/x, v, m or
+// /particles/final/x, v, m): always, never, or (auto) when it has at most
+// kStoredStateBodies bodies. The initial state is drawn again from the scene
+// and its seed (InitialCondition) whenever it is not kept.
+enum class KeepState { automatic, always, never };
+constexpr std::array<EnumName<KeepState>, 3> enum_names(KeepState) {
+  return {{{KeepState::automatic, "auto"}, {KeepState::always, "always"}, {KeepState::never, "never"}}};
+}
+// 10^6 bodies: 24 MB of float64 before compression, a second's writing at most;
+// above it a state is the file's bulk (docs/output.md, "Layout version").
+inline constexpr std::size_t kStoredStateBodies = 1000000;
+inline bool keeps_state(KeepState k, std::size_t bodies) {
+  return k == KeepState::always || (k == KeepState::automatic && bodies <= kStoredStateBodies);
+}
+
 // Scene table [output].
 struct OutputParams {
   bool plots = true;  // needs /usr/bin/python3 with matplotlib, h5py
   bool fields = true;
+  KeepState initial = KeepState::automatic;      // /initial/x, v, m
+  KeepState final_state = KeepState::automatic;  // /particles/final/x, v, m
   bool animation = false;  // record frames; animation.mp4 and .gif (shockgas/app/output/frames.hpp)
   std::size_t animation_frames = 60;
   FrameSpacing animation_spacing = FrameSpacing::linear;

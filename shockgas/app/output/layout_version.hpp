@@ -1,0 +1,31 @@
+#pragma once
+// The version of the layout of result.h5 (docs/output.md, "Layout version"):
+// major.minor, written as the file's attribute /@layout_version. A minor
+// version adds datasets or attributes a reader of the same major may ignore;
+// a major version changes what a path holds, its type or its place. A file
+// without the attribute is of layout 1.0 (written before it was versioned).
+// Every reader (Hdf5File::open: info, merge, animate, the report, the Python
+// load) reads every layout of its major and below, and refuses a newer major.
+#include <string>
+
+namespace shockgas::app {
+
+struct LayoutVersion {
+  int major = 1, minor = 0;
+};
+
+// The layout this build writes.
+inline constexpr LayoutVersion kLayoutVersion{2, 0};
+
+// "2.0".
+std::string layout_version_text(LayoutVersion v = kLayoutVersion);
+
+// The version an attribute's text names ("" = 1.0, before versioning);
+// FileProblem for a text that is not major.minor.
+LayoutVersion parse_layout_version(const std::string& file, const std::string& text);
+
+// FileProblem (exit 2) "written in layout 3.0; this shockgas reads layouts
+// 1.0 to 2.x" when the file's major is newer than kLayoutVersion's.
+void check_layout_version(const std::string& file, const std::string& text);
+
+}  // namespace shockgas::app

@@ -1,0 +1,52 @@
+// The layouts a reader reads (docs/output.md, "Layout version"): a run
+// directory of layout 1.0 (tests/data/layout-1.0, written by shockgas 0.1.0
+// before the layout was versioned: float64 everywhere, no filters, no checksum
+// of its own) is read as it is, by info (against its manifest) and by load.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "child_run.hpp"
+#include "run_dir_checks.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/run/captured_outputs.hpp"
+
+namespace shockgas::app {
+namespace {
+
+using namespace testing;
+
+fs::path layout_1_run() {
+  const fs::path run = fresh_dir("layout-1.0") / "run";
+  fs::copy(fs::path(SHOCKGAS_SOURCE_DIR) / "tests/data/layout-1.0", run, fs::copy_options::recursive);
+  return run;
+}
+
+TEST(LayoutVersions, InfoReadsARunDirectoryOfLayout1AgainstItsManifest) {
+  const fs::path run = layout_1_run();
+  const auto [code, err] = run_child({"info", run.string()});
+  EXPECT_EQ(code, 0) << err;
+  EXPECT_EQ(err.find("warning"), std::string::npos) << err;
+}
+
+TEST(LayoutVersions, LoadReadsLayout1AsFloat64AndLayout2InItsDeclaredTypes) {
+  const CapturedOutputs old = read_outputs(layout_1_run().string());
+  ASSERT_TRUE(old.datasets.count("/particles/count"));
+  EXPECT_EQ(old.datasets.at("/particles/count").storage, Storage::float64);
+  EXPECT_EQ(old.datasets.at("/particles/count").data.size(), 6u);  // samples = 6 in its scene
+  EXPECT_EQ(old.attributes.count("/@layout_version"), 0u);
+
+  const fs::path root = fresh_dir("layout-2.0");
+  write_text(root / "scene.toml", std::string(kSceneA) + "[output]\nplots = false\n");
+  ASSERT_EQ(run_child({"run", (root / "scene.toml").string(), "--out", (root / "run").string(), "-q"}).first,
+            0);
+  const CapturedOutputs now = read_outputs((root / "run").string());
+  EXPECT_EQ(now.datasets.at("/particles/count").storage, Storage::integer);
+  EXPECT_EQ(now.datasets.at("/compare/occupied").storage, Storage::integer);
+  EXPECT_EQ(now.datasets.at("/particles/T").storage, Storage::float64);
+  EXPECT_EQ(std::get<std::string>(now.attributes.at("/@layout_version")), "2.0");
+}
+
+}  // namespace
+}  // namespace shockgas::app
