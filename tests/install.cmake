@@ -49,5 +49,13 @@ add_test(NAME install.deb COMMAND sh ${install_scripts}/deb_package.sh ${CMAKE_C
 get_property(install_tests DIRECTORY PROPERTY TESTS)
 list(FILTER install_tests INCLUDE REGEX "^install\\.")
 set_tests_properties(${install_tests} PROPERTIES LABELS install SKIP_RETURN_CODE 77 TIMEOUT 300)
-# cpack first brings `all` up to date (its preinstall step), then packs and compresses.
-set_tests_properties(install.deb PROPERTIES TIMEOUT 900)
+# cpack first brings `all` up to date (its preinstall step), then installs the
+# components cli, lib and dev file by file, packs, compresses and runs
+# dpkg-shlibdeps: about 25 CPU-seconds, most of them the file system's, so the
+# .deb is labelled `slow` as well. The files it holds are those of the same
+# install rules and components that the default set checks from a prefix
+# (install.prefix and the tests on it, install.relocated_command); what only
+# install.deb checks is cpack's package itself: its Depends (libhdf5 found by
+# dpkg-shlibdeps), the command run from the extracted root, and the containers
+# of packaging/ against the package's name.
+set_tests_properties(install.deb PROPERTIES LABELS "install;slow" TIMEOUT 900)

@@ -38,7 +38,10 @@ TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
     return n;
   };
   const std::size_t stability_failures = failures_of("continuum_stability");
-  const auto [second, why_second] = bench("particles_stability");
+  ASSERT_GT(stability_failures, 0u) << "no failure rows: their keeping would go unchecked";
+  // The second section is the cheapest other one (particles_wp, about 6 CPU-seconds;
+  // particles_stability takes 13): which one it is does not matter to what is kept.
+  const auto [second, why_second] = bench("particles_wp");
   ASSERT_EQ(second, 0) << why_second;
   EXPECT_EQ(read_text(out / "stability_cfl.csv"), cfl_before);        // kept, not measured again
   EXPECT_EQ(failures_of("continuum_stability"), stability_failures);  // and its failures with it
@@ -46,7 +49,7 @@ TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
   ASSERT_TRUE(m.has_value());
   EXPECT_EQ(m->scene, "bench");
   for (const std::string file :
-       {"stability_cfl.csv", "stability_cfl.png", "stability_collapse.csv", "stability_collapse.png"})
+       {"stability_cfl.csv", "stability_cfl.png", "particles_cost.csv", "particles_cost.png"})
     EXPECT_NE(m->find(file), nullptr) << file;
   const auto [checked, said] = run_child({"info", out.string()});
   EXPECT_EQ(checked, 0) << said;
@@ -54,7 +57,7 @@ TEST(BenchRun, ASectionMeasuredAgainKeepsTheOtherSectionsTables) {
   // Nothing unchecked is carried: a damaged earlier table stops a bench of
   // some sections before any work, naming it.
   { std::ofstream(out / "stability_cfl.csv", std::ios::app) << "junk\n"; }
-  const auto [refused, why] = bench("particles_stability");
+  const auto [refused, why] = bench("particles_wp");
   EXPECT_EQ(refused, 2) << why;
   EXPECT_NE(why.find("stability_cfl.csv damaged"), std::string::npos) << why;
 }

@@ -232,6 +232,15 @@ TEST(HopfCole, AtLargeViscosityAutoKeepsTheFftPathOrFails) {
   for (const double v : r.v) EXPECT_LE(std::abs(v), r.stats.at("fft_velocity_error_bound"));  // exact: 0
   p.nu = 1e10;  // the fft bound 4e-3 is above the 1e-3 max|v0| at which a result is never returned
   EXPECT_THROW(sc::solve_hopf_cole(f, p, 0.1), shockgas::RunError);
-  f.v0 = [](double) { return 0.0; };  // spread 0: solved exactly, at any nu
-  for (const double v : sc::solve_hopf_cole(f, p, 0.1).v) EXPECT_EQ(v, 0.0);
+  // Spread 0: solved exactly, at any nu, by the log path (the fft bound is above
+  // rtol * max|v0| = 0). That path sums, for each cell, every node within
+  // sqrt(2 t 2 nu 40) = 4e5 lengths at dq = h: 8e5 cells^2 terms, 3.3e9 at 64
+  // cells (30 CPU-seconds), 5e7 at the 8 cells (the least allowed) taken here.
+  // Each cell's sum runs over the same offsets in the same order whatever the
+  // count, so 8 cells check the same exact zero on the same branch.
+  p.cells = 8;
+  f.v0 = [](double) { return 0.0; };
+  const sc::ContinuumResult constant = sc::solve_hopf_cole(f, p, 0.1);
+  EXPECT_EQ(constant.stats.at("log_path"), 1.0);
+  for (const double v : constant.v) EXPECT_EQ(v, 0.0);
 }
