@@ -237,20 +237,25 @@ std::string scene_section(const std::map<std::string, std::string>& p, const std
   return out + "</tbody>\n</table>\n";
 }
 
+FileProblem damaged_summary(const fs::path& dir, const std::string& detail) {
+  return FileProblem("summary.json", (dir / "summary.json").string(), "damaged", detail);
+}
+
 Json read_summary(const fs::path& dir) {
   std::ifstream in(dir / "summary.json");
   if (!in) throw RunError("report.html: no summary.json in " + dir.string());
+  Json summary;
   try {
-    return Json::parse(in);
+    summary = Json::parse(in);
   } catch (const nlohmann::json::parse_error& e) {
-    throw FileProblem("summary.json", (dir / "summary.json").string(), "damaged",
-                      "not JSON as a run writes it (a syntax error at byte " + std::to_string(e.byte) + ")");
+    throw damaged_summary(
+        dir, "not JSON as a run writes it (a syntax error at byte " + std::to_string(e.byte) + ")");
   }
+  if (!summary.is_object()) throw damaged_summary(dir, "not a JSON object, as a run writes it");
+  return summary;
 }
 
-}  // namespace
-
-void write_report_html(const fs::path& dir) {
+void write_report_html_of(const fs::path& dir) {
   const Json summary = read_summary(dir);
   const auto p = provenance(dir);
   const toml::table scene = resolved(p);
@@ -271,6 +276,16 @@ void write_report_html(const fs::path& dir) {
   body += plots + scene_section(p, summary.value("build", std::string()));
   // In place in a finished run's directory (`shockgas animate`): whole or not at all.
   replace_file(dir / "report.html", html::page("shockgas: " + name, body));
+}
+
+}  // namespace
+
+void write_report_html(const fs::path& dir) {
+  try {
+    write_report_html_of(dir);
+  } catch (const nlohmann::json::exception&) {  // a value of another kind than a run writes
+    throw damaged_summary(dir, "a value is not of the kind a run writes");
+  }
 }
 
 }  // namespace shockgas::app
