@@ -14,6 +14,7 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
+#include "scene_a_run.hpp"
 #include "shockgas/app/files/own_checksum.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/layout_version.hpp"
@@ -25,14 +26,7 @@ using namespace testing;
 
 // One run's result.h5, made once; the tests damage copies of it, alone in a directory.
 const fs::path& pristine() {
-  static const fs::path file = [] {
-    const fs::path root = fresh_dir("damage");
-    write_text(root / "scene.toml", std::string(kSceneA) + "[output]\nplots = false\n");
-    const auto [code, err] =
-        run_child({"run", (root / "scene.toml").string(), "--out", (root / "run").string(), "-q"});
-    EXPECT_EQ(code, 0) << err;
-    return root / "run" / "result.h5";
-  }();
+  static const fs::path file = scene_a_run("damage") / "result.h5";
   return file;
 }
 

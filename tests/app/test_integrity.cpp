@@ -13,6 +13,7 @@
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
+#include "scene_a_run.hpp"
 #include "shockgas/app/cli/info.hpp"
 #include "shockgas/app/files/file_problem.hpp"
 
@@ -23,14 +24,7 @@ using namespace testing;
 
 // One run's directory, made once for the tests below (each copies it).
 const fs::path& pristine() {
-  static const fs::path dir = [] {
-    const fs::path root = fresh_dir("integrity");
-    write_text(root / "scene.toml", std::string(kSceneA) + "[output]\nplots = false\n");
-    const auto [code, err] =
-        run_child({"run", (root / "scene.toml").string(), "--out", (root / "run").string(), "-q"});
-    EXPECT_EQ(code, 0) << err;
-    return root / "run";
-  }();
+  static const fs::path dir = scene_a_run("integrity");
   return dir;
 }
 
