@@ -65,17 +65,14 @@ std::string describe(const ResultContents& file) {
   return out.str();
 }
 
-std::optional<Slice> slice_of(const std::string& text, const std::string& option) {
-  return text.empty() ? std::nullopt : std::optional(parse_slice(text, option));
-}
-
 // A directory holding a checkpoint and no result (checkpoint.hpp): a run that
 // stopped; how far it got and how to continue it. InputError for a damaged
 // checkpoint or another build's.
 std::string describe_checkpoint(const fs::path& dir) {
   const Checkpoint c = read_checkpoint(dir);
-  const EnsemblePlan plan(checkpoint_scene(c, nullptr), slice_of(c.realizations, "--realizations"),
-                          slice_of(c.variants, "--variants"));
+  const EnsemblePlan plan(checkpoint_scene(c, nullptr),
+                          parse_optional_slice(c.realizations, "--realizations"),
+                          parse_optional_slice(c.variants, "--variants"));
   std::size_t saved = 0;
   std::error_code ec;
   for (const WorkItem& w : plan.items()) saved += fs::exists(run_state_path(dir, w.ensemble, w.index), ec);
@@ -118,14 +115,13 @@ Verification checked_naming_damage(const fs::path& file) {
 
 std::string describe_result(const std::string& path) {
   std::error_code ec;
-  if (fs::is_directory(path, ec) && !fs::exists(fs::path(path) / "result.h5", ec) &&
-      fs::exists(checkpoint_path(path), ec))
-    return describe_checkpoint(path);  // a run that stopped
-  // An output directory without a result file by its own manifest (`shockgas
-  // bench`): nothing to describe but its files.
-  if (fs::is_directory(path, ec) && !fs::exists(fs::path(path) / "result.h5", ec))
+  if (fs::is_directory(path, ec) && !fs::exists(fs::path(path) / "result.h5", ec)) {
+    if (fs::exists(checkpoint_path(path), ec)) return describe_checkpoint(path);  // a run that stopped
+    // An output directory without a result file by its own manifest (`shockgas
+    // bench`): nothing to describe but its files.
     if (const auto manifest = read_manifest(path); manifest && !manifest->find("result.h5"))
       return path + ": the output of \"" + manifest->scene + "\", which has no result file\n";
+  }
   const fs::path file = result_file_of(path);
   const Verification checked = checked_naming_damage(file);
   if (checked == Verification::no_manifest)

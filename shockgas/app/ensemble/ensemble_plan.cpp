@@ -24,6 +24,10 @@ Slice parse_slice(const std::string& text, const std::string& option) {
   return s;
 }
 
+std::optional<Slice> parse_optional_slice(const std::string& text, const std::string& option) {
+  return text.empty() ? std::nullopt : std::optional(parse_slice(text, option));
+}
+
 EnsemblePlan::EnsemblePlan(const Scene& scene, std::optional<Slice> realizations,
                            std::optional<Slice> variants)
     : realization_slice_(realizations),

@@ -26,6 +26,8 @@ struct Slice {
 std::string slice_text(const Slice& s);
 // Reads "A:B" (0 <= A < B); InputError naming `option` otherwise.
 Slice parse_slice(const std::string& text, const std::string& option);
+// The same, "" for no slice (all of them), as --realizations and --variants are given.
+std::optional<Slice> parse_optional_slice(const std::string& text, const std::string& option);
 
 struct WorkItem {
   std::size_t ensemble = 0;  // the variant of a sweep; 0 otherwise

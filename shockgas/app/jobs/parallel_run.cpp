@@ -76,9 +76,8 @@ bool keeps_checkpoints(const RunOptions& options) { return options.checkpoint ||
 
 std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptions& options,
                          RunDirectory* out) {
-  std::optional<Slice> realizations, variants;
-  if (!options.realizations.empty()) realizations = parse_slice(options.realizations, "--realizations");
-  if (!options.variants.empty()) variants = parse_slice(options.variants, "--variants");
+  const std::optional<Slice> realizations = parse_optional_slice(options.realizations, "--realizations");
+  const std::optional<Slice> variants = parse_optional_slice(options.variants, "--variants");
   const bool shard = realizations || variants;
   const auto plan = std::make_shared<const EnsemblePlan>(scene, realizations, variants);
   Job* job = current_job();
