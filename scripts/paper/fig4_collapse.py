@@ -106,38 +106,38 @@ def leave_one_out_means(x):
     return (x.sum(axis=0)[None, ...] - x) / (n - 1)
 
 
-def pair_statistics(a, b, dz):
-    """Distance, its jackknife error, noise floor, chi2 and dof of two paired
-    sets of per-realization densities a, b [realization, bin]."""
-    n = a.shape[0]
-    d = a - b
+def populated(a):
+    """The bins where at least MIN_REALIZATIONS realizations of a [realization, bin] have mass."""
+    return np.count_nonzero(a > 0, axis=0) >= MIN_REALIZATIONS
+
+
+def difference_statistics(d, use, dz):
+    """Of per-realization differences d [realization, bin]: the L1 distance of
+    their mean with its jackknife error, the noise floor, and chi2 and dof over
+    the bins `use` whose difference has a spread."""
+    n = d.shape[0]
     distance = float(np.sum(np.abs(d.mean(axis=0))) * dz)
-    without = np.sum(np.abs(leave_one_out_means(d)), axis=1) * dz
-    error = jackknife_error(without)
+    error = jackknife_error(np.sum(np.abs(leave_one_out_means(d)), axis=1) * dz)
     sigma = d.std(axis=0, ddof=1) / math.sqrt(n)
     floor = float(math.sqrt(2 / math.pi) * np.sum(sigma) * dz)
-    populated = (np.count_nonzero(a > 0, axis=0) >= MIN_REALIZATIONS) | (np.count_nonzero(b > 0, axis=0) >= MIN_REALIZATIONS)
-    use = populated & (sigma > 0)
+    use = use & (sigma > 0)
     chi2 = float(np.sum((d.mean(axis=0)[use] / sigma[use]) ** 2))
     return {"distance": distance, "error": error, "noise_floor": floor, "chi2": chi2, "dof": int(np.count_nonzero(use))}
 
 
+def pair_statistics(a, b, dz):
+    """Distance, its jackknife error, noise floor, chi2 and dof of two paired
+    sets of per-realization densities a, b [realization, bin]."""
+    return difference_statistics(a - b, populated(a) | populated(b), dz)
+
+
 def exact_statistics(a, exact, dz):
     """One run's per-realization densities a [realization, bin] against the exact
-    law on the same bins: the L1 distance of their mean with its jackknife error
-    and noise floor (as pair_statistics, with the exact law as the second member
-    and no noise of its own), chi2 over the populated bins and its p-value."""
-    n = a.shape[0]
-    d = a - exact[None, :]
-    distance = float(np.sum(np.abs(d.mean(axis=0))) * dz)
-    error = jackknife_error(np.sum(np.abs(leave_one_out_means(d)), axis=1) * dz)
-    sigma = a.std(axis=0, ddof=1) / math.sqrt(n)
-    floor = float(math.sqrt(2 / math.pi) * np.sum(sigma) * dz)
-    use = (np.count_nonzero(a > 0, axis=0) >= MIN_REALIZATIONS) & (sigma > 0)
-    chi2 = float(np.sum((d.mean(axis=0)[use] / sigma[use]) ** 2))
-    dof = int(np.count_nonzero(use))
-    return {"distance": distance, "error": error, "noise_floor": floor, "chi2": chi2, "dof": dof,
-            "p": chi2_p_value(chi2, dof)}
+    law on the same bins: as pair_statistics with the exact law as the second
+    member (it has no noise of its own, so the bins are those where a has mass),
+    and chi2's p-value."""
+    s = difference_statistics(a - exact[None, :], populated(a), dz)
+    return {**s, "p": chi2_p_value(s["chi2"], s["dof"])}
 
 
 def group_statistics(members, dz):
