@@ -98,6 +98,7 @@ TEST_F(Checkpoints, InfoSaysHowFarAStoppedRunGot) {
   std::ofstream(checkpoint_path(path("run")), std::ios::binary) << bytes;
   EXPECT_EQ(command({"info", path("run")}), 2) << said_;
   EXPECT_NE(said_.find("damaged"), std::string::npos) << said_;
+  EXPECT_NE(said_.find("RESULT = "), std::string::npos) << said_;  // what info was given, not --resume
 }
 
 TEST_F(Checkpoints, ADamagedCheckpointIsRefusedAndKept) {

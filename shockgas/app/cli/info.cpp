@@ -12,6 +12,7 @@
 #include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/records/run_state_file.hpp"
 #include "shockgas/app/report/report.hpp"
+#include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
 
@@ -69,7 +70,12 @@ std::string describe(const ResultContents& file) {
 // stopped; how far it got and how to continue it. InputError for a damaged
 // checkpoint or another build's.
 std::string describe_checkpoint(const fs::path& dir) {
-  const Checkpoint c = read_checkpoint(dir);
+  Checkpoint c;
+  try {
+    c = read_checkpoint(dir);
+  } catch (const InputError& e) {  // read_checkpoint names --resume; here the directory was given as RESULT
+    throw InputError("RESULT", e.value(), "a stopped run's directory: " + e.allowed());
+  }
   const EnsemblePlan plan(checkpoint_scene(c, nullptr),
                           parse_optional_slice(c.realizations, "--realizations"),
                           parse_optional_slice(c.variants, "--variants"));
