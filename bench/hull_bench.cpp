@@ -196,7 +196,7 @@ void observables(benchmark::State& state, const std::string& name, bool clusters
   std::vector<double> seconds;
   for (auto _ : state) {
     const double start = cpu_seconds();
-    detail::Recorder recorder(p, n, chain.L, true);
+    detail::Recorder recorder(p, n, chain.L, true, 1.0);  // unit masses
     for (double s = recorder.next_stop(); s != detail::Recorder::done; s = recorder.next_stop()) {
       const auto view = detail::make_chain_view(n, [&](auto&& f) {
         for (std::size_t i = 0; i < n; ++i) {

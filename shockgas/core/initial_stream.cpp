@@ -53,6 +53,10 @@ InitialStream::InitialStream(const InitialParams& p, std::uint64_t realization, 
 
 InitialStream::InitialStream(const Bodies& held) : held_(&held), n_(held.size()) {}
 
+double InitialStream::mean_mass() const {
+  return held_ ? total_mass(*held_) / static_cast<double>(n_) : 1.0;  // drawn: m = 1 (next)
+}
+
 double InitialStream::draw_velocity(Rng& rng) const {
   return gaussian_ ? amplitude_ * rng.normal() : rng.uniform(-amplitude_, amplitude_);
 }

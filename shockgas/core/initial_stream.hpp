@@ -38,6 +38,8 @@ class InitialStream {
   explicit InitialStream(const Bodies& held);
 
   std::size_t size() const { return n_; }
+  // The mean mass M / N of its bodies: 1 when drawn (unit masses), else the held bodies'.
+  double mean_mass() const;
   std::size_t remaining() const { return n_ - next_; }
   // Writes the next count <= remaining() bodies: x ascending (unless the
   // stream has Parts::velocities), v, m.

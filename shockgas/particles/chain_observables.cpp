@@ -4,8 +4,9 @@
 
 namespace shockgas::particles::detail {
 
-ClusterCounter::ClusterCounter(double L, bool ring, const ClusterCriteria& criteria)
-    : L_(L), ring_(ring), criteria_(criteria), wrap_(L) {}
+ClusterCounter::ClusterCounter(double L, bool ring, const ClusterCriteria& criteria,
+                               const MultiParticleRule& rule)
+    : L_(L), ring_(ring), criteria_(criteria), rule_(rule), wrap_(L) {}
 
 // The counter's state lives in locals through a chunk (stores to members would
 // be repeated every body: the compiler cannot rule out that they alias the chunk).
@@ -15,11 +16,14 @@ void ClusterCounter::add(const ChainChunk& chunk) {
   if (bodies_ == 0) {
     x0_ = last_x_ = ring_ ? wrap_(chunk.x[0]) : chunk.x[0];
     v0_ = last_v_ = chunk.v[0];
+    lone_.start(!rule_.heavy(chunk.m[0]));
     k = 1;
   }
   const ClusterCriteria criteria = criteria_;
+  const MultiParticleRule rule = rule_;
   double last_x = last_x_, last_v = last_v_;
   std::size_t joined = joined_;
+  LoneBodies lone = lone_;
   for (; k < chunk.size; ++k) {
     const double w = ring_ ? wrap_(chunk.x[k]) : chunk.x[k];
     double gap = w - last_x;
@@ -29,23 +33,28 @@ void ClusterCounter::add(const ChainChunk& chunk) {
       else
         ordered_ = false;
     }
-    joined += criteria.joins(gap, chunk.v[k] - last_v);
+    const bool joins = criteria.joins(gap, chunk.v[k] - last_v);
+    joined += joins;
+    lone.add(joins, !rule.heavy(chunk.m[k]));
     last_x = w, last_v = chunk.v[k];
   }
-  last_x_ = last_x, last_v_ = last_v, joined_ = joined;
+  last_x_ = last_x, last_v_ = last_v, joined_ = joined, lone_ = lone;
   bodies_ += chunk.size;
 }
 
 std::optional<std::size_t> ClusterCounter::count() const {
-  if (!ring_) return ordered_ ? std::optional(bodies_ - joined_) : std::nullopt;
-  if (bodies_ < 2) return bodies_;
+  if (!ring_)
+    return ordered_ ? std::optional(bodies_ - joined_ - lone_.with_cuts(false, false)) : std::nullopt;
+  if (bodies_ < 2) return bodies_ - lone_.with_cuts(false, false);  // one body holds every particle
   // The pair (last, first) closes the ring: the wrapping pair if the positions
   // never dropped, else an ordinary pair that must be in order.
   const bool ordered = ordered_ && (!seam_ || x0_ >= last_x_);
   if (!ordered) return std::nullopt;
   const double gap = seam_ ? x0_ - last_x_ : x0_ + L_ - last_x_;
-  const std::size_t joined = joined_ + criteria_.joins(gap, v0_ - last_v_);
-  return joined < bodies_ ? bodies_ - joined : 1;  // a fully joined ring is one cluster
+  const bool closing = criteria_.joins(gap, v0_ - last_v_);
+  const std::size_t joined = joined_ + closing;
+  const std::size_t clusters = joined < bodies_ ? bodies_ - joined : 1;  // a fully joined ring is one
+  return clusters - lone_.with_cuts(closing, closing);
 }
 
 ChainMoments chain_moments(const ChainView& chain, ClusterCounter* counter) {

@@ -86,4 +86,9 @@ ClusterCriteria default_cluster_criteria(double delta, double mean_spacing) {
 
 ClusterCriteria merged_bodies_criteria() { return ClusterCriteria{0.0, 0.0}; }
 
+MultiParticleRule::MultiParticleRule(double mean_particle_mass) : heavy_mass_(1.5 * mean_particle_mass) {
+  require(std::isfinite(mean_particle_mass) && mean_particle_mass > 0, "cluster.mean_particle_mass",
+          mean_particle_mass, "finite, > 0");
+}
+
 }  // namespace shockgas::particles

@@ -90,4 +90,32 @@ ClusterCriteria default_cluster_criteria(double delta, double mean_spacing);
 // Criteria that join nothing: for merged bodies (r = 0), each is a cluster.
 ClusterCriteria merged_bodies_criteria();
 
+// The clusters that hold at least two particles: what the time series counts
+// (/particles/n_clusters), the particle side of the shocks, of which a lone
+// particle is none. A cluster of two or more bodies holds two or more
+// particles; a lone body only if particles merged into it (r = 0, or a sticky
+// sub-threshold rule). With particles of equal mass M / N a merged body weighs
+// at least 2 M / N and a particle M / N: a lone body counts when heavier than
+// 1.5 M / N, between the two, far from either's rounding. With equal particle
+// masses this is "cluster mass > 1.5 M / N"; body count first rather than mass
+// alone because with unequal masses (a density rho0) a cluster of two light
+// particles is still counted (a lone heavy particle then counts too, a merged
+// pair of light ones not: the bodies carry no particle count), and because a
+// body is decided from its own mass and its two pairs, so a stream over the
+// chain needs no running sum of a cluster's mass (chain_observables.hpp,
+// stretch_observables.hpp).
+class MultiParticleRule {
+ public:
+  // mean_particle_mass: M / N of the run's initial particles [mass].
+  // Throws InputError unless it is finite and > 0.
+  explicit MultiParticleRule(double mean_particle_mass);
+  // Whether a lone body of mass m holds two or more particles.
+  bool heavy(double m) const { return m > heavy_mass_; }
+  // Whether cluster c holds two or more particles.
+  bool counts(const Cluster& c) const { return c.count >= 2 || heavy(c.m); }
+
+ private:
+  double heavy_mass_;  // 1.5 M / N [mass]
+};
+
 }  // namespace shockgas::particles

@@ -23,31 +23,32 @@ template <bool Linked>
 class DomainSampler {
  public:
   using Engine = EventEngine<Linked>;
-  DomainSampler(const Engine& e, const SampleSpec& spec) : e_(e), spec_(spec) {}
+  explicit DomainSampler(const Engine& e) : e_(e) {}
 
-  // The part of domain d at time t (>= the time of its last collision), with
-  // the collisions and dissipation since its previous part (taken out of d).
-  // Sets *sorted when rounding left its bodies out of order (see sorted_part).
-  StretchPart take(Domain& d, double t, std::optional<ClusterPart>& sorted) const {
+  // The part of domain d at time t (>= the time of its last collision) as spec
+  // says, with the collisions and dissipation since its previous part (taken
+  // out of d). Sets *sorted when rounding left its bodies out of order (see
+  // sorted_part).
+  StretchPart take(Domain& d, double t, const SampleSpec& spec, std::optional<ClusterPart>& sorted) const {
     StretchPart p;
     p.count = d.count, p.dissipated = d.dissipated;
     d.count = {}, d.dissipated = 0;
-    if (spec_.clusters) {
-      ClusterScan scan(spec_);
-      PeriodWrap wrap(spec_.L);
+    if (spec.clusters) {
+      ClusterScan scan(spec);
+      PeriodWrap wrap(spec.L);
       if constexpr (Linked) {
         moments_linked(d, p);
         std::size_t previous = d.head;
         for_each(d, [&](std::size_t i) {
           const double x = e_.body_[i].at(t);
-          scan.add(spec_.ring ? wrap(x) : x, e_.body_[i].v, i, i < previous);
+          scan.add(spec.ring ? wrap(x) : x, e_.body_[i].v, e_.mass_[i], i, i < previous);
           previous = i;
         });
       } else {
-        sweep_equal(d, t, p, scan, wrap);
+        sweep_equal(d, t, spec.ring, p, scan, wrap);
       }
       p.clusters = scan.part();
-      if (out_of_order(p.clusters, spec_)) sorted = sorted_of(d, t, p.clusters);
+      if (out_of_order(p.clusters, spec)) sorted = sorted_of(d, t, spec, p.clusters);
     } else if constexpr (Linked) {
       moments_linked(d, p);
     } else {
@@ -130,7 +131,8 @@ class DomainSampler {
   // Moments and cluster scan of an equal-mass domain: one pass for the sums of
   // v and the clusters (sample_sweep.hpp) in runs, the general scan for the
   // runs that need it, then the spread's pass.
-  void sweep_equal(const Domain& d, double t, StretchPart& p, ClusterScan& scan, PeriodWrap& wrap) const {
+  void sweep_equal(const Domain& d, double t, bool ring, StretchPart& p, ClusterScan& scan,
+                   PeriodWrap& wrap) const {
 #if defined(__SSE2__)
     double s[4] = {0, 0, 0, 0};
     const typename Engine::Body* body = e_.body_.data();
@@ -138,9 +140,9 @@ class DomainSampler {
       for (std::size_t b = lo; b < hi; b += run) {
         const std::size_t n = std::min(run, hi - b);
         const bool closes = b == 0 && lo != d.head;
-        const bool swept = spec_.ring ? sweep_run<true>(body + b, n, t, b, closes, s, scan, wrap)
-                                      : sweep_run<false>(body + b, n, t, b, closes, s, scan, wrap);
-        if (!swept) scan_run(b, n, t, closes, scan, wrap);
+        const bool swept = ring ? sweep_run<true>(body + b, n, t, e_.m0_, b, closes, s, scan, wrap)
+                                : sweep_run<false>(body + b, n, t, e_.m0_, b, closes, s, scan, wrap);
+        if (!swept) scan_run(b, n, t, ring, closes, scan, wrap);
       }
       p.bodies += hi - lo;
     });
@@ -149,18 +151,18 @@ class DomainSampler {
     moments_equal(d, p);
     for_ranges(d, [&](std::size_t lo, std::size_t hi) {
       for (std::size_t b = lo; b < hi; b += run)
-        scan_run(b, std::min(run, hi - b), t, b == 0 && lo != d.head, scan, wrap);
+        scan_run(b, std::min(run, hi - b), t, ring, b == 0 && lo != d.head, scan, wrap);
     });
 #endif
   }
   // The cluster scan of bodies b .. b + n - 1 (equal masses, n <= run): positions
   // at t wrapped together, then the pairs. closes: body b closes the chain.
-  void scan_run(std::size_t b, std::size_t n, double t, bool closes, ClusterScan& scan,
+  void scan_run(std::size_t b, std::size_t n, double t, bool ring, bool closes, ClusterScan& scan,
                 PeriodWrap& wrap) const {
     std::array<double, run> x, w, v;
     for (std::size_t k = 0; k < n; ++k) x[k] = e_.body_[b + k].at(t), v[k] = e_.body_[b + k].v;
-    if (spec_.ring) wrap.wrap_all(x.data(), w.data(), n);
-    scan.add_run(spec_.ring ? w.data() : x.data(), v.data(), n, b, closes);
+    if (ring) wrap.wrap_all(x.data(), w.data(), n);
+    scan.add_run(ring ? w.data() : x.data(), v.data(), e_.m0_, n, b, closes);
   }
   static constexpr std::size_t run = 256;  // bodies per run of the scan (a multiple of 4)
   // f(lo, hi) for the index ranges of d's bodies (equal masses): one, or two
@@ -171,17 +173,17 @@ class DomainSampler {
     f(d.head, e_.n_);
     f(0, d.tail + 1);
   }
-  ClusterPart sorted_of(const Domain& d, double t, const ClusterPart& streamed) const {
-    std::vector<std::pair<double, double>> wv;
+  ClusterPart sorted_of(const Domain& d, double t, const SampleSpec& spec,
+                        const ClusterPart& streamed) const {
+    std::vector<ScanBody> bodies;
     for_each(d, [&](std::size_t i) {
       const double x = e_.body_[i].at(t);
-      wv.push_back({spec_.ring ? wrap_into(x, spec_.L) : x, e_.body_[i].v});
+      bodies.push_back({spec.ring ? wrap_into(x, spec.L) : x, e_.body_[i].v, e_.mass(i)});
     });
-    return sorted_part(std::move(wv), streamed.first_index, streamed.last_index, spec_);
+    return sorted_part(std::move(bodies), streamed.first_index, streamed.last_index, spec);
   }
 
   const Engine& e_;
-  SampleSpec spec_;
 };
 
 // The samples of a run of sub-windows: the times, each domain's part of the
@@ -189,12 +191,15 @@ class DomainSampler {
 // State of one sub-window only (nothing is kept across sub-windows but `next`).
 class SampleBatch {
  public:
-  // on_sample(t, moments, clusters): clusters is 0 unless spec.clusters.
+  // on_sample(t, moments, clusters): clusters is 0 unless spec_at(t).clusters.
   using OnSample = std::function<void(double, const SampleMoments&, std::size_t)>;
-  SampleBatch(const std::vector<double>& times, const SampleSpec& spec, OnSample on_sample)
-      : times_(times), spec_(spec), on_sample_(std::move(on_sample)) {}
+  // spec_at(t): what the sample at time t measures (asked once per time).
+  template <class SpecAt>
+  SampleBatch(const std::vector<double>& times, SpecAt&& spec_at, OnSample on_sample)
+      : times_(times), on_sample_(std::move(on_sample)) {
+    for (double t : times) specs_.push_back(spec_at(t));
+  }
 
-  const SampleSpec& spec() const { return spec_; }
   // Samples not yet taken.
   bool pending() const { return next_ < times_.size(); }
   // The samples of a sub-window that runs to `end` (inclusive or not): those
@@ -210,11 +215,12 @@ class SampleBatch {
   }
   std::size_t count() const { return count_; }
   double time(std::size_t k) const { return times_[first_ + k]; }
+  const SampleSpec& spec(std::size_t k) const { return specs_[first_ + k]; }
   // Domain d's part of sample k, taken by `member`.
   template <class Sampler>
   void take(const Sampler& sampler, Domain& dom, std::size_t d, std::size_t k, std::size_t member) {
     std::optional<ClusterPart> sorted;
-    parts_[d * count_ + k] = sampler.take(dom, time(k), sorted);
+    parts_[d * count_ + k] = sampler.take(dom, time(k), spec(k), sorted);
     if (sorted) sorted_[member].push_back({d, k, *sorted});
   }
   // Sample k's part of domain d.
@@ -224,7 +230,7 @@ class SampleBatch {
     for (std::size_t d = 0; d < domains_; ++d)
       if (!part(d, k).taken) return;
     const SampleMoments moments = combine_moments(&part(0, k), domains_, count_);
-    on_sample_(time(k), moments, spec_.clusters ? clusters(k, moments.bodies) : 0);
+    on_sample_(time(k), moments, spec(k).clusters ? clusters(k, moments.bodies) : 0);
   }
   void close() { next_ = first_ + count_; }
 
@@ -238,16 +244,16 @@ class SampleBatch {
   std::size_t clusters(std::size_t k, std::size_t bodies) {
     std::vector<const ClusterPart*> parts(domains_);
     for (std::size_t d = 0; d < domains_; ++d) parts[d] = &part(d, k).clusters;
-    const ClusterCount streamed = count_clusters(parts, bodies, spec_);
+    const ClusterCount streamed = count_clusters(parts, bodies, spec(k));
     if (streamed.ordered) return streamed.count;
     for (const std::vector<Sorted>& member : sorted_)
       for (const Sorted& s : member)
         if (s.sample == k) parts[s.domain] = &s.part;
-    return count_clusters(parts, bodies, spec_).count;
+    return count_clusters(parts, bodies, spec(k)).count;
   }
 
   const std::vector<double>& times_;
-  SampleSpec spec_;
+  std::vector<SampleSpec> specs_;  // of each time
   OnSample on_sample_;
   std::size_t next_ = 0, first_ = 0, count_ = 0, domains_ = 0;
   std::vector<StretchPart> parts_;           // [domain * count + sample]

@@ -25,13 +25,13 @@ Counters hull_counters(double initial_energy, const StickyHull& hull) {
   return {merges, 0, 0, merges, initial_energy - energy};
 }
 
-// The run from `build(t)`, the hull of the initial bodies at t, called once;
-// `energy()` their kinetic energy, read after it.
+// The run from `build(t)`, the hull of the n initial bodies of mean mass
+// mean_mass at t, called once; `energy()` their kinetic energy, read after it.
 template <class Build, class Energy>
-RunResult run_hull(std::size_t n, Build&& build, Energy&& energy, double L, bool ring,
+RunResult run_hull(std::size_t n, double mean_mass, Build&& build, Energy&& energy, double L, bool ring,
                    const ParticleParams& p, const StateSink* sink) {
   RunWatch watch{p, {}};
-  Recorder recorder(p, n, L, ring, sink);
+  Recorder recorder(p, n, L, ring, mean_mass, sink);
   // Built from the bodies at the first stop, then advanced from its own clusters.
   std::optional<StickyHull> hull;
   auto reach = [&](double t) -> const StickyHull& {
@@ -64,8 +64,9 @@ RunResult simulate_hull(const Bodies& initial, double L, bool ring, const Partic
   auto build = [&](double t) {
     return ring ? StickyHull::ring(initial, L, t) : StickyHull::line(initial, t);
   };
+  const double mean_mass = total_mass(initial) / static_cast<double>(initial.size());
   return run_hull(
-      initial.size(), build, [energy] { return energy; }, L, ring, p, sink);
+      initial.size(), mean_mass, build, [energy] { return energy; }, L, ring, p, sink);
 }
 
 // The kinetic energy is summed as the bodies pass, in their order (as kinetic_energy).
@@ -77,11 +78,12 @@ RunResult simulate_hull(InitialStream& initial, double L, bool ring, const Parti
     for (std::size_t i = 0; i < count; ++i) energy += 0.5 * m[i] * v[i] * v[i];
   };
   const std::size_t n = initial.size();
+  const double mean_mass = initial.mean_mass();
   auto build = [&](double t) {
     return ring ? StickyHull::ring(n, read, L, t) : StickyHull::line(n, read, t);
   };
   return run_hull(
-      n, build, [&energy] { return energy; }, L, ring, p, sink);
+      n, mean_mass, build, [&energy] { return energy; }, L, ring, p, sink);
 }
 
 }  // namespace shockgas::particles::detail

@@ -35,16 +35,25 @@ std::vector<double> sample_times(double t_end, std::size_t samples) {
   return t;
 }
 
-Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, const StateSink* sink)
-    : p_(p), L_(L), ring_(ring), sink_(sink) {
+Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, double mean_particle_mass,
+                   const StateSink* sink)
+    : p_(p),
+      L_(L),
+      ring_(ring),
+      sink_(sink),
+      merges_only_(collision_rule(p).merges_only()),
+      spacing_(L / static_cast<double>(n)),
+      counted_(mean_particle_mass) {
   samples_ = sample_times(p.t_end, p.samples);
   snapshots_ = sorted_copy(p.snapshots);
   if (p.spacetime) frames_ = frame_times(p.t_end, p.spacetime_frames);
-  criteria_ = collision_rule(p).merges_only() ? merged_bodies_criteria()
-                                              : default_cluster_criteria(p.delta, L / static_cast<double>(n));
   out_.histogram.zmax = p.histogram_zmax;
   out_.histogram.bins = p.histogram_bins;
   if (p.spacetime) out_.spacetime.labels = spacetime_labels(n, p.spacetime_particles);
+}
+
+ClusterCriteria Recorder::criteria(double t) const {
+  return merges_only_ ? merged_bodies_criteria() : default_cluster_criteria(p_.delta, spacing_, t);
 }
 
 double Recorder::next_stop() const {
@@ -67,12 +76,12 @@ void Recorder::observe(double t, const ChainView& s, const Counters& c) {
 // Every sample due at t records the same values: they are measured once.
 void Recorder::sample(double t, const ChainView& s, const Counters& c, std::size_t copies) {
   std::optional<ClusterCounter> counter;
-  if (p_.clusters) counter.emplace(L_, ring_, criteria_);
+  if (p_.clusters) counter.emplace(L_, ring_, criteria(t), counted_);
   const ChainMoments moments = chain_moments(s, counter ? &*counter : nullptr);
   const HistogramSpec spec{p_.histogram_bins, p_.histogram_zmax, std::cbrt(t)};
   std::vector<double> density;
   const double T = chain_temperature(s, moments, spec, spec.bins > 0 ? &density : nullptr);
-  const double clusters = counter ? static_cast<double>(count_clusters(s, *counter)) : 0.0;
+  const double clusters = counter ? static_cast<double>(count_clusters(t, s, *counter)) : 0.0;
   record(t, {T, moments.mean(), static_cast<double>(s.size()), clusters}, c, copies, density);
 }
 
@@ -130,10 +139,11 @@ void Recorder::snapshot(double t, const ChainView& s, std::size_t copies) {
 
 // The streamed count, or (rounding left the chain out of order) the count of
 // the state read in order (SortedState), as find_clusters would count it.
-std::size_t Recorder::count_clusters(const ChainView& s, ClusterCounter& counter) const {
+std::size_t Recorder::count_clusters(double t, const ChainView& s, ClusterCounter& counter) const {
   if (const std::optional<std::size_t> n = counter.count()) return *n;
   std::size_t clusters = 0;
-  visit_clusters(SortedState(s, L_, ring_), ring_ ? L_ : 0.0, criteria_, [&](const Cluster&) { ++clusters; });
+  visit_clusters(SortedState(s, L_, ring_), ring_ ? L_ : 0.0, criteria(t),
+                 [&](const Cluster& c) { clusters += counted_.counts(c); });
   return clusters;
 }
 

@@ -35,9 +35,11 @@ class Recorder {
   static constexpr double done = std::numeric_limits<double>::infinity();
 
   // n: original particles; L: ring length or line extent (for the cluster
-  // criteria). With a sink, the snapshots and the final state go to it, sorted
-  // (sorted_state.hpp), instead of into RunResult.
-  Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, const StateSink* sink = nullptr);
+  // criteria); mean_particle_mass: their M / N (MultiParticleRule). With a sink,
+  // the snapshots and the final state go to it, sorted (sorted_state.hpp),
+  // instead of into RunResult.
+  Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, double mean_particle_mass,
+           const StateSink* sink = nullptr);
 
   // The next time the run must reach and observe; `done` after the last.
   double next_stop() const;
@@ -48,8 +50,8 @@ class Recorder {
   // other record (snapshot, frame), without duplicates; none when a histogram is
   // asked for (it bins about the mean of the whole state).
   std::vector<double> samples_in_parts() const;
-  // What those parts measure.
-  SampleSpec sample_spec() const { return {p_.clusters, criteria_, L_, ring_}; }
+  // What those parts measure at time t.
+  SampleSpec sample_spec(double t) const { return {p_.clusters, criteria(t), counted_, L_, ring_}; }
   // Records the samples due at t from their combined parts.
   void observe_sample(double t, const SampleMoments& moments, std::size_t clusters, const Counters& c);
   // Moves the records out, with the final state at stop.time and how the run ended.
@@ -67,7 +69,10 @@ class Recorder {
   };
   void record(double t, const Row& row, const Counters& c, std::size_t copies,
               const std::vector<double>& density);
-  std::size_t count_clusters(const ChainView& s, ClusterCounter& counter) const;
+  // The cluster criteria at time t: none joined where every collision merges
+  // (the bodies are the clusters), else default_cluster_criteria(delta, L / n, t).
+  ClusterCriteria criteria(double t) const;
+  std::size_t count_clusters(double t, const ChainView& s, ClusterCounter& counter) const;
   void snapshot(double t, const ChainView& s, std::size_t copies);
   void frame(double t, const ChainView& s);
   double wrap(double x) const;
@@ -76,7 +81,9 @@ class Recorder {
   double L_;
   bool ring_;
   const StateSink* sink_;
-  ClusterCriteria criteria_;
+  bool merges_only_;
+  double spacing_;  // L / n [length]
+  MultiParticleRule counted_;
   std::vector<double> samples_, snapshots_, frames_;
   std::size_t next_sample_ = 0, next_snapshot_ = 0, next_frame_ = 0;
   RunResult out_;

@@ -12,7 +12,8 @@
 //    for a run inside the period of its first body, x - L k (its clamp to 0
 //    outside [0, L) is checked, once per period, not to act there; see sweep_run);
 //  * pairs as add_run: gap w - w_left, join when gap < max_gap and
-//    |v - v_left| < max_dv (ClusterCriteria::joins);
+//    |v - v_left| < max_dv (ClusterCriteria::joins); bodies that join neither
+//    neighbour from the same masks (RunPairs);
 //  * velocity sums in four lanes in the order of DomainSampler's moments: body k
 //    of a range into lane k mod 4, the last (size mod 4) bodies of the range
 //    into lane 0, one after the other.
@@ -49,11 +50,13 @@ using LaneSums = double[4];
 enum class RunWrap { none, first, shifted };
 
 // What the blocks of four bodies leave to the rest of a run: the next body,
-// the joins counted, whether a pair dropped (or, shifted, a position left the
-// period), and the last body's w and v.
+// the joins counted, the bodies from 1 on that join neither neighbour (body
+// next - 1 not yet: its right pair is the rest's), whether the last pair joins
+// (true before any: body 0's left pair is not the run's), whether a pair
+// dropped (or, shifted, a position left the period), and the last body's w and v.
 struct BlockSweep {
-  std::size_t next = 1, joins = 0;
-  bool off = false;
+  std::size_t next = 1, joins = 0, unjoined = 0;
+  bool last_joins = true, off = false;
   double w_l = 0, v_l = 0;
 };
 
@@ -79,6 +82,8 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
   __m256d sums = _mm256_set_pd(s[0], s[3], s[2], s[1]);  // lanes of bodies 1, 2, 3, 4 mod 4
   __m256d w_prev = _mm256_set1_pd(w0), v_prev = _mm256_set1_pd(v0), off = _mm256_setzero_pd();
   __m256i joined = _mm256_setzero_si256();  // minus the join masks: counts
+  __m256i held = _mm256_setzero_si256();    // bodies k - 1 .. k + 2 joined on either side: minus the masks
+  __m256d join_prev = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));  // pair k - 1 in the top lane
   // Bodies k - 1 .. k + 2 from body k - 1 (the last of before) and k .. k + 3 (now).
   auto shifted_in = [](__m256d before, __m256d now) {
     return _mm256_shuffle_pd(_mm256_permute2f128_pd(before, now, 0x21), now, 0b0101);
@@ -103,16 +108,25 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
     const __m256d join =
         _mm256_and_pd(_mm256_cmp_pd(gap, max_gap, _CMP_LT_OQ), _mm256_cmp_pd(dv, max_dv, _CMP_LT_OQ));
     joined = _mm256_sub_epi64(joined, _mm256_castpd_si256(join));
-    w_prev = w, v_prev = v;
+    held = _mm256_sub_epi64(held, _mm256_castpd_si256(_mm256_or_pd(join, shifted_in(join_prev, join))));
+    w_prev = w, v_prev = v, join_prev = join;
   }
   alignas(32) double lane[4];
   _mm256_store_pd(lane, sums);
   s[1] = lane[0], s[2] = lane[1], s[3] = lane[2], s[0] = lane[3];
-  alignas(32) std::uint64_t count[4];
+  alignas(32) std::uint64_t count[4], held_count[4];
   _mm256_store_si256(reinterpret_cast<__m256i*>(count), joined);
+  _mm256_store_si256(reinterpret_cast<__m256i*>(held_count), held);
   alignas(32) double last_w[4], last_v[4];
   _mm256_store_pd(last_w, w_prev), _mm256_store_pd(last_v, v_prev);
-  return {k, count[0] + count[1] + count[2] + count[3], _mm256_movemask_pd(off) != 0, last_w[3], last_v[3]};
+  const std::size_t unjoined = (k - 1) - (held_count[0] + held_count[1] + held_count[2] + held_count[3]);
+  return {k,
+          count[0] + count[1] + count[2] + count[3],
+          unjoined,
+          (_mm256_movemask_pd(join_prev) & 8) != 0,
+          _mm256_movemask_pd(off) != 0,
+          last_w[3],
+          last_v[3]};
 }
 #else
 template <bool Shifted>
@@ -125,6 +139,8 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
   __m128d w_prev = _mm_set1_pd(w0), v_prev = _mm_set1_pd(v0);          // body k - 1 in the high half
   __m128d off = _mm_setzero_pd();
   __m128i joined = _mm_setzero_si128();  // minus the join masks: counts
+  __m128i held = _mm_setzero_si128();    // bodies k - 1, k joined on either side: minus the masks
+  __m128d join_prev = _mm_castsi128_pd(_mm_set1_epi64x(-1));  // pair k - 1 in the high half
   // Bodies k, k + 1: positions at t (wrapped) and velocities.
   auto load = [&](std::size_t k, __m128d& w, __m128d& v) {
     const __m128d a = _mm_loadu_pd(q + 3 * k), b = _mm_loadu_pd(q + 3 * k + 2);
@@ -146,6 +162,8 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
     off = _mm_or_pd(off, gap);
     const __m128d join = _mm_and_pd(_mm_cmplt_pd(gap, max_gap), _mm_cmplt_pd(dv, max_dv));
     joined = _mm_sub_epi64(joined, _mm_castpd_si128(join));
+    held = _mm_sub_epi64(held, _mm_castpd_si128(_mm_or_pd(join, _mm_shuffle_pd(join_prev, join, 1))));
+    join_prev = join;
   };
   std::size_t k = 1;
   for (; k + 4 <= n; k += 4) {  // k = 1 mod 4
@@ -160,9 +178,15 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
   }
   _mm_storel_pd(&s[1], s12), _mm_storeh_pd(&s[2], s12);
   _mm_storel_pd(&s[3], s30), _mm_storeh_pd(&s[0], s30);
-  alignas(16) std::uint64_t count[2];
+  alignas(16) std::uint64_t count[2], held_count[2];
   _mm_store_si128(reinterpret_cast<__m128i*>(count), joined);
-  return {k, count[0] + count[1], _mm_movemask_pd(off) != 0, _mm_cvtsd_f64(_mm_unpackhi_pd(w_prev, w_prev)),
+  _mm_store_si128(reinterpret_cast<__m128i*>(held_count), held);
+  return {k,
+          count[0] + count[1],
+          (k - 1) - (held_count[0] + held_count[1]),
+          (_mm_movemask_pd(join_prev) & 2) != 0,
+          _mm_movemask_pd(off) != 0,
+          _mm_cvtsd_f64(_mm_unpackhi_pd(w_prev, w_prev)),
           _mm_cvtsd_f64(_mm_unpackhi_pd(v_prev, v_prev))};
 }
 #endif
@@ -173,8 +197,8 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
 // is checked; in the first period x0 and the last are, and no drop means none
 // in between lies outside them (w = x there).
 template <RunWrap Wrap, class Body>
-bool sweep_run_as(const Body* p, std::size_t n, double t, std::size_t index, bool closes, LaneSums& s,
-                  ClusterScan& scan, const PeriodWrap::Period& period) {
+bool sweep_run_as(const Body* p, std::size_t n, double t, double m, std::size_t index, bool closes,
+                  LaneSums& s, ClusterScan& scan, const PeriodWrap::Period& period) {
   static_assert(sizeof(Body) == 3 * sizeof(double), "Body is x, v, t");
   constexpr bool shifted = Wrap == RunWrap::shifted;
   const ClusterCriteria& c = scan.criteria();
@@ -189,32 +213,38 @@ bool sweep_run_as(const Body* p, std::size_t n, double t, std::size_t index, boo
     if constexpr (shifted) r.off |= !(x >= period.lo && x < period.hi);
     const double w = shifted ? x - period.shift : x;
     r.off |= w < r.w_l;
-    r.joins += c.joins(w - r.w_l, v - r.v_l);
+    const bool joins = c.joins(w - r.w_l, v - r.v_l);
+    r.joins += joins, r.unjoined += !r.last_joins && !joins, r.last_joins = joins;
     r.w_l = w, r.v_l = v;
   }
   if constexpr (Wrap == RunWrap::first) r.off |= !(x0 >= period.lo && r.w_l < period.hi);
   if (r.off) return false;
-  scan.add(w0, v0, index, closes);
-  if (n > 1) scan.add_clean(r.joins, r.w_l, r.v_l, index + n - 1);
+  scan.add(w0, v0, m, index, closes);
+  if (n == 1) return true;
+  // The pair (0, 1) once more, as the blocks took it (no drop: w - w_left).
+  const double x1 = p[1].at(t);
+  const bool first_joins = c.joins((shifted ? x1 - period.shift : x1) - w0, p[1].v - v0);
+  scan.add_clean({r.joins, r.unjoined, first_joins, r.last_joins}, m, r.w_l, r.v_l, index + n - 1);
   return true;
 }
 
-// Bodies p[0 .. n) (n >= 1; n a multiple of 4 unless the run ends its range),
-// index: that of p[0]; closes: p[0] closes the chain order (ClusterScan::add).
-// Adds the velocities to s; feeds the bodies to scan unless it returns false.
+// Bodies p[0 .. n) of mass m (n >= 1; n a multiple of 4 unless the run ends its
+// range), index: that of p[0]; closes: p[0] closes the chain order
+// (ClusterScan::add). Adds the velocities to s; feeds the bodies to scan unless
+// it returns false.
 template <bool Ring, class Body>
-bool sweep_run(const Body* p, std::size_t n, double t, std::size_t index, bool closes, LaneSums& s,
+bool sweep_run(const Body* p, std::size_t n, double t, double m, std::size_t index, bool closes, LaneSums& s,
                ClusterScan& scan, PeriodWrap& wrap) {
   if constexpr (!Ring) {
-    return sweep_run_as<RunWrap::none>(p, n, t, index, closes, s, scan, {});
+    return sweep_run_as<RunWrap::none>(p, n, t, m, index, closes, s, scan, {});
   } else {
     // x - shift is monotone in x: when lo - shift >= 0 and hi - shift < L no x
     // in [lo, hi) is clamped. In the first period (shift 0, lo > 0), x - shift
     // is x.
     const PeriodWrap::Period period = wrap.period_of(p[0].at(t));
     if (period.lo - period.shift >= 0 && period.hi - period.shift < period.L) {
-      if (period.shift == 0) return sweep_run_as<RunWrap::first>(p, n, t, index, closes, s, scan, period);
-      return sweep_run_as<RunWrap::shifted>(p, n, t, index, closes, s, scan, period);
+      if (period.shift == 0) return sweep_run_as<RunWrap::first>(p, n, t, m, index, closes, s, scan, period);
+      return sweep_run_as<RunWrap::shifted>(p, n, t, m, index, closes, s, scan, period);
     }
     for (std::size_t k = 0; k < n; ++k) s[k < (n & ~std::size_t{3}) ? k % 4 : 0] += p[k].v;
     return false;

@@ -141,15 +141,15 @@ void restore_run(RunStateReader& in, detail::EventEngine<Linked>& engine,
   if (in.remaining() != 0) throw RunError("a saved run state: bytes after its end");
 }
 
-// One run of the engine from n bodies written by fill (see EventEngine), or
-// continued from a saved state (checkpoints->resume).
+// One run of the engine from n bodies written by fill (see EventEngine), their
+// mean mass mean_mass, or continued from a saved state (checkpoints->resume).
 template <bool Linked, class Fill>
-RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
+RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses, double mean_mass,
                      const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink,
                      const RunCheckpoints& checkpoints) {
   using Engine = detail::EventEngine<Linked>;
   const bool windows = p.schedule != Schedule::global && windows_possible(n, equal_masses, p);
-  detail::Recorder recorder(p, n, L, ring, sink);
+  detail::Recorder recorder(p, n, L, ring, mean_mass, sink);
   RunStateReader* resume = checkpoints.resume;
   Engine engine =
       resume ? Engine(n, L, ring, collision_rule(p)) : Engine(n, L, ring, collision_rule(p), fill);
@@ -173,10 +173,11 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
       // Samples measured per domain on the way, as long as the windows run.
       const std::vector<double> times = recorder.samples_in_parts();
       if (!times.empty()) {
-        detail::SampleBatch batch(times, recorder.sample_spec(),
-                                  [&](double ts, const detail::SampleMoments& m, std::size_t clusters) {
-                                    recorder.observe_sample(ts, m, clusters, counters(engine));
-                                  });
+        detail::SampleBatch batch(
+            times, [&](double ts) { return recorder.sample_spec(ts); },
+            [&](double ts, const detail::SampleMoments& m, std::size_t clusters) {
+              recorder.observe_sample(ts, m, clusters, counters(engine));
+            });
         const detail::EngineStop s = scheduler->run_sampled(times.back(), watch, batch);
         stop = stop_of(s, engine.now(), engine.last_position(), watch.reason);
         if (s != detail::EngineStop::reached) break;
@@ -196,12 +197,12 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
 }
 
 template <class Fill>
-RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses,
+RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal_masses, double mean_mass,
                      const ParticleParams& p, const ProgressCallback& progress, const StateSink* sink,
                      const RunCheckpoints& checkpoints) {
   if (linked(collision_rule(p), equal_masses))
-    return run_events<true>(n, fill, L, ring, equal_masses, p, progress, sink, checkpoints);
-  return run_events<false>(n, fill, L, ring, equal_masses, p, progress, sink, checkpoints);
+    return run_events<true>(n, fill, L, ring, equal_masses, mean_mass, p, progress, sink, checkpoints);
+  return run_events<false>(n, fill, L, ring, equal_masses, mean_mass, p, progress, sink, checkpoints);
 }
 
 void check_params(std::size_t n, const ParticleParams& p) {
@@ -219,8 +220,8 @@ RunResult run_stream(InitialStream& stream, double L, const Bodies* bodies, cons
   auto fill = [&](std::size_t, std::size_t count, double* x, double* v, double* m) {
     stream.next(count, x, v, m);
   };
-  return run_events(stream.size(), fill, L, p.geometry == Geometry::ring, equal, p, progress, sink,
-                    checkpoints);
+  return run_events(stream.size(), fill, L, p.geometry == Geometry::ring, equal, stream.mean_mass(), p,
+                    progress, sink, checkpoints);
 }
 
 // The hull solver has no safe points inside a run (run_state.hpp).

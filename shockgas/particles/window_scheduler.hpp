@@ -323,7 +323,7 @@ class WindowScheduler {
     const std::size_t samples = batch ? batch->count() : 0;
     for (Domain& d : domains_) d.sample = 0, d.limit = samples > 0 ? batch->time(0) : limit;
     std::optional<DomainSampler<Linked>> sampler;
-    if (samples > 0) sampler.emplace(e_, batch->spec());
+    if (samples > 0) sampler.emplace(e_);
     // Takes the parts of the samples domain d has reached; whether it has a
     // collision before its next limit.
     auto ready = [&](Domain& d, std::size_t member) {

@@ -11,6 +11,7 @@
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/core/random.hpp"
 #include "shockgas/particles/chain_view.hpp"
+#include "shockgas/particles/cluster_finder.hpp"
 
 namespace shockgas::particles::detail::testing {
 
@@ -54,6 +55,19 @@ inline Bodies ref_sorted(const Chain& s, bool ring) {
   Bodies out;
   for (std::size_t k : order) out.push_back(x[k], s.v[k], s.m[k]);
   return out;
+}
+
+// M / N of the chain's particles: what the run's MultiParticleRule takes.
+inline double mean_particle_mass(const Chain& s) {
+  return std::accumulate(s.m.begin(), s.m.end(), 0.0) / static_cast<double>(s.particles);
+}
+
+// The clusters of the sorted copy (find_clusters) that the rule counts.
+inline std::size_t ref_counted(const Chain& s, bool ring, const ClusterCriteria& criteria,
+                               const MultiParticleRule& rule) {
+  const std::vector<Cluster> clusters = find_clusters(ref_sorted(s, ring), ring ? s.L : 0.0, criteria);
+  return static_cast<std::size_t>(
+      std::count_if(clusters.begin(), clusters.end(), [&](const Cluster& k) { return rule.counts(k); }));
 }
 
 inline std::pair<double, double> ref_mean_and_temperature(const Chain& s) {

@@ -1,7 +1,8 @@
 // The observables streamed over the chain against the path they replace, kept
 // here as the reference: copy the state, wrap it, rotate and sort it
-// (sorted_bodies), run find_clusters on the copy and sum over the copy. Equal to
-// the bit: same sums in the same order, same cluster criteria on the same numbers.
+// (sorted_bodies), run find_clusters on the copy (the clusters MultiParticleRule
+// counts) and sum over the copy. Equal to the bit: same sums in the same order,
+// same cluster criteria and rule on the same numbers.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -68,7 +69,7 @@ ParticleParams record_everything(double delta) {
 
 // The recorder fed the same state at every stop.
 RunResult record(const Chain& s, const ParticleParams& p, bool ring) {
-  Recorder recorder(p, s.particles, s.L, ring);
+  Recorder recorder(p, s.particles, s.L, ring, mean_particle_mass(s));
   for (double t = recorder.next_stop(); t != Recorder::done; t = recorder.next_stop())
     recorder.observe(t, view_of(s), Counters{});
   return recorder.finish(view_of(s), RunStop{}, Counters{});
@@ -93,18 +94,21 @@ void expect_bodies_equal(const Bodies& a, const Bodies& b) {
 
 void expect_matches_reference(const Chain& s, const ParticleParams& p, bool ring) {
   const RunResult out = record(s, p, ring);
-  const ClusterCriteria criteria =
-      p.r == 0 ? merged_bodies_criteria()  // every collision merges (collision.hpp)
-               : default_cluster_criteria(p.delta, s.L / static_cast<double>(s.particles));
+  // The criteria at the sample's time.
+  auto criteria = [&](double t) {
+    return p.r == 0 ? merged_bodies_criteria()  // every collision merges (collision.hpp)
+                    : default_cluster_criteria(p.delta, s.L / static_cast<double>(s.particles), t);
+  };
   const Bodies sorted = ref_sorted(s, ring);
   const auto [mean, T] = ref_mean_and_temperature(s);
-  const double clusters = static_cast<double>(find_clusters(sorted, ring ? s.L : 0.0, criteria).size());
+  const MultiParticleRule rule(mean_particle_mass(s));
   ASSERT_EQ(out.series.size(), p.samples);
   for (std::size_t k = 0; k < p.samples; ++k) {
     EXPECT_EQ(out.series.T[k], T);
     EXPECT_EQ(out.series.mean_v[k], mean);
     EXPECT_EQ(out.series.n_bodies[k], static_cast<double>(s.x.size()));
-    EXPECT_EQ(out.series.n_clusters[k], clusters);
+    EXPECT_EQ(out.series.n_clusters[k],
+              static_cast<double>(ref_counted(s, ring, criteria(out.series.t[k]), rule)));
     const std::vector<double> row = ref_histogram(s, out.histogram.t[k], p.histogram_bins, p.histogram_zmax);
     EXPECT_TRUE(std::equal(row.begin(), row.end(), out.histogram.density.begin() + k * p.histogram_bins));
   }
@@ -159,25 +163,30 @@ TEST(PeriodWrap, EqualsWrapIntoToTheBit) {
   }
 }
 
-// The counter alone, under criteria wide enough to join a whole ring.
+// The counter alone, under criteria wide enough to join a whole ring, and a
+// rule under which none, some or all bodies are heavy (masses 0.5 .. 3, or 1).
 TEST(ClusterCounter, EqualsFindClustersOnTheSortedCopy) {
   Rng rng(27);
-  std::size_t whole_rings = 0;
+  std::size_t whole_rings = 0, lone = 0, heavy_lone = 0;
   for (std::size_t bodies : {1u, 2u, 3u, 5u, 40u}) {
     for (int trial = 0; trial < 50; ++trial) {
       for (bool ring : {true, false}) {
         const Chain c = random_chain(rng, bodies, 0.02, ring);
         const ClusterCriteria criteria{rng.uniform(0.0, 4.0), rng.uniform(0.0, 0.3)};
-        ClusterCounter counter(c.L, ring, criteria);
+        const MultiParticleRule rule(trial % 5 == 0 ? 0.3 : rng.uniform(0.2, 2.5));
+        ClusterCounter counter(c.L, ring, criteria, rule);
         view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); }, Fields::all);
-        const std::size_t expected = find_clusters(ref_sorted(c, ring), ring ? c.L : 0.0, criteria).size();
+        const std::vector<Cluster> all = find_clusters(ref_sorted(c, ring), ring ? c.L : 0.0, criteria);
         ASSERT_TRUE(counter.count().has_value());
-        EXPECT_EQ(*counter.count(), expected);
-        whole_rings += ring && bodies > 1 && expected == 1;
+        EXPECT_EQ(*counter.count(), ref_counted(c, ring, criteria, rule));
+        whole_rings += ring && bodies > 1 && all.size() == 1;
+        for (const Cluster& k : all) lone += k.count == 1, heavy_lone += k.count == 1 && rule.heavy(k.m);
       }
     }
   }
-  EXPECT_GT(whole_rings, 0u);  // the fully joined ring was exercised
+  EXPECT_GT(whole_rings, 0u);          // the fully joined ring was exercised
+  EXPECT_GT(lone - heavy_lone, 100u);  // lone light bodies were left out
+  EXPECT_GT(heavy_lone, 100u);         // ... and lone heavy ones counted
 }
 
 // Rounding can leave two touching bodies out of order in x (a second drop of the
@@ -194,7 +203,7 @@ TEST(ChainObservables, MisorderedChainsFallBackToTheSortedCopy) {
       const bool across = ring && trial % 2 == 1;
       const std::size_t left = misorder(c, across, rng);
       const std::size_t k = across ? 0 : left + 1;
-      ClusterCounter counter(c.L, ring, default_cluster_criteria(0.02, 1.0));
+      ClusterCounter counter(c.L, ring, default_cluster_criteria(0.02, 1.0), MultiParticleRule(1.0));
       view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); }, Fields::all);
       if (!ring || ref_wrap(c.x[k], c.L) < ref_wrap(c.x[left], c.L)) {
         EXPECT_FALSE(counter.count().has_value());
@@ -310,14 +319,21 @@ TEST(SortedState, ARoundingDropWithoutACrossingKeepsTheStart) {
   expect_read_without_a_copy(c);
 }
 
-// Merging gas (r = 0, delta = 0): every body is its own cluster.
-TEST(ChainObservables, MergedBodiesAreCountedOneEach) {
+// Merging gas (r = 0, delta = 0): every body is its own cluster, counted when
+// heavier than 1.5 M / N (a merged body of unit masses; the chain's masses
+// are 1 or 0.5 .. 3).
+TEST(ChainObservables, MergedBodiesAreCountedWhenHeavy) {
   Rng rng(24);
   ParticleParams p = record_everything(0.0);
   p.r = 0.0;
   const Chain c = random_chain(rng, 2000, 0.02, true);
   expect_matches_reference(c, p, true);
-  EXPECT_EQ(record(c, p, true).series.n_clusters.back(), 2000.0);
+  const double heavy = 1.5 * mean_particle_mass(c);
+  const double counted =
+      static_cast<double>(std::count_if(c.m.begin(), c.m.end(), [&](double m) { return m > heavy; }));
+  EXPECT_GT(counted, 0.0);
+  EXPECT_LT(counted, 2000.0);
+  EXPECT_EQ(record(c, p, true).series.n_clusters.back(), counted);
 }
 
 // Real states: the engine's snapshots (sorted, wrapped) turned back into chains,

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "hull_agreement.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/params.hpp"
@@ -77,13 +79,18 @@ TEST(HullModel, SameObservablesAsTheEngine) {
   for (std::size_t k = 0; k < 8; ++k) {
     EXPECT_EQ(hull.series.n_bodies[k], events.series.n_bodies[k]);  // same partition
     EXPECT_EQ(hull.series.merges[k], events.series.merges[k]);
-    EXPECT_EQ(hull.series.n_clusters[k], hull.series.n_bodies[k]);  // merged bodies are the clusters
+    EXPECT_EQ(hull.series.n_clusters[k], events.series.n_clusters[k]);  // same merged bodies
     // Mean-square velocities of O(1) values: rounding ~1e-15, margin for the sum.
     EXPECT_NEAR(hull.series.T[k], events.series.T[k], 1e-12);
     EXPECT_NEAR(hull.series.dissipated[k], events.series.dissipated[k], 1e-9);
   }
   ASSERT_EQ(hull.histogram.density.size(), events.histogram.density.size());
   EXPECT_EQ(hull.final_state.size(), events.final_state.size());
+  // The bodies are the clusters; those of two or more unit masses are counted.
+  const auto merged =
+      std::count_if(hull.final_state.m.begin(), hull.final_state.m.end(), [](double m) { return m >= 2.0; });
+  EXPECT_EQ(hull.series.n_clusters.back(), static_cast<double>(merged));
+  EXPECT_LT(hull.series.n_clusters.front(), hull.series.n_bodies.front());  // lone particles were left out
 }
 
 // The hull has no collisions to count nor safe points: the engine's limits are

@@ -1,9 +1,10 @@
 // The one-pass sweep of a run of equal-mass bodies (sample_sweep.hpp) against
 // the general path it replaces: positions at t into a buffer, wrap_all, add_run,
-// and the velocity sums in four lanes. Equal to the bit: the lane sums, every
-// field of the cluster part (also after runs that went the general way), on
-// rings (near and across period boundaries, far periods) and lines, with
-// bodies at several local times and rounding-sized drops.
+// and the velocity sums in four lanes; and add_run's pairs two at a time
+// against add() body by body. Equal to the bit: the lane sums, every field of
+// the cluster part, the lone bodies too (also after runs that went the general
+// way), on rings (near and across period boundaries, far periods) and lines,
+// with bodies at several local times and rounding-sized drops, light and heavy.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,17 +39,23 @@ void expect_same_part(const ClusterPart& a, const ClusterPart& b) {
   EXPECT_TRUE(same_bits(a.last_v, b.last_v));
   EXPECT_EQ(a.first_index, b.first_index);
   EXPECT_EQ(a.last_index, b.last_index);
+  for (auto lone : {&ClusterPart::lone, &ClusterPart::before_closing}) {
+    EXPECT_EQ((a.*lone).settled, (b.*lone).settled);
+    EXPECT_EQ((a.*lone).head_free, (b.*lone).head_free);
+    EXPECT_EQ((a.*lone).tail_free, (b.*lone).tail_free);
+    EXPECT_EQ((a.*lone).single, (b.*lone).single);
+  }
 }
 
 // The general path for bodies p[0 .. n), and the lane sums as DomainSampler's
 // first moments pass adds them (body k of the range in lane k mod 4, the last
 // n mod 4 in lane 0).
-void general(const Body* p, std::size_t n, double t, std::size_t index, bool closes, double (&s)[4],
+void general(const Body* p, std::size_t n, double t, double m, std::size_t index, bool closes, double (&s)[4],
              ClusterScan& scan, PeriodWrap& wrap, bool ring) {
   std::vector<double> x(n), w(n), v(n);
   for (std::size_t k = 0; k < n; ++k) x[k] = p[k].at(t), v[k] = p[k].v;
   if (ring) wrap.wrap_all(x.data(), w.data(), n);
-  scan.add_run(ring ? w.data() : x.data(), v.data(), n, index, closes);
+  scan.add_run(ring ? w.data() : x.data(), v.data(), m, n, index, closes);
   std::size_t k = 0;
   for (; k + 4 <= n; k += 4) s[0] += p[k].v, s[1] += p[k + 1].v, s[2] += p[k + 2].v, s[3] += p[k + 3].v;
   for (; k < n; ++k) s[0] += p[k].v;
@@ -71,28 +78,36 @@ std::vector<Body> random_bodies(Rng& rng, std::size_t n, double from, double L, 
   return b;
 }
 
-// Runs as DomainSampler cuts a range: of `run` bodies, the last shorter.
+// Runs as DomainSampler cuts a range: of `run` bodies, the last shorter; the
+// first run's first body closes the chain (when the stretch starts with it,
+// it is not counted inside), and the general path against add() body by body.
 void expect_sweep_equals_general(const std::vector<Body>& b, double t, double L, bool ring,
-                                 const ClusterCriteria& criteria, std::size_t& swept) {
-  SampleSpec spec{true, criteria, L, ring};
-  ClusterScan fast(spec), slow(spec);
+                                 const ClusterCriteria& criteria, double m, const MultiParticleRule& rule,
+                                 std::size_t& swept) {
+  SampleSpec spec{true, criteria, rule, L, ring};
+  ClusterScan fast(spec), slow(spec), single(spec);
   PeriodWrap fast_wrap(L), slow_wrap(L);
   double fs[4] = {0, 0, 0, 0}, ss[4] = {0, 0, 0, 0};
   constexpr std::size_t run = 256;
   for (std::size_t lo = 0; lo < b.size(); lo += run) {
     const std::size_t n = std::min(run, b.size() - lo);
     const bool closes = lo == 0;
-    const bool done = ring ? sweep_run<true>(b.data() + lo, n, t, lo, closes, fs, fast, fast_wrap)
-                           : sweep_run<false>(b.data() + lo, n, t, lo, closes, fs, fast, fast_wrap);
+    const bool done = ring ? sweep_run<true>(b.data() + lo, n, t, m, lo, closes, fs, fast, fast_wrap)
+                           : sweep_run<false>(b.data() + lo, n, t, m, lo, closes, fs, fast, fast_wrap);
     if (!done) {
       double unused[4] = {0, 0, 0, 0};
-      general(b.data() + lo, n, t, lo, closes, unused, fast, fast_wrap, ring);
+      general(b.data() + lo, n, t, m, lo, closes, unused, fast, fast_wrap, ring);
     }
     swept += done;
-    general(b.data() + lo, n, t, lo, closes, ss, slow, slow_wrap, ring);
+    general(b.data() + lo, n, t, m, lo, closes, ss, slow, slow_wrap, ring);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double x = b[lo + k].at(t);
+      single.add(ring ? wrap_into(x, L) : x, b[lo + k].v, m, lo + k, closes && k == 0);
+    }
   }
   for (int k = 0; k < 4; ++k) EXPECT_TRUE(same_bits(fs[k], ss[k])) << "lane " << k;
   expect_same_part(fast.part(), slow.part());
+  expect_same_part(slow.part(), single.part());
 }
 
 // Criteria with a pair exactly on an edge (gap < max_gap and |dv| < max_dv are
@@ -126,7 +141,9 @@ TEST(SampleSweep, EqualsTheGeneralPathToTheBit) {
       const ClusterCriteria criteria = trial % 2 == 0
                                            ? default_cluster_criteria(0.02, 1.0)
                                            : criteria_at_a_pair(b, t, L, ring, trial % 3 == 0, rng);
-      expect_sweep_equals_general(b, t, L, ring, criteria, swept);
+      // Bodies of mass 1 against 1.5 M / N = 1.5 (light: lone ones left out) or 0.75 (heavy).
+      const MultiParticleRule rule(trial % 4 == 1 ? 0.5 : 1.0);
+      expect_sweep_equals_general(b, t, L, ring, criteria, 1.0, rule, swept);
       runs += (n + 255) / 256;
     }
   }

@@ -1,7 +1,9 @@
 // Observables measured in parts over stretches of the chain and combined in
 // chain order (stretch_observables.hpp), against the whole chain: the cluster
-// count of ClusterCounter to the bit wherever the chain is in order (however it
-// is cut), and of the stably sorted copy where rounding left it out of order
+// count of ClusterCounter and of find_clusters on the sorted copy filtered by
+// MultiParticleRule to the bit wherever the chain is in order (however it is
+// cut: the seam, the closing pair and lone bodies inside a stretch or at a
+// cut), and of the stably sorted copy where rounding left it out of order
 // inside a stretch; the temperature to rounding.
 #include <gtest/gtest.h>
 
@@ -26,13 +28,13 @@ StretchPart part_of(const Chain& c, const std::vector<std::size_t>& order, std::
                     const SampleSpec& spec, std::optional<ClusterPart>& sorted) {
   StretchPart p;
   ClusterScan scan(spec);
-  std::vector<std::pair<double, double>> wv;
+  std::vector<ScanBody> wv;
   for (std::size_t k = lo; k < hi; ++k) {
     const std::size_t b = order[k];
     const double w = spec.ring ? ref_wrap(c.x[b], c.L) : c.x[b];
     p.mass += c.m[b], p.momentum += c.m[b] * c.v[b], ++p.bodies;
-    scan.add(w, c.v[b], c.first[b], k > lo && c.first[b] < c.first[order[k - 1]]);
-    wv.push_back({w, c.v[b]});
+    scan.add(w, c.v[b], c.m[b], c.first[b], k > lo && c.first[b] < c.first[order[k - 1]]);
+    wv.push_back({w, c.v[b], c.m[b]});
   }
   for (std::size_t k = lo; k < hi; ++k) {
     const double dv = c.v[order[k]] - p.momentum / p.mass;
@@ -63,7 +65,7 @@ Combined combine(const Chain& c, bool ring, const ClusterCriteria& criteria, std
     if (order[k - 1] != keep && std::find(cuts.begin(), cuts.end(), k) == cuts.end()) cuts.push_back(k);
   }
   std::sort(cuts.begin(), cuts.end());
-  const SampleSpec spec{true, criteria, c.L, ring};
+  const SampleSpec spec{true, criteria, MultiParticleRule(mean_particle_mass(c)), c.L, ring};
   std::vector<StretchPart> parts;
   std::vector<std::optional<ClusterPart>> sorted;
   for (std::size_t s = 0; s + 1 < cuts.size(); ++s) {
@@ -83,7 +85,7 @@ Combined combine(const Chain& c, bool ring, const ClusterCriteria& criteria, std
 }
 
 std::optional<std::size_t> streamed_count(const Chain& c, bool ring, const ClusterCriteria& criteria) {
-  ClusterCounter counter(c.L, ring, criteria);
+  ClusterCounter counter(c.L, ring, criteria, MultiParticleRule(mean_particle_mass(c)));
   view_of(c).visit([&](const ChainChunk& chunk) { counter.add(chunk); }, Fields::all);
   return counter.count();
 }
@@ -148,6 +150,7 @@ TEST(StretchObservables, OrderedChainsCountAsTheWholeChainHoweverCut) {
         const Combined got = combine(c, ring, criteria, start, stretches, bodies, rng);
         EXPECT_TRUE(got.streamed.ordered);
         EXPECT_EQ(got.clusters, *whole);
+        EXPECT_EQ(got.clusters, ref_counted(c, ring, criteria, MultiParticleRule(mean_particle_mass(c))));
         expect_same_moments(c, got.moments);
         whole_rings += ring && *whole == 1;
       }
@@ -167,7 +170,7 @@ TEST(StretchObservables, MisorderedStretchesCountAsTheSortedCopy) {
       Chain c = random_chain(rng, 300, 0.02, ring);
       const std::size_t left = misorder(c, ring && trial % 2 == 1, rng);
       const ClusterCriteria criteria = default_cluster_criteria(0.02, 1.0);
-      const std::size_t expected = find_clusters(ref_sorted(c, ring), ring ? c.L : 0.0, criteria).size();
+      const std::size_t expected = ref_counted(c, ring, criteria, MultiParticleRule(mean_particle_mass(c)));
       std::size_t start = ring ? static_cast<std::size_t>(300 * rng.uniform()) : 0;
       if (ring && start == (left + 1) % 300) start = left;  // the drop not at the ring's closing cut
       const Combined got = combine(c, ring, criteria, start, 5, left, rng);
@@ -177,6 +180,30 @@ TEST(StretchObservables, MisorderedStretchesCountAsTheSortedCopy) {
     }
   }
   EXPECT_GT(refused, 20u);  // most chains were out of order for the whole-chain counter
+}
+
+// Every body at one place on a ring (all in one collision): no pair drops, so
+// the pair that closes the chain order (body n - 1, body 0) is the wrapping one
+// (gap L): inside a stretch (even trials: the chain cut from another body on,
+// never right of n - 1) or at the ring's last cut (odd: from body 0 on). It
+// joins under criteria wider than the ring.
+TEST(StretchObservables, BodiesAtOnePlaceCloseTheRingAcrossTheWrap) {
+  Rng rng(44);
+  for (int trial = 0; trial < 200; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    Chain c = random_chain(rng, 2 + static_cast<std::size_t>(trial % 9), 0.02, true);
+    for (double& x : c.x) x = c.x.front();
+    const std::size_t n = c.x.size();
+    const ClusterCriteria criteria{trial % 3 == 0 ? 2 * c.L : 0.5, 0.1};
+    const bool inside = trial % 2 == 0;
+    const std::size_t start =
+        inside ? 1 + static_cast<std::size_t>(static_cast<double>(n - 1) * rng.uniform()) : 0;
+    const std::size_t stretches = 1 + static_cast<std::size_t>(trial % 4);
+    const Combined got = combine(c, true, criteria, start, stretches, inside ? n - 1 : n, rng);
+    EXPECT_TRUE(got.streamed.ordered);
+    EXPECT_EQ(got.clusters, streamed_count(c, true, criteria));
+    EXPECT_EQ(got.clusters, ref_counted(c, true, criteria, MultiParticleRule(mean_particle_mass(c))));
+  }
 }
 
 }  // namespace
