@@ -1,5 +1,6 @@
-"""clusters.png: the clusters of the gas -- their number in time against
-N t^(-2/3) (exact for a white-noise start: the shocks of Burgers turbulence),
+"""clusters.png: the clusters of the gas -- the number of those of two or more
+particles in time against N t^(-2/3) (exact for a white-noise start: the shocks
+of Burgers turbulence),
 their masses against the exact shock-mass law, and their positions and masses
 against the shocks of the compared solver."""
 import matplotlib.pyplot as plt
@@ -17,18 +18,19 @@ def minor_labels():
 
 
 def _count_in_time(ax, f, summary):
-    """The engine's cluster count at the sample times, with the exact shock count
-    of a white-noise start (else a fitted N t^(-2/3) guide), and the comparison's
-    count of clusters and exact shocks heavier than its threshold at its time."""
+    """The engine's count of clusters of >= 2 particles at the sample times, with
+    the exact shock count of a white-noise start (else a fitted N t^(-2/3) guide),
+    and the comparison's count of clusters and exact shocks heavier than its
+    threshold at its time."""
     p = f["particles"]
     t, n = p["t"][:], p["n_clusters"][:]
     ok = (t > 0) & (n > 0)
     t, n = t[ok], n[ok]
     err = p["n_clusters_stderr"][:][ok] if "n_clusters_stderr" in p else None
     merged = summary.get("particles", {}).get("r") == 0
-    criteria = "merged bodies" if merged else "fixed criteria gap < 1/2 spacing, |dv| < 5 delta"
-    ax.errorbar(t, n, yerr=err, **DATA, label=f"particles: clusters at each sample ({criteria}; lone particles "
-                                               "included)")
+    criteria = ("merged bodies" if merged
+                else r"criteria at that time: gap < max($a/2$, $\sqrt{\delta t a}$), |dv| < 5$\delta$")
+    ax.errorbar(t, n, yerr=err, **DATA, label=f"particles: clusters of ≥ 2 particles at each sample ({criteria})")
     N = summary.get("initial", {}).get("N")
     an = p["analysis"] if "analysis" in p else None
     coefficient = attr(an, "n_shocks_exact_coefficient") if an is not None else None
@@ -39,7 +41,8 @@ def _count_in_time(ax, f, summary):
     if coefficient is not None and N and start < t[-1] and gas:
         tt = np.geomspace(start, t[-1], 50)
         ax.plot(tt, coefficient * tt ** (-2 / 3), **EXACT,
-                label=rf"exact: shocks of Burgers turbulence from this white noise, ${coefficient / N:.4g}\,N t^{{-2/3}}$")
+                label=rf"exact: shocks of Burgers turbulence from this white noise, ${coefficient / N:.4g}\,N t^{{-2/3}}$"
+                      " (those lighter than a particle included)")
     elif an is not None and "T_fit_t" in an and gas:
         window = an["T_fit_t"][:]
         draw_guide(ax, t, n, -2 / 3, window, (max(t[0], window[0] / 10), t[-1]), "N t^(-2/3) law")
@@ -48,7 +51,7 @@ def _count_in_time(ax, f, summary):
     ax.set_yscale("log")
     ax.yaxis.set_minor_formatter(minor_labels())  # a count over less than a decade still reads
     ax.set_xlabel(label("time $t$", unit(p["t"])))
-    ax.set_ylabel(label("number of clusters", unit(p["n_clusters"])))
+    ax.set_ylabel(label("clusters of ≥ 2 particles", unit(p["n_clusters"])))
     ax.set_title("clusters in time", fontsize=10)
 
 

@@ -63,8 +63,10 @@ class ParticleRun(Record):
 
     Time series at the log-spaced sample times (one entry per sample reached):
       t [time], T [length^2/time^2] (mass-weighted <v^2> - <v>^2), mean_v
-      [length/time], n_bodies, n_clusters, collisions, inelastic, elastic,
-      merges [1], dissipated [mass length^2/time^2].
+      [length/time], n_bodies, n_clusters (the clusters of two or more
+      particles: default criteria at the sample's time, a lone body only when
+      heavier than 1.5 M / N), collisions, inelastic, elastic, merges [1],
+      dissipated [mass length^2/time^2].
     final: Bodies at stop.time. snapshots: list of Bodies with their time t.
     histogram: z [length/time^(2/3)], t [time], density (rows: times) of
       z = (v - <v>) t^(1/3), or None. spacetime: label [1] (the

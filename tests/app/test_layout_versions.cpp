@@ -37,7 +37,7 @@ TEST(LayoutVersions, LoadReadsLayout1AsFloat64AndLayout2InItsDeclaredTypes) {
   EXPECT_EQ(old.datasets.at("/particles/count").data.size(), 6u);  // samples = 6 in its scene
   EXPECT_EQ(old.attributes.count("/@layout_version"), 0u);
 
-  const fs::path root = fresh_dir("layout-2.0");
+  const fs::path root = fresh_dir("layout-2");
   write_text(root / "scene.toml", std::string(kSceneA) + "[output]\nplots = false\n");
   ASSERT_EQ(run_child({"run", (root / "scene.toml").string(), "--out", (root / "run").string(), "-q"}).first,
             0);
@@ -45,7 +45,7 @@ TEST(LayoutVersions, LoadReadsLayout1AsFloat64AndLayout2InItsDeclaredTypes) {
   EXPECT_EQ(now.datasets.at("/particles/count").storage, Storage::integer);
   EXPECT_EQ(now.datasets.at("/compare/occupied").storage, Storage::integer);
   EXPECT_EQ(now.datasets.at("/particles/T").storage, Storage::float64);
-  EXPECT_EQ(std::get<std::string>(now.attributes.at("/@layout_version")), "2.0");
+  EXPECT_EQ(std::get<std::string>(now.attributes.at("/@layout_version")), "2.1");
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 #pragma once
 // The version of the layout of result.h5 (docs/output.md, "Layout version"):
 // major.minor, written as the file's attribute /@layout_version. A minor
-// version adds datasets or attributes a reader of the same major may ignore;
-// a major version changes what a path holds, its type or its place. A file
-// without the attribute is of layout 1.0 (written before it was versioned).
+// version adds datasets or attributes a reader of the same major may ignore,
+// or changes what a dataset counts under its path, type and unit (2.1:
+// /particles/n_clusters); a major version changes a path's type, its unit or
+// its place. A file without the attribute is of layout 1.0 (written before it
+// was versioned).
 // Every reader (Hdf5File::open: info, merge, animate, the report, the Python
 // load) reads every layout of its major and below, and refuses a newer major.
 #include <string>
@@ -15,9 +17,9 @@ struct LayoutVersion {
 };
 
 // The layout this build writes.
-inline constexpr LayoutVersion kLayoutVersion{2, 0};
+inline constexpr LayoutVersion kLayoutVersion{2, 1};
 
-// "2.0".
+// "2.1".
 std::string layout_version_text(LayoutVersion v = kLayoutVersion);
 
 // The version an attribute's text names ("" = 1.0, before versioning);

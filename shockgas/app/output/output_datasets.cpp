@@ -52,7 +52,9 @@ const Series kSeries[] = {
     {"mean_v", &particles::EnsembleResult::mean_v, "length/time",
      "mass-weighted mean velocity (momentum check)"},
     {"n_bodies", &particles::EnsembleResult::n_bodies, "1", "bodies (clusters after merges)"},
-    {"n_clusters", &particles::EnsembleResult::n_clusters, "1", "clusters by the default cluster criteria"},
+    {"n_clusters", &particles::EnsembleResult::n_clusters, "1",
+     "clusters of >= 2 particles: the default cluster criteria at the sample's time, a lone body counted "
+     "only when heavier than 1.5 M / N (merged particles)"},
     {"collisions", &particles::EnsembleResult::collisions, "1", "cumulative collisions, all kinds"},
     {"inelastic", &particles::EnsembleResult::inelastic, "1", "cumulative inelastic collisions"},
     {"elastic", &particles::EnsembleResult::elastic, "1", "cumulative elastic sub-threshold collisions"},
