@@ -113,6 +113,8 @@ class MultiParticleRule {
   bool heavy(double m) const { return m > heavy_mass_; }
   // Whether cluster c holds two or more particles.
   bool counts(const Cluster& c) const { return c.count >= 2 || heavy(c.m); }
+  // 1.5 M / N [mass]: heavy(m) is m > heavy_mass() (for a stream's own comparisons).
+  double heavy_mass() const { return heavy_mass_; }
 
  private:
   double heavy_mass_;  // 1.5 M / N [mass]

@@ -38,12 +38,7 @@ class DomainSampler {
       PeriodWrap wrap(spec.L);
       if constexpr (Linked) {
         moments_linked(d, p);
-        std::size_t previous = d.head;
-        for_each(d, [&](std::size_t i) {
-          const double x = e_.body_[i].at(t);
-          scan.add(spec.ring ? wrap(x) : x, e_.body_[i].v, e_.mass_[i], i, i < previous);
-          previous = i;
-        });
+        scan_linked(d, t, spec.ring, scan, wrap);
       } else {
         sweep_equal(d, t, spec.ring, p, scan, wrap);
       }
@@ -159,12 +154,38 @@ class DomainSampler {
   // at t wrapped together, then the pairs. closes: body b closes the chain.
   void scan_run(std::size_t b, std::size_t n, double t, bool ring, bool closes, ClusterScan& scan,
                 PeriodWrap& wrap) const {
-    std::array<double, run> x, w, v;
-    for (std::size_t k = 0; k < n; ++k) x[k] = e_.body_[b + k].at(t), v[k] = e_.body_[b + k].v;
-    if (ring) wrap.wrap_all(x.data(), w.data(), n);
-    scan.add_run(ring ? w.data() : x.data(), v.data(), e_.m0_, n, b, closes);
+    RunBuffer r;
+    for (std::size_t k = 0; k < n; ++k)
+      r.x[k] = e_.body_[b + k].at(t), r.v[k] = e_.body_[b + k].v, r.m[k] = e_.m0_;
+    r.scan(n, b, b + n - 1, closes, ring, scan, wrap);
+  }
+  // The cluster scan of a linked domain in runs of up to `run` bodies, a new
+  // run at the body that closes the chain (its index below its left one's).
+  void scan_linked(const Domain& d, double t, bool ring, ClusterScan& scan, PeriodWrap& wrap) const {
+    RunBuffer r;
+    std::size_t n = 0, first = d.head, previous = d.head;
+    bool closes = false;
+    for_each(d, [&](std::size_t i) {
+      const bool closing = i < previous;
+      if (n == run || closing) r.scan(n, first, previous, closes, ring, scan, wrap), n = 0;
+      if (n == 0) first = i, closes = closing;
+      r.x[n] = e_.body_[i].at(t), r.v[n] = e_.body_[i].v, r.m[n] = e_.mass_[i], ++n;
+      previous = i;
+    });
+    r.scan(n, first, previous, closes, ring, scan, wrap);
   }
   static constexpr std::size_t run = 256;  // bodies per run of the scan (a multiple of 4)
+  // A run's positions at t, velocities and masses, handed to the scan
+  // (ClusterScan::add_run) with its positions wrapped together on a ring.
+  struct RunBuffer {
+    std::array<double, run> x, w, v, m;
+    void scan(std::size_t n, std::size_t first, std::size_t last, bool closes, bool ring, ClusterScan& s,
+              PeriodWrap& wrap) {
+      if (n == 0) return;
+      if (ring) wrap.wrap_all(x.data(), w.data(), n);
+      s.add_run(ring ? w.data() : x.data(), v.data(), m.data(), n, first, last, closes);
+    }
+  };
   // f(lo, hi) for the index ranges of d's bodies (equal masses): one, or two
   // where the domain wraps past the last body of a ring.
   template <class F>

@@ -25,18 +25,18 @@ struct LoneBodies {
   // The next body, light or not, and whether it joins the last one.
   void add(bool joins, bool light) {
     if (single)
-      head_free = head_free && !joins, single = false;
+      head_free = head_free & !joins, single = false;
     else
-      settled += tail_free && !joins;
-    tail_free = light && !joins;
+      settled += tail_free & !joins;
+    tail_free = light & !joins;
   }
-  // add() for bodies 1 .. n - 1 of a run of bodies of one mass (n >= 2) after
-  // its body 0: the pairs (0, 1) and (n - 2, n - 1) join first_joins and
-  // last_joins; `unjoined` of bodies 1 .. n - 2 join neither neighbour.
-  void add_run(bool first_joins, std::size_t unjoined, bool last_joins, bool light) {
-    add(first_joins, light);
-    settled += light ? unjoined : 0;
-    tail_free = light && !last_joins;
+  // add() for bodies 1 .. n - 1 of a run (n >= 2) after its body 0: the pairs
+  // (0, 1) and (n - 2, n - 1) join first_joins and last_joins, `lone` of bodies
+  // 1 .. n - 2 are lone and light, body n - 1 is light or not.
+  void add_run(bool first_joins, std::size_t lone, bool last_joins, bool last_light) {
+    add(first_joins, last_light);  // body 0 settled; body 1, unless the last, is among `lone`
+    settled += lone;
+    tail_free = last_light & !last_joins;
   }
   // The lone light bodies, the ends settled by the pairs across the cuts:
   // left_joins into the first body, right_joins out of the last (false where

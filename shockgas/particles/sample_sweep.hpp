@@ -214,7 +214,7 @@ bool sweep_run_as(const Body* p, std::size_t n, double t, double m, std::size_t 
     const double w = shifted ? x - period.shift : x;
     r.off |= w < r.w_l;
     const bool joins = c.joins(w - r.w_l, v - r.v_l);
-    r.joins += joins, r.unjoined += !r.last_joins && !joins, r.last_joins = joins;
+    r.joins += joins, r.unjoined += !r.last_joins & !joins, r.last_joins = joins;
     r.w_l = w, r.v_l = v;
   }
   if constexpr (Wrap == RunWrap::first) r.off |= !(x0 >= period.lo && r.w_l < period.hi);
@@ -224,7 +224,9 @@ bool sweep_run_as(const Body* p, std::size_t n, double t, double m, std::size_t 
   // The pair (0, 1) once more, as the blocks took it (no drop: w - w_left).
   const double x1 = p[1].at(t);
   const bool first_joins = c.joins((shifted ? x1 - period.shift : x1) - w0, p[1].v - v0);
-  scan.add_clean({r.joins, r.unjoined, first_joins, r.last_joins}, m, r.w_l, r.v_l, index + n - 1);
+  const bool light = !scan.counted().heavy(m);
+  scan.add_clean({r.joins, light ? r.unjoined : 0, first_joins, r.last_joins, light}, r.w_l, r.v_l,
+                 index + n - 1);
   return true;
 }
 

@@ -72,11 +72,12 @@ struct ScanBody {
 };
 
 // The pairs of bodies 0 .. n - 1 of a run, counted apart from its body 0: how
-// many join, the first (0, 1) and the last (n - 2, n - 1), and how many of
-// bodies 1 .. n - 2 join neither neighbour (LoneBodies::add_run).
+// many join, the first (0, 1) and the last (n - 2, n - 1), how many of bodies
+// 1 .. n - 2 are lone and light, and whether body n - 1 is light
+// (LoneBodies::add_run).
 struct RunPairs {
-  std::size_t joined = 0, unjoined = 0;
-  bool first_joins = false, last_joins = false;
+  std::size_t joined = 0, lone = 0;
+  bool first_joins = false, last_joins = false, last_light = false;
 };
 
 // Feeds the bodies of a stretch in chain order: their wrapped positions w,
@@ -108,12 +109,13 @@ class ClusterScan {
     }
     p_.last_w = w, p_.last_v = v, p_.last_index = index;
   }
-  // add() for n consecutive bodies of mass m, of indices index .. index + n - 1
-  // (n >= 1), of which only the first may close: the pairs inside without
-  // branches, two at a time (the same numbers as add(): (w + 0) - w_left is
-  // w - w_left).
-  void add_run(const double* w, const double* v, double m, std::size_t n, std::size_t index, bool closes) {
-    add(w[0], v[0], m, index, closes);
+  // add() for the n bodies of a run (n >= 1), w, v and m of each in chain
+  // order, of which only the first may close; first_index, last_index: the
+  // indices of its ends. The pairs inside without branches, two at a time (the
+  // same numbers as add(): (w + 0) - w_left is w - w_left).
+  void add_run(const double* w, const double* v, const double* m, std::size_t n, std::size_t first_index,
+               std::size_t last_index, bool closes) {
+    add(w[0], v[0], m[0], first_index, closes);
     if (n == 1) return;
     RunPairs r;
     std::size_t drops = 0, k = 1;
@@ -127,8 +129,9 @@ class ClusterScan {
 #if defined(__SSE2__)
     const __m128d L = _mm_set1_pd(L_), max_gap = _mm_set1_pd(criteria_.max_gap);
     const __m128d max_dv = _mm_set1_pd(criteria_.max_dv), sign = _mm_set1_pd(-0.0);
+    const __m128d heavy = _mm_set1_pd(counted_.heavy_mass());
     __m128i joined2 = _mm_setzero_si128(), drops2 = _mm_setzero_si128();  // minus the masks: counts
-    __m128i held2 = _mm_setzero_si128();  // bodies k - 1, k joined on either side: minus the masks
+    __m128i held2 = _mm_setzero_si128();  // bodies k - 1, k joined on either side or heavy: minus the masks
     __m128d join_l = _mm_castsi128_pd(_mm_set1_epi64x(-1));  // pair k - 1 in the high half
     for (; k + 2 <= n; k += 2) {
       const __m128d wr = _mm_loadu_pd(w + k), wl = _mm_loadu_pd(w + k - 1);
@@ -136,7 +139,8 @@ class ClusterScan {
       const __m128d gap = _mm_sub_pd(_mm_add_pd(wr, _mm_and_pd(drop2, L)), wl);
       const __m128d dv = _mm_andnot_pd(sign, _mm_sub_pd(_mm_loadu_pd(v + k), _mm_loadu_pd(v + k - 1)));
       const __m128d join = _mm_and_pd(_mm_cmplt_pd(gap, max_gap), _mm_cmplt_pd(dv, max_dv));
-      const __m128d held = _mm_or_pd(join, _mm_shuffle_pd(join_l, join, 1));  // pairs k - 1, k | k, k + 1
+      const __m128d beside = _mm_or_pd(join, _mm_shuffle_pd(join_l, join, 1));  // pairs k - 1, k | k, k + 1
+      const __m128d held = _mm_or_pd(beside, _mm_cmpgt_pd(_mm_loadu_pd(m + k - 1), heavy));
       joined2 = _mm_sub_epi64(joined2, _mm_castpd_si128(join));
       drops2 = _mm_sub_epi64(drops2, _mm_castpd_si128(drop2));
       held2 = _mm_sub_epi64(held2, _mm_castpd_si128(held));
@@ -147,30 +151,31 @@ class ClusterScan {
     _mm_store_si128(reinterpret_cast<__m128i*>(lanes.data() + 2), drops2);
     _mm_store_si128(reinterpret_cast<__m128i*>(lanes.data() + 4), held2);
     r.joined = lanes[0] + lanes[1], drops = lanes[2] + lanes[3];
-    r.unjoined = (k - 1) - (lanes[4] + lanes[5]);
+    r.lone = (k - 1) - (lanes[4] + lanes[5]);
     left_joins = (_mm_movemask_pd(join_l) & 2) != 0;
 #endif
     for (; k < n; ++k) {
       const bool joins = pair(k, drop);
       r.joined += joins, drops += drop;
-      r.unjoined += !left_joins && !joins;
+      r.lone += !left_joins & !joins & !counted_.heavy(m[k - 1]);
       left_joins = joins;
     }
-    r.last_joins = left_joins;
+    r.last_joins = left_joins, r.last_light = !counted_.heavy(m[n - 1]);
     p_.drops += drops;
     if (drops > 0) [[unlikely]]
       for (std::size_t j = 1; j < n; ++j) p_.max_drop = std::max(p_.max_drop, w[j - 1] - w[j]);
-    add_clean(r, m, w[n - 1], v[n - 1], index + n - 1);
+    add_clean(r, w[n - 1], v[n - 1], last_index);
   }
-  // After add() of a run's first body: the rest of the run, bodies of mass m
-  // whose pairs do not drop, counted in r; w, v and index of its last body.
-  void add_clean(const RunPairs& r, double m, double w, double v, std::size_t index) {
+  // After add() of a run's first body: the rest of the run, whose pairs do not
+  // drop, counted in r; w, v and index of its last body.
+  void add_clean(const RunPairs& r, double w, double v, std::size_t index) {
     p_.joined += r.joined;
-    p_.lone.add_run(r.first_joins, r.unjoined, r.last_joins, !counted_.heavy(m));
+    p_.lone.add_run(r.first_joins, r.lone, r.last_joins, r.last_light);
     p_.last_w = w, p_.last_v = v, p_.last_index = index;
   }
   const ClusterPart& part() const { return p_; }
   const ClusterCriteria& criteria() const { return criteria_; }
+  const MultiParticleRule& counted() const { return counted_; }
 
  private:
   ClusterCriteria criteria_;

@@ -52,10 +52,10 @@ void expect_same_part(const ClusterPart& a, const ClusterPart& b) {
 // n mod 4 in lane 0).
 void general(const Body* p, std::size_t n, double t, double m, std::size_t index, bool closes, double (&s)[4],
              ClusterScan& scan, PeriodWrap& wrap, bool ring) {
-  std::vector<double> x(n), w(n), v(n);
+  std::vector<double> x(n), w(n), v(n), masses(n, m);
   for (std::size_t k = 0; k < n; ++k) x[k] = p[k].at(t), v[k] = p[k].v;
   if (ring) wrap.wrap_all(x.data(), w.data(), n);
-  scan.add_run(ring ? w.data() : x.data(), v.data(), m, n, index, closes);
+  scan.add_run(ring ? w.data() : x.data(), v.data(), masses.data(), n, index, index + n - 1, closes);
   std::size_t k = 0;
   for (; k + 4 <= n; k += 4) s[0] += p[k].v, s[1] += p[k + 1].v, s[2] += p[k + 2].v, s[3] += p[k + 3].v;
   for (; k < n; ++k) s[0] += p[k].v;
@@ -149,6 +149,44 @@ TEST(SampleSweep, EqualsTheGeneralPathToTheBit) {
   }
   EXPECT_GT(swept, runs / 2);  // the sweep itself was tested, not only its fallback
   EXPECT_LT(swept, runs);      // ... and the fallback too
+}
+
+// add_run with a mass per body (the linked engine's runs) against add() body by
+// body: wrapped positions with a seam (ring), rounding-sized drops, equal
+// positions, masses light and heavy, indices with gaps (merged bodies) and the
+// closing body (index below its left one's) starting a run, as DomainSampler
+// cuts them.
+TEST(SampleSweep, RunsOfBodiesOfAnyMassEqualBodyByBody) {
+  Rng rng(62);
+  for (int trial = 0; trial < 300; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const bool ring = trial % 3 != 2;
+    const std::size_t n = 1 + static_cast<std::size_t>(700 * rng.uniform());
+    const double L = static_cast<double>(2 * n);
+    std::vector<double> w(n), v(n), m(n);
+    std::vector<std::size_t> index(n);
+    const std::size_t closing = static_cast<std::size_t>(static_cast<double>(n) * rng.uniform());
+    double x = rng.uniform(0.0, L), u = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double r = rng.uniform();
+      x = r < 0.05 ? x : r < 0.08 ? std::nextafter(x, -1e300) : x + rng.uniform(0.0, 3.0);
+      if (ring && x >= L) x -= L;  // the seam
+      u = r < 0.6 ? u + rng.uniform(-0.03, 0.03) : rng.uniform(-1.0, 1.0);
+      w[k] = x, v[k] = u, m[k] = r < 0.5 ? 1.0 : r < 0.8 ? 2.0 : rng.uniform(0.5, 3.0);
+      index[k] = ring && k >= closing ? k - closing : n + 3 * k;  // the ring's order from body 0 wraps
+    }
+    const SampleSpec spec{true, {rng.uniform(0.0, 2.0), 0.05}, MultiParticleRule(1.0), L, ring};
+    ClusterScan runs(spec), single(spec);
+    for (std::size_t lo = 0; lo < n;) {
+      std::size_t hi = std::min(n, lo + 1 + static_cast<std::size_t>(300 * rng.uniform()));
+      if (ring && closing > lo && closing < hi) hi = closing;  // the closing body starts a run
+      const bool closes = ring && lo == closing && lo > 0;
+      runs.add_run(&w[lo], &v[lo], &m[lo], hi - lo, index[lo], index[hi - 1], closes);
+      for (std::size_t k = lo; k < hi; ++k) single.add(w[k], v[k], m[k], index[k], closes && k == lo);
+      lo = hi;
+    }
+    expect_same_part(runs.part(), single.part());
+  }
 }
 
 }  // namespace
