@@ -37,8 +37,7 @@ class DomainSampler {
       ClusterScan scan(spec);
       PeriodWrap wrap(spec.L);
       if constexpr (Linked) {
-        moments_linked(d, p);
-        scan_linked(d, t, spec.ring, scan, wrap);
+        scan_linked(d, t, spec.ring, p, scan, wrap);
       } else {
         sweep_equal(d, t, spec.ring, p, scan, wrap);
       }
@@ -68,17 +67,25 @@ class DomainSampler {
       });
     }
   }
-  // Mass, momentum and spread, each body its own mass.
-  void moments_linked(const Domain& d, StretchPart& p) const {
+  // Mass, momentum and spread, each body its own mass; also(i) for each body
+  // in the spread's pass.
+  template <class Also>
+  void moments_linked(const Domain& d, StretchPart& p, Also&& also) const {
     for_each(d, [&](std::size_t i) {
       p.mass += e_.mass_[i], p.momentum += e_.mass_[i] * e_.body_[i].v;
       ++p.bodies;
     });
     const double mean = p.momentum / p.mass;
+    double spread = 0;  // in a register: also(i) stores doubles, which could be p's
     for_each(d, [&](std::size_t i) {
       const double dv = e_.body_[i].v - mean;
-      p.spread += e_.mass_[i] * dv * dv;
+      spread += e_.mass_[i] * dv * dv;
+      also(i);
     });
+    p.spread = spread;
+  }
+  void moments_linked(const Domain& d, StretchPart& p) const {
+    moments_linked(d, p, [](std::size_t) {});
   }
   // Equal masses m: M = k m, P = m sum v, C = m sum (v - mean)^2, each sum in
   // four lanes (the additions of one lane wait on each other; four overlap):
@@ -159,13 +166,15 @@ class DomainSampler {
       r.x[k] = e_.body_[b + k].at(t), r.v[k] = e_.body_[b + k].v, r.m[k] = e_.m0_;
     r.scan(n, b, b + n - 1, closes, ring, scan, wrap);
   }
-  // The cluster scan of a linked domain in runs of up to `run` bodies, a new
-  // run at the body that closes the chain (its index below its left one's).
-  void scan_linked(const Domain& d, double t, bool ring, ClusterScan& scan, PeriodWrap& wrap) const {
+  // The moments of a linked domain, and its cluster scan in runs of up to
+  // `run` bodies gathered in the spread's pass (the bodies read there once), a
+  // new run at the body that closes the chain (its index below its left one's).
+  void scan_linked(const Domain& d, double t, bool ring, StretchPart& p, ClusterScan& scan,
+                   PeriodWrap& wrap) const {
     RunBuffer r;
     std::size_t n = 0, first = d.head, previous = d.head;
     bool closes = false;
-    for_each(d, [&](std::size_t i) {
+    moments_linked(d, p, [&](std::size_t i) {
       const bool closing = i < previous;
       if (n == run || closing) r.scan(n, first, previous, closes, ring, scan, wrap), n = 0;
       if (n == 0) first = i, closes = closing;
