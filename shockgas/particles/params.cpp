@@ -53,6 +53,9 @@ ParameterTable<ParticleParams> declare() {
         "label, the first and the last always (all of them when N is not larger)",
         allowed(at_least(2)));
   t.add(&P::clusters, "clusters", "", "count clusters (default criteria) at the sample times");
+  t.add(&P::final_clusters, "final_clusters", "",
+        "record each realization's clusters of at least two particles at its end (x, v, m; default "
+        "criteria) for `shockgas stats`: always, never, or auto (at most 10^6 particles)");
   t.add(&P::max_collisions, "max_collisions", "1",
         "stop a realization at its first safe point with at least this many collisions (the end of a time "
         "window, or every " +
@@ -73,6 +76,11 @@ ParameterTable<ParticleParams> declare() {
 const ParameterTable<ParticleParams>& parameters() {
   static const ParameterTable<ParticleParams> table = declare();
   return table;
+}
+
+bool records_final_clusters(const ParticleParams& p, std::size_t n) {
+  return p.final_clusters == ClusterRecord::always ||
+         (p.final_clusters == ClusterRecord::automatic && n <= kRecordedClustersBodies);
 }
 
 void validate(const ParticleParams& p) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <optional>
 
 #include "shockgas/particles/sorted_state.hpp"
@@ -36,7 +37,7 @@ std::vector<double> sample_times(double t_end, std::size_t samples) {
 }
 
 Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, const StateSink* sink)
-    : p_(p), L_(L), ring_(ring), sink_(sink) {
+    : p_(p), n_(n), L_(L), ring_(ring), sink_(sink) {
   samples_ = sample_times(p.t_end, p.samples);
   snapshots_ = sorted_copy(p.snapshots);
   if (p.spacetime) frames_ = frame_times(p.t_end, p.spacetime_frames);
@@ -171,7 +172,30 @@ void Recorder::frame(double t, const ChainView& s) {
 
 double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }
 
+// The clusters of at least two particles at t (RunResult::final_clusters): mass
+// above 1.5 M / N, so a lone particle (mass M / N) never counts and two always do.
+Bodies Recorder::final_clusters(const ChainView& s, double t) const {
+  const double lightest = 1.5 * chain_moments(s, nullptr).mass / static_cast<double>(n_);
+  const double spacing = L_ / static_cast<double>(n_);
+  const ClusterCriteria criteria = collision_rule(p_).merges_only()
+                                       ? merged_bodies_criteria()
+                                       : default_cluster_criteria(p_.delta, spacing, t);
+  Bodies found;
+  visit_clusters(SortedState(s, L_, ring_), ring_ ? L_ : 0.0, criteria, [&](const Cluster& k) {
+    if (k.m > lightest) found.push_back(k.x, k.v, k.m);
+  });
+  std::vector<std::size_t> order(found.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return found.x[a] < found.x[b]; });
+  Bodies sorted;
+  sorted.reserve(order.size());
+  for (std::size_t k : order) sorted.push_back(found.x[k], found.v[k], found.m[k]);
+  return sorted;
+}
+
 RunResult Recorder::finish(const ChainView& final_state, const RunStop& stop, const Counters& c) {
+  if (records_final_clusters(p_, n_)) out_.final_clusters = final_clusters(final_state, stop.time);
   if (!sink_)
     out_.final_state = sorted_bodies(final_state, L_, ring_);
   else if (sink_->final_state)

@@ -71,8 +71,10 @@ class Recorder {
   void snapshot(double t, const ChainView& s, std::size_t copies);
   void frame(double t, const ChainView& s);
   double wrap(double x) const;
+  Bodies final_clusters(const ChainView& s, double t) const;
 
   const ParticleParams& p_;
+  std::size_t n_;
   double L_;
   bool ring_;
   const StateSink* sink_;

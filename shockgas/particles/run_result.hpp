@@ -4,6 +4,7 @@
 // space-time record). Only what ParticleParams asks for is filled.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -102,7 +103,12 @@ struct RunSchedule {
 
 struct RunResult {
   TimeSeries series;
-  Bodies final_state;               // at stop.time: sorted; ring: x in [0, L)
+  Bodies final_state;  // at stop.time: sorted; ring: x in [0, L)
+  // At stop.time, when params.final_clusters asks (records_final_clusters): the
+  // clusters (find_clusters, default criteria at stop.time; r = 0: the merged
+  // bodies) holding at least two particles, i.e. of mass above 1.5 M / N, as
+  // centre of mass x, velocity v and mass m, in order of x (ring: in [0, L)).
+  std::optional<Bodies> final_clusters;
   std::vector<Snapshot> snapshots;  // the requested times reached
   ScaledHistogram histogram;        // empty unless params.histogram_bins > 0
   SpaceTime spacetime;              // empty unless params.spacetime

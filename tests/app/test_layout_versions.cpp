@@ -45,7 +45,7 @@ TEST(LayoutVersions, LoadReadsLayout1AsFloat64AndLayout2InItsDeclaredTypes) {
   EXPECT_EQ(now.datasets.at("/particles/count").storage, Storage::integer);
   EXPECT_EQ(now.datasets.at("/compare/occupied").storage, Storage::integer);
   EXPECT_EQ(now.datasets.at("/particles/T").storage, Storage::float64);
-  EXPECT_EQ(std::get<std::string>(now.attributes.at("/@layout_version")), "2.0");
+  EXPECT_EQ(std::get<std::string>(now.attributes.at("/@layout_version")), "2.1");
 }
 
 }  // namespace

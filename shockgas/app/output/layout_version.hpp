@@ -15,7 +15,7 @@ struct LayoutVersion {
 };
 
 // The layout this build writes.
-inline constexpr LayoutVersion kLayoutVersion{2, 0};
+inline constexpr LayoutVersion kLayoutVersion{2, 1};
 
 // "2.0".
 std::string layout_version_text(LayoutVersion v = kLayoutVersion);
