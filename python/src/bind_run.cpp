@@ -18,6 +18,7 @@
 #include "shockgas/app/files/file_problem.hpp"
 #include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/jobs/run_scene.hpp"
+#include "shockgas/app/jobs/statistics_run.hpp"
 #include "shockgas/app/run/captured_outputs.hpp"
 #include "shockgas/app/run/resources.hpp"
 #include "shockgas/app/scene/scene_schema.hpp"
@@ -251,6 +252,13 @@ void bind_run(py::module_& m) {
   });
   m.attr("_dict_origin") = kDictOrigin;
   m.def("_load", &load, py::arg("path"));
+  m.def(
+      "_statistics",
+      [](const std::vector<std::string>& dirs, const std::string& out, bool plots) {
+        const py::gil_scoped_release unlocked;
+        return app::run_statistics({dirs, out, false, plots, true});
+      },
+      py::arg("dirs"), py::arg("out"), py::arg("plots"));
   m.def("_scene_keys", &scene_keys);
   m.def("_layout", [] {
     py::list out;
