@@ -63,6 +63,11 @@ def exact_steps(ax, rows, per_width, label):
     return True
 
 
+def below(ax):
+    """The panel's legend under its axes, clear of the data."""
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
+
+
 def mass_panel(ax, table, realizations):
     rows = rows_of(table, "mass")
     points(ax, [r for r in rows if r[2] > 0], True, f"clusters, {realizations} realizations", log_x=True)
@@ -71,7 +76,7 @@ def mass_panel(ax, table, realizations):
            ylabel="clusters per realization per unit mass [1/particle]", title="Masses")
     if not has_law:
         ax.text(0.03, 0.03, "no exact law for this start", transform=ax.transAxes, fontsize=8)
-    ax.legend(fontsize=8, loc="lower left" if has_law else "upper right")
+    below(ax)
 
 
 def velocity_panel(ax, table, realizations):
@@ -85,7 +90,7 @@ def velocity_panel(ax, table, realizations):
         ax.set_ylim(min(positive) / 3, max(positive) * 3)
     if not has_law:
         ax.text(0.03, 0.03, "no exact law for this start", transform=ax.transAxes, fontsize=8)
-    ax.legend(fontsize=8, loc="upper left")
+    below(ax)
 
 
 def spacing_panel(ax, table, realizations):
@@ -94,7 +99,7 @@ def spacing_panel(ax, table, realizations):
     ax.set(xlabel="gap between neighbouring clusters [mean gaps]", ylabel="fraction of gaps per unit gap [1]",
            title="Spacing (no exact law in shockgas)")
     ax.set_ylim(bottom=0)
-    ax.legend(fontsize=8, loc="upper right")
+    below(ax)
 
 
 def main():
@@ -107,7 +112,7 @@ def main():
     count = one_row(table, "count")
     correlation = one_row(table, "mass_speed_correlation")
     realizations = int(one_row(table, "realizations")[2])
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5.2))
     mass_panel(axes[0], table, realizations)
     velocity_panel(axes[1], table, realizations)
     spacing_panel(axes[2], table, realizations)
@@ -116,8 +121,7 @@ def main():
     r_error = "" if math.isnan(correlation[3]) else f" ± {correlation[3]:.2g}"
     fig.suptitle(f"Shock statistics: {count[2]:.4g}{error} clusters of ≥ 2 particles per realization{exact}; "
                  f"correlation of mass and |v − U| {correlation[2]:.3f}{r_error}", fontsize=11)
-    fig.tight_layout()
-    save(fig, os.path.join(directory, "statistics.png"), "statistics.csv", tight=False)
+    save(fig, os.path.join(directory, "statistics.png"), "statistics.csv")
     return 0
 
 

@@ -1,5 +1,6 @@
 #include "shockgas/app/jobs/statistics_files.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -17,16 +18,22 @@ using compare::BinnedStatistic;
 using compare::JackknifeEstimate;
 using compare::ShockStatistics;
 
-// A number as text, %.6g; "" for NaN (CSV: an empty field).
-std::string number(double x) {
+// A number as text with `digits` significant digits (the files: 10); "" for
+// NaN (CSV: an empty field).
+std::string number(double x, int digits = 10) {
   if (std::isnan(x)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
   return buf;
 }
 
+// value ± error, the error to two significant digits and the value to the same place.
 std::string plus_minus(const JackknifeEstimate& e) {
-  return number(e.value) + (std::isfinite(e.error) ? " ± " + number(e.error) : "");
+  if (!(std::isfinite(e.error) && e.error > 0)) return number(e.value, 4);
+  const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(e.error))));
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "%.*f ± %.*f", decimals, e.value, decimals, e.error);
+  return buf;
 }
 
 struct Distribution {
@@ -56,8 +63,8 @@ void write_vector(Hdf5File& f, const std::string& path, const std::vector<double
 std::string test_words(const BinnedStatistic& b) {
   if (b.exact.empty()) return "no exact law for this start (white noise on a lattice only)";
   if (!b.chi2) return "too few realizations or clusters for a chi-square";
-  return "chi2 = " + number(*b.chi2) + " on " + std::to_string(b.dof) +
-         " degrees of freedom, p = " + number(*b.p_value) +
+  return "chi2 = " + number(*b.chi2, 3) + " on " + std::to_string(b.dof) +
+         " degrees of freedom, p = " + number(*b.p_value, 2) +
          (*b.p_value < 0.01 ? " (the law is rejected at the 1 % level)" : "");
 }
 
@@ -126,14 +133,14 @@ void write_statistics_csv(const std::filesystem::path& file, const ShockStatisti
 std::string statistics_markdown(const ShockStatistics& s, const StatisticsAbout& about) {
   std::ostringstream out;
   out << "# Shock statistics: " << about.scene << "\n\n";
-  out << s.realizations << " realizations at t = " << number(s.shape.t) << " (N = " << number(s.shape.N)
-      << ", L = " << number(s.shape.L) << ", r = " << number(about.r) << ")";
+  out << s.realizations << " realizations at t = " << number(s.shape.t, 6) << " (N = " << number(s.shape.N, 6)
+      << ", L = " << number(s.shape.L, 6) << ", r = " << number(about.r, 6) << ")";
   if (about.left_out > 0) out << "; " << about.left_out << " that stopped before t_end left out";
   out << "; " << s.clusters << " clusters of at least two particles. Errors: jackknife over realizations"
       << (s.realizations < 2 ? " (none: no error estimate from one realization)" : "") << ".\n\n";
   out << "| quantity | measured | exact |\n|---|---|---|\n";
   out << "| clusters per realization | " << plus_minus(s.count) << " | "
-      << (s.count_exact ? number(*s.count_exact) : "no exact law") << " |\n";
+      << (s.count_exact ? number(*s.count_exact, 4) : "no exact law") << " |\n";
   out << "| mass distribution | " << s.mass.value.size() << " bins | " << test_words(s.mass) << " |\n";
   out << "| velocity distribution (mass weighted) | " << s.velocity.value.size() << " bins | "
       << test_words(s.velocity) << " |\n";
@@ -142,12 +149,12 @@ std::string statistics_markdown(const ShockStatistics& s, const StatisticsAbout&
       << " | no exact law in shockgas |\n\n";
   if (s.shape.white_noise_D) {
     out << "The exact laws are those of Burgers turbulence from white noise of intensity D = "
-        << number(*s.shape.white_noise_D)
+        << number(*s.shape.white_noise_D, 4)
         << " (the shock-mass law, shockgas/compare/shock_mass_law.hpp; the mass-weighted cluster velocity "
            "law, shockgas/compare/cluster_velocity_law.hpp): the sticky gas (r = 0) follows them once the "
            "Lagrangian scale a = (4 D t^2)^(1/3) spans many particles and is short against the ring.";
     if (about.r > 0)
-      out << " This gas has r = " << number(about.r)
+      out << " This gas has r = " << number(about.r, 6)
           << " > 0: it approaches them only in its sticky regime, so a departure measures its distance "
              "from the sticky limit as much as the statistics.";
     out << "\n";
