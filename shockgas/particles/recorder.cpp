@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <optional>
 
 #include "shockgas/particles/sorted_state.hpp"
@@ -174,24 +173,36 @@ double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }
 
 // The clusters of at least two particles at t (RunResult::final_clusters): mass
 // above 1.5 M / N, so a lone particle (mass M / N) never counts and two always do.
+// Counted first, then kept: no vector grows past what it holds. They come in
+// order of x but for the cluster across a ring's wrap, which comes last and may
+// belong first (and, should rounding put a centre of mass out of order, are sorted).
 Bodies Recorder::final_clusters(const ChainView& s, double t) const {
   const double lightest = 1.5 * chain_moments(s, nullptr).mass / static_cast<double>(n_);
   const double spacing = L_ / static_cast<double>(n_);
   const ClusterCriteria criteria = collision_rule(p_).merges_only()
                                        ? merged_bodies_criteria()
                                        : default_cluster_criteria(p_.delta, spacing, t);
+  const SortedState sorted(s, L_, ring_);
+  const double L = ring_ ? L_ : 0.0;
+  std::size_t count = 0;
+  visit_clusters(sorted, L, criteria, [&](const Cluster& k) { count += k.m > lightest; });
   Bodies found;
-  visit_clusters(SortedState(s, L_, ring_), ring_ ? L_ : 0.0, criteria, [&](const Cluster& k) {
+  found.reserve(count);
+  visit_clusters(sorted, L, criteria, [&](const Cluster& k) {
     if (k.m > lightest) found.push_back(k.x, k.v, k.m);
   });
-  std::vector<std::size_t> order(found.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
+  if (found.size() >= 2 && found.x.back() < found.x.front())
+    for (auto* column : {&found.x, &found.v, &found.m})
+      std::rotate(column->begin(), column->end() - 1, column->end());
+  if (std::is_sorted(found.x.begin(), found.x.end())) return found;
+  std::vector<std::size_t> order(found.size());  // rounding: a centre of mass out of order
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return found.x[a] < found.x[b]; });
-  Bodies sorted;
-  sorted.reserve(order.size());
-  for (std::size_t k : order) sorted.push_back(found.x[k], found.v[k], found.m[k]);
-  return sorted;
+  Bodies in_order;
+  in_order.reserve(order.size());
+  for (std::size_t k : order) in_order.push_back(found.x[k], found.v[k], found.m[k]);
+  return in_order;
 }
 
 RunResult Recorder::finish(const ChainView& final_state, const RunStop& stop, const Counters& c) {

@@ -58,9 +58,13 @@ TEST(FinalClusters, AreRecordedAsTheKeySays) {
   const Case hull{0.0, ParticleSolver::hull};
   EXPECT_FALSE(run(hull, ClusterRecord::never).final_clusters.has_value());
   EXPECT_TRUE(run(hull, ClusterRecord::always).final_clusters.has_value());
+  // auto: while 12 bytes per particle and realization stay within 1 GB.
   ParticleParams p;
-  EXPECT_TRUE(records_final_clusters(p, kRecordedClustersBodies));
-  EXPECT_FALSE(records_final_clusters(p, kRecordedClustersBodies + 1));
+  p.realizations = 100;
+  EXPECT_TRUE(records_final_clusters(p, 833333));
+  EXPECT_FALSE(records_final_clusters(p, 833334));
+  p.final_clusters = ClusterRecord::always;
+  EXPECT_TRUE(records_final_clusters(p, 833334));
 }
 
 }  // namespace

@@ -13,7 +13,8 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-const char* const kClustersWhen = "when particles.final_clusters records them (auto: N <= 10^6)";
+const char* const kClustersWhen =
+    "when particles.final_clusters records them (auto: N x realizations <= 8.3 x 10^7)";
 
 // Rows of different lengths as one matrix, NaN where a row ends early.
 void ragged_matrix(const std::vector<std::vector<double>>& rows, Emitter& out) {
