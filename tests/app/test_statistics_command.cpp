@@ -88,6 +88,15 @@ TEST_F(StatisticsCommand, ARealizationTwiceIsRefused) {
   EXPECT_FALSE(fs::exists(root_ / "twice"));
 }
 
+TEST_F(StatisticsCommand, AnOutputInOrAroundASourceIsRefused) {
+  for (const fs::path& out : {fs::path(shards_.front()) / "stats", root_}) {
+    const auto [code, err] = run_child({"stats", shards_.front(), "--out", out.string(), "-q", "--no-plots"});
+    EXPECT_EQ(code, 2) << err;
+    EXPECT_NE(err.find("--out"), std::string::npos) << err;
+  }
+  EXPECT_FALSE(fs::exists(fs::path(shards_.front()) / "stats"));
+}
+
 TEST_F(StatisticsCommand, AnotherGasIsRefusedNamingTheKey) {
   const fs::path other = root_ / "older";
   ASSERT_EQ(run_child({"run", (root_ / "wn.toml").string(), "--set", "particles.t_end=2000", "--set",
