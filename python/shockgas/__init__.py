@@ -23,12 +23,13 @@ show progress (progress=True, or a callable) and stop on Ctrl-C
 from . import compare, continuum, particles
 from ._shockgas import InputError, __version__, git_commit
 from .particles import hull
-from .scenes import Result, load, output_layout, run, run_toml, scene_keys
+from .scenes import Result, SolverNote, load, output_layout, run, run_toml, scene_keys
 from .statistics import statistics
 
 __all__ = [
     "InputError",
     "Result",
+    "SolverNote",
     "compare",
     "continuum",
     "git_commit",
