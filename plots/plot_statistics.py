@@ -42,6 +42,11 @@ def points(ax, rows, per_width, label, log_x=False):
     """The data as points with error bars at the bins' centres, each value divided
     by its bin width when per_width (a density)."""
     xs, ys, es = [], [], []
+    rows = [r for r in rows if not math.isnan(r[2])]
+    if not rows:
+        ax.text(0.5, 0.5, "none: fewer than two clusters in every realization", transform=ax.transAxes,
+                ha="center", fontsize=9)
+        return
     for low, high, value, error, _ in rows:
         width = high - low if per_width else 1.0
         xs.append(math.sqrt(low * high) if log_x else (low + high) / 2)
@@ -64,32 +69,35 @@ def exact_steps(ax, rows, per_width, label):
 
 
 def below(ax):
-    """The panel's legend under its axes, clear of the data."""
-    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
+    """The panel's legend under its axes, clear of the data (none where nothing is drawn)."""
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
+
+
+def with_law(ax, rows, per_width, data_label, law_label, log_x=False):
+    """The data as points and, where the start has one, the exact law as a line;
+    else a note that there is none."""
+    points(ax, [r for r in rows if r[2] > 0] if log_x else rows, per_width, data_label, log_x=log_x)
+    if not exact_steps(ax, rows, per_width, law_label):
+        ax.text(0.03, 0.03, "no exact law for this start", transform=ax.transAxes, fontsize=8)
 
 
 def mass_panel(ax, table, realizations):
-    rows = rows_of(table, "mass")
-    points(ax, [r for r in rows if r[2] > 0], True, f"clusters, {realizations} realizations", log_x=True)
-    has_law = exact_steps(ax, rows, True, "exact shock-mass law (white noise)")
+    with_law(ax, rows_of(table, "mass"), True, f"clusters, {realizations} realizations",
+             "exact shock-mass law (white noise)", log_x=True)
     ax.set(xscale="log", yscale="log", xlabel="cluster mass m [particles]",
            ylabel="clusters per realization per unit mass [1/particle]", title="Masses")
-    if not has_law:
-        ax.text(0.03, 0.03, "no exact law for this start", transform=ax.transAxes, fontsize=8)
     below(ax)
 
 
 def velocity_panel(ax, table, realizations):
     rows = rows_of(table, "velocity")
-    points(ax, rows, False, f"clusters, {realizations} realizations")
-    has_law = exact_steps(ax, rows, False, "exact cluster velocity law (white noise)")
+    with_law(ax, rows, False, f"clusters, {realizations} realizations", "exact cluster velocity law (white noise)")
     ax.set(yscale="log", xlabel=r"$z = (v - U)\,t^{1/3}$ [length/time$^{2/3}$]",
            ylabel=r"mass fraction per unit $z$ [time$^{2/3}$/length]", title="Velocities, mass weighted")
-    positive = [r[2] for r in rows if r[2] > 0]
+    positive = [r[2] for r in rows if r[2] > 0]  # nan > 0 is False
     if positive:
         ax.set_ylim(min(positive) / 3, max(positive) * 3)
-    if not has_law:
-        ax.text(0.03, 0.03, "no exact law for this start", transform=ax.transAxes, fontsize=8)
     below(ax)
 
 
@@ -102,11 +110,8 @@ def spacing_panel(ax, table, realizations):
     below(ax)
 
 
-def main():
-    if len(sys.argv) != 2:
-        print("usage: plot_statistics.py DIR", file=sys.stderr)
-        return 2
-    directory = sys.argv[1]
+def figure(directory):
+    """The statistics page of DIR (its statistics.csv), not yet saved."""
     table = [{k: v if k == "quantity" else number(v) for k, v in row.items()}
              for row in read_csv(os.path.join(directory, "statistics.csv"))]
     count = one_row(table, "count")
@@ -119,9 +124,17 @@ def main():
     error = "" if math.isnan(count[3]) else f" ± {count[3]:.3g}"
     exact = "" if math.isnan(count[4]) else f" (exact {count[4]:.4g})"
     r_error = "" if math.isnan(correlation[3]) else f" ± {correlation[3]:.2g}"
+    r_text = "not defined" if math.isnan(correlation[2]) else f"{correlation[2]:.3f}{r_error}"
     fig.suptitle(f"Shock statistics: {count[2]:.4g}{error} clusters of ≥ 2 particles per realization{exact}; "
-                 f"correlation of mass and |v − U| {correlation[2]:.3f}{r_error}", fontsize=11)
-    save(fig, os.path.join(directory, "statistics.png"), "statistics.csv")
+                 f"correlation of mass and |v − U| {r_text}", fontsize=11)
+    return fig
+
+
+def main():
+    if len(sys.argv) != 2:
+        print("usage: plot_statistics.py DIR", file=sys.stderr)
+        return 2
+    save(figure(sys.argv[1]), os.path.join(sys.argv[1], "statistics.png"), "statistics.csv")
     return 0
 
 

@@ -29,6 +29,7 @@ std::string number(double x, int digits = 10) {
 
 // value ± error, the error to two significant digits and the value to the same place.
 std::string plus_minus(const JackknifeEstimate& e) {
+  if (std::isnan(e.value)) return "not defined (fewer than two clusters)";
   if (!(std::isfinite(e.error) && e.error > 0)) return number(e.value, 4);
   const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(e.error))));
   char buf[80];

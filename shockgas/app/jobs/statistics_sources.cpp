@@ -73,6 +73,20 @@ std::vector<StatisticsRealization> shard_realizations(const std::string& dir, co
   return out;
 }
 
+// The resolved parameters of the tables the statistics read ([scene], [initial],
+// [particles], [sweep] as it stands): resolved text prints every table, also
+// those the scene did not have, whose rules between tables (a continuum's or a
+// comparison's) must not judge the gas.
+std::string gas_tables(const std::string& resolved) {
+  std::istringstream in(resolved);
+  std::string out, table;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind('[', 0) == 0) table = line;
+    if (table != "[continuum]" && table != "[compare]" && table != "[output]") out += line + "\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string gas_of(const Scene& scene) {
@@ -119,12 +133,10 @@ StatisticsSource read_statistics_source(const std::string& dir) {
   const std::string resolved = h5.attribute("/", "resolved_parameters");
   if (resolved.empty())
     throw InputError("stats", to_text(dir), std::string(kAllowed) + " (its result.h5 names no scene)");
-  StatisticsSource s{dir, parse_scene(resolved, dir + "/result.h5", {}), "", {}};
+  StatisticsSource s{dir, parse_scene(gas_tables(resolved), dir + "/result.h5", {}), "", {}};
   if (s.scene.has_sweep)
     throw InputError("stats", to_text(dir),
                      std::string(kAllowed) + " (this is a sweep: give one variant's directory in it)");
-  if (!s.scene.has_particles)
-    throw InputError("stats", to_text(dir), std::string(kAllowed) + " (its scene runs no particles)");
   s.gas = gas_of(s.scene);
   const bool shard = std::any_of(h5.datasets.begin(), h5.datasets.end(),
                                  [](const DatasetInfo& d) { return d.path.rfind("/shard/", 0) == 0; });
