@@ -130,6 +130,9 @@ TEST_F(StatisticsCommand, ARunWithoutFinalClustersIsRefusedWithTheKey) {
   EXPECT_NE(err.find("particles.final_clusters=always"), std::string::npos) << err;
   const auto [missing, why] = stats({(root_ / "no-such").string()}, "missing-stats");
   EXPECT_EQ(missing, 2) << why;
+  const auto [file, said] = stats({(fs::path(shards_.front()) / "result.h5").string()}, "file-stats");
+  EXPECT_EQ(file, 2) << said;
+  EXPECT_NE(said.find("this is a file"), std::string::npos) << said;
 }
 
 }  // namespace

@@ -64,9 +64,12 @@ std::vector<StatisticsRealization> run_realizations(const ResultContents& h5, co
   return out;
 }
 
-std::vector<StatisticsRealization> shard_realizations(const std::string& dir, const Scene& scene) {
+// A shard's realizations from its records, its result.h5 checked once (by the
+// reader that found it to be a shard).
+std::vector<StatisticsRealization> shard_realizations(const std::string& dir, Verification checked,
+                                                      const Scene& scene) {
   std::vector<StatisticsRealization> out;
-  for (RealizationRecord& r : read_shard_records(read_shard_header(dir))) {
+  for (RealizationRecord& r : read_shard_records(dir, checked)) {
     if (!r.run.final_clusters) throw InputError("stats", to_text(dir), no_clusters_hint(scene));
     out.push_back({r.index, r.run.stop.time, std::move(*r.run.final_clusters)});
   }
@@ -125,6 +128,9 @@ compare::StatisticsShape statistics_shape(const Scene& scene) {
 
 StatisticsSource read_statistics_source(const std::string& dir) {
   std::error_code ec;
+  if (fs::is_regular_file(dir, ec))
+    throw InputError("stats", to_text(dir),
+                     std::string(kAllowed) + " (this is a file: give the directory that holds it)");
   if (!fs::is_directory(dir, ec))
     throw InputError("stats", to_text(dir), std::string(kAllowed) + " (no such directory)");
   const ResultContents h5 = read_result(fs::path(dir), [](const std::string& path) {
@@ -140,7 +146,8 @@ StatisticsSource read_statistics_source(const std::string& dir) {
   s.gas = gas_of(s.scene);
   const bool shard = std::any_of(h5.datasets.begin(), h5.datasets.end(),
                                  [](const DatasetInfo& d) { return d.path.rfind("/shard/", 0) == 0; });
-  s.realizations = shard ? shard_realizations(dir, s.scene) : run_realizations(h5, dir, s.scene);
+  s.realizations =
+      shard ? shard_realizations(dir, h5.verification, s.scene) : run_realizations(h5, dir, s.scene);
   return s;
 }
 
