@@ -47,15 +47,13 @@ LabFrame LabSession::frame(std::size_t cells) const {
   f.t = run_.time();
   f.bodies = run_.state();
   f.T = temperature(f.bodies);
-  // Merged bodies are clusters as they stand; bouncing ones are grouped by the
-  // library's default criteria for a gas with threshold delta at this time.
-  const particles::CollisionRule rule = particles::collision_rule(params(settings_));
+  // The clusters of two or more particles, as the native run counts them.
   const double spacing = L_ / static_cast<double>(initial_.size());
   const particles::ClusterCriteria criteria =
-      rule.can_merge() ? particles::merged_bodies_criteria()
-                       : particles::default_cluster_criteria(settings_.delta, spacing, f.t);
+      particles::gas_cluster_criteria(settings_.r, settings_.delta, spacing, f.t);
+  const particles::MultiParticleRule counted(particle_mass_);
   for (const particles::Cluster& c : particles::find_clusters(f.bodies, ring() ? L_ : 0.0, criteria))
-    if (c.m >= 1.5 * particle_mass_) f.clusters.push_back(c);
+    if (counted.counts(c)) f.clusters.push_back(c);
   if (settings_.r == 0)
     f.hull = ring() ? sticky_clusters_ring(initial_, L_, f.t) : sticky_clusters_line(initial_, f.t);
   // The exact solution is that of the periodic problem: drawn on the ring only.

@@ -10,6 +10,7 @@ Burgers equation side by side, from Python.
     clusters = shockgas.hull(x, v, m, t)                   # the exact sticky gas
     field = shockgas.continuum.solve("godunov", v0, dx=1/256, t_end=0.3)
     shocks = shockgas.compare.detect_shocks(field.v, field.length, field.rho)
+    s = shockgas.statistics(["out/a", "out/b"])           # shock statistics over runs
 
 Units: lengths in the initial mean spacing, times in spacing / typical
 velocity, masses in particle masses. Keyword options are the scene keys
@@ -22,11 +23,13 @@ show progress (progress=True, or a callable) and stop on Ctrl-C
 from . import compare, continuum, particles
 from ._shockgas import InputError, __version__, git_commit
 from .particles import hull
-from .scenes import Result, load, output_layout, run, run_toml, scene_keys
+from .scenes import Result, SolverNote, load, output_layout, run, run_toml, scene_keys
+from .statistics import statistics
 
 __all__ = [
     "InputError",
     "Result",
+    "SolverNote",
     "compare",
     "continuum",
     "git_commit",
@@ -37,4 +40,5 @@ __all__ = [
     "run",
     "run_toml",
     "scene_keys",
+    "statistics",
 ]

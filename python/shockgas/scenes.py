@@ -8,9 +8,16 @@ in docs/output.md, whether kept in memory or written to a directory.
 """
 
 import os
+import warnings
 
 from . import _shockgas
 from ._progress import Progress
+
+
+class SolverNote(UserWarning):
+    """What the run chose for the scene (particles.solver = "auto": the hull or the
+    event engine, and why): the note `shockgas run` prints as "shockgas: note: ...".
+    Silence it with warnings.simplefilter("ignore", shockgas.SolverNote)."""
 
 
 class Result:
@@ -25,6 +32,8 @@ class Result:
     summary       summary.json as a nested dict: the figures of merit
     figures       the same flattened to dotted keys: {"analysis.T_exponent": -0.66, ...}
     directory     where the files were written (None if only in memory)
+    notes         what the run chose for the scene and why, as `shockgas run`
+                  notes it (also issued as SolverNote warnings by run)
 
     result[name] looks up a dataset ("/particles/T"), an attribute
     ("/particles@stop_reason") or a figure ("analysis.T_exponent");
@@ -38,6 +47,7 @@ class Result:
         self.attributes = outputs["attributes"]
         self.summary = outputs["summary"]
         self.directory = outputs["directory"]
+        self.notes = outputs.get("notes", [])
         self.figures = dict(_flatten(self.summary))
 
     def __getitem__(self, name):
@@ -102,14 +112,14 @@ def run(scene, overrides=None, out=None, plots=True, progress=None):
             outputs = _shockgas._run_text(text, _shockgas._dict_origin, overrides, _path(out), plots, callback)
         else:
             outputs = _shockgas._run_path(os.fspath(scene), overrides, _path(out), plots, callback)
-    return Result(outputs)
+    return _noted(Result(outputs))
 
 
 def run_toml(text, overrides=None, out=None, plots=True, progress=None):
     """Run a scene given as TOML text; as shockgas.run (messages name "<toml>:LINE")."""
     with Progress(progress) as callback:
         outputs = _shockgas._run_text(text, "<toml>", overrides, _path(out), plots, callback)
-    return Result(outputs)
+    return _noted(Result(outputs))
 
 
 def load(path):
@@ -129,6 +139,13 @@ def output_layout():
     with kind, path ({solver}, {k} stand for a solver's name, an index), unit,
     description and when (docs/output.md)."""
     return _shockgas._layout()
+
+
+def _noted(result):
+    """The result, its notes issued as SolverNote warnings (at the caller of run)."""
+    for note in result.notes:
+        warnings.warn(note, SolverNote, stacklevel=3)
+    return result
 
 
 def _path(out):

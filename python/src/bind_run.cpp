@@ -18,6 +18,7 @@
 #include "shockgas/app/files/file_problem.hpp"
 #include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/jobs/run_scene.hpp"
+#include "shockgas/app/jobs/statistics_run.hpp"
 #include "shockgas/app/run/captured_outputs.hpp"
 #include "shockgas/app/run/resources.hpp"
 #include "shockgas/app/scene/scene_schema.hpp"
@@ -87,7 +88,8 @@ py::array stored_array(std::vector<double>&& values, const std::vector<py::ssize
   return to_numpy(std::move(values), shape);
 }
 
-py::dict outputs_dict(app::CapturedOutputs&& out, const std::string& directory) {
+py::dict outputs_dict(app::CapturedOutputs&& out, const std::string& directory,
+                      const std::vector<std::string>& notes = {}) {
   py::dict datasets, units, descriptions, attributes;
   for (auto& [path, d] : out.datasets) {
     std::vector<py::ssize_t> shape(d.shape.begin(), d.shape.end());
@@ -104,6 +106,7 @@ py::dict outputs_dict(app::CapturedOutputs&& out, const std::string& directory) 
   d["attributes"] = attributes;
   d["summary"] = py::module_::import("json").attr("loads")(out.summary.dump());
   d["directory"] = directory.empty() ? py::object(py::none()) : py::object(py::str(directory));
+  d["notes"] = notes;
   return d;
 }
 
@@ -150,16 +153,21 @@ app::CapturedOutputs capture_sweep(const app::Scene& scene, const std::string& o
 py::dict run_scene(const std::function<app::Scene()>& parse, const py::object& out, bool plots,
                    const py::object& progress) {
   const std::string out_dir = out.is_none() ? "" : std::string(py::str(out));
+  std::vector<std::string> notes;  // what the command prints as "shockgas: note: ..."
   try {
     app::CapturedOutputs captured = run_interruptible<app::CapturedOutputs>(
         [&](ProgressRelay& relay) {
           const app::Scene scene = parse();
+          for (const app::Scene& s :
+               scene.has_sweep ? app::expand_sweep(scene) : std::vector<app::Scene>{scene})
+            if (!s.solver_note.empty())
+              notes.push_back((scene.has_sweep ? s.name + ": " : "") + s.solver_note);
           app::check_memory(scene);  // as `shockgas run` does, before any work
           return scene.has_sweep ? capture_sweep(scene, out_dir, plots, relay)
                                  : capture_single(scene, out_dir, plots, relay);
         },
         progress);
-    return outputs_dict(std::move(captured), out_dir);
+    return outputs_dict(std::move(captured), out_dir, notes);
   } catch (const InputError& e) {
     throw located_in_python(e);
   }
@@ -251,6 +259,13 @@ void bind_run(py::module_& m) {
   });
   m.attr("_dict_origin") = kDictOrigin;
   m.def("_load", &load, py::arg("path"));
+  m.def(
+      "_statistics",
+      [](const std::vector<std::string>& dirs, const std::string& out, bool plots) {
+        const py::gil_scoped_release unlocked;
+        return app::run_statistics({dirs, out, false, plots, true});
+      },
+      py::arg("dirs"), py::arg("out"), py::arg("plots"));
   m.def("_scene_keys", &scene_keys);
   m.def("_layout", [] {
     py::list out;

@@ -2,6 +2,7 @@
 
 import os
 import tomllib
+import warnings
 
 import h5py
 import numpy as np
@@ -153,3 +154,18 @@ def test_a_sweep_runs_into_its_directory(tmp_path):
     variant = shockgas.load(tmp_path / "sweep" / "1-r_0.9")
     assert_same_bits(variant.datasets["/particles/T"], r.datasets["/sweep/1/particles/T"], "T")
     assert np.all(np.isfinite(variant.datasets["/particles/T"]))
+
+
+def test_the_auto_solver_choice_is_noted_as_the_command_notes_it(command, tmp_path):
+    scene = {"initial": {"N": 200, "seed": 3}, "particles": {"r": 0.5, "solver": "auto", "t_end": 5, "samples": 2}}
+    with pytest.warns(shockgas.SolverNote, match=r'particles.solver = "auto": the event engine') as caught:
+        r = shockgas.run(scene, plots=False)
+    assert r.notes == [str(w.message) for w in caught]
+    # the same words as `shockgas run`'s "shockgas: note: ..."
+    path = tmp_path / "scene.toml"
+    path.write_text("[initial]\nN = 200\nseed = 3\n[particles]\nr = 0.5\nsolver = 'auto'\nt_end = 5\nsamples = 2\n")
+    cli = command("run", path, "--out", tmp_path / "out", "--no-plots", "-q")
+    assert f"shockgas: note: {r.notes[0]}" in cli.stderr
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert shockgas.run({**scene, "particles": {**scene["particles"], "solver": "events"}}, plots=False).notes == []

@@ -65,5 +65,5 @@ def test_the_scene_and_layout_are_in_the_attributes(run_dir):
     ds = shockgas.load(run_dir).to_xarray()
     assert ds.attrs["scene_name"] == "xarray"
     assert ds.attrs["scene_text"].strip() == SCENE.strip()
-    assert ds.attrs["layout_version"].split(".")[0] == "2"
+    assert ds.attrs["layout_version"].split(".")[0] == "3"
     assert "[particles]" in ds.attrs["resolved_parameters"] and "r = 0.5" in ds.attrs["resolved_parameters"]

@@ -44,8 +44,7 @@ std::vector<double> occupied(const std::vector<double>& mass_or_density) {
 SnapshotParams snapshot_params(const CompareParams& c, double r, double delta, double mean_spacing,
                                double t) {
   SnapshotParams p;
-  p.clusters = r == 0 ? particles::merged_bodies_criteria()
-                      : particles::default_cluster_criteria(delta, mean_spacing, t);
+  p.clusters = particles::gas_cluster_criteria(r, delta, mean_spacing, t);
   if (c.cluster_gap > 0) p.clusters.max_gap = c.cluster_gap;
   if (c.cluster_dv > 0) p.clusters.max_dv = c.cluster_dv;
   p.match_distance = c.match_distance;

@@ -86,6 +86,10 @@ ClusterCriteria default_cluster_criteria(double delta, double mean_spacing) {
 
 ClusterCriteria merged_bodies_criteria() { return ClusterCriteria{0.0, 0.0}; }
 
+ClusterCriteria gas_cluster_criteria(double r, double delta, double mean_spacing, double t) {
+  return r == 0.0 ? merged_bodies_criteria() : default_cluster_criteria(delta, mean_spacing, t);
+}
+
 MultiParticleRule::MultiParticleRule(double mean_particle_mass) : heavy_mass_(1.5 * mean_particle_mass) {
   require(std::isfinite(mean_particle_mass) && mean_particle_mass > 0, "cluster.mean_particle_mass",
           mean_particle_mass, "finite, > 0");

@@ -90,6 +90,12 @@ ClusterCriteria default_cluster_criteria(double delta, double mean_spacing);
 // Criteria that join nothing: for merged bodies (r = 0), each is a cluster.
 ClusterCriteria merged_bodies_criteria();
 
+// The criteria every count of a gas's clusters uses (the time series, the final
+// clusters, the comparison, the lab): where every collision merges (r = 0,
+// CollisionRule::merges_only) the bodies are the clusters, merged_bodies_criteria();
+// else default_cluster_criteria(delta, mean_spacing, t).
+ClusterCriteria gas_cluster_criteria(double r, double delta, double mean_spacing, double t);
+
 // The clusters that hold at least two particles: what the time series counts
 // (/particles/n_clusters), the particle side of the shocks, of which a lone
 // particle is none. A cluster of two or more bodies holds two or more

@@ -148,6 +148,7 @@ EnsembleResult reduce_ensemble(std::vector<RunResult> runs) {
   for (const RunResult& r : runs) {
     e.T_by_realization.push_back(r.series.T);
     e.histogram_by_realization.push_back(r.histogram.density);
+    e.final_clusters.push_back(r.final_clusters);
     e.stops.push_back(r.stop);
     e.collisions_per_realization.push_back(r.collisions);
     e.total_collisions += r.collisions;

@@ -53,6 +53,11 @@ ParameterTable<ParticleParams> declare() {
         "label, the first and the last always (all of them when N is not larger)",
         allowed(at_least(2)));
   t.add(&P::clusters, "clusters", "", "count clusters (default criteria) at the sample times");
+  t.add(&P::final_clusters, "final_clusters", "",
+        "record each realization's clusters of at least two particles at its end (x, v, m; default "
+        "criteria) for `shockgas stats`: always, never, or auto (when N x realizations <= 8.3 x 10^7: at "
+        "most 1 "
+        "GB in the worst case of 12 bytes per particle and realization)");
   t.add(&P::max_collisions, "max_collisions", "1",
         "stop a realization at its first safe point with at least this many collisions (the end of a time "
         "window, or every " +
@@ -73,6 +78,15 @@ ParameterTable<ParticleParams> declare() {
 const ParameterTable<ParticleParams>& parameters() {
   static const ParameterTable<ParticleParams> table = declare();
   return table;
+}
+
+double final_clusters_bound(const ParticleParams& p, std::size_t n) {
+  return kRecordedClusterBytesPerParticle * static_cast<double>(n) * static_cast<double>(p.realizations);
+}
+
+bool records_final_clusters(const ParticleParams& p, std::size_t n) {
+  return p.final_clusters == ClusterRecord::always || (p.final_clusters == ClusterRecord::automatic &&
+                                                       final_clusters_bound(p, n) <= kRecordedClustersBytes);
 }
 
 void validate(const ParticleParams& p) {

@@ -43,6 +43,23 @@ constexpr std::array<EnumName<Schedule>, 3> enum_names(Schedule) {
   return {{{Schedule::automatic, "auto"}, {Schedule::windows, "windows"}, {Schedule::global, "global"}}};
 }
 
+// Whether each realization records its clusters of at least two particles at
+// its end (RunResult::final_clusters, for `shockgas stats`): always, never, or
+// (auto) when they cannot take more than kRecordedClustersBytes together.
+enum class ClusterRecord { automatic, always, never };
+constexpr std::array<EnumName<ClusterRecord>, 3> enum_names(ClusterRecord) {
+  return {{{ClusterRecord::automatic, "auto"},
+           {ClusterRecord::always, "always"},
+           {ClusterRecord::never, "never"}}};
+}
+// A gas of N particles holds at most N / 2 clusters of two or more, 24 bytes
+// each (x, v, m): 12 bytes per particle and realization in the worst case (a
+// young gas of pairs; a late one holds a few hundred: about 1.9 N t^(-2/3) for
+// white noise). auto records them when that bound, over every realization, is
+// at most 1 GB (N x realizations <= 8.3 x 10^7).
+inline constexpr double kRecordedClusterBytesPerParticle = 12;
+inline constexpr double kRecordedClustersBytes = 1e9;
+
 // Collisions between two safe points of the global queue, where the limits
 // (max_collisions, max_wall_seconds), the saves and inelastic collapse are
 // looked at (event_engine.hpp).
@@ -68,6 +85,7 @@ struct ParticleParams {
   std::size_t spacetime_frames = 200;
   std::size_t spacetime_particles = 2000;  // world lines recorded (run_result.hpp: spacetime_labels)
   bool clusters = true;
+  ClusterRecord final_clusters = ClusterRecord::automatic;
   std::uint64_t max_collisions = 0;  // 0 = no limit (checked at safe points: kGlobalQueueCheckEvery)
   double max_wall_seconds = 0.0;     // 0 = no limit
 };
@@ -88,6 +106,11 @@ ParticleSolver chosen_solver(const ParticleParams& p);
 // ("particles.solver = \"auto\": the event engine, as particles.r = 0.5 > 0");
 // "" for any other solver.
 std::string solver_choice_note(const ParticleParams& p);
+
+// Whether the realizations of n particles record their final clusters (ClusterRecord).
+bool records_final_clusters(const ParticleParams& p, std::size_t n);
+// The bound of their bytes over every realization (kRecordedClusterBytesPerParticle).
+double final_clusters_bound(const ParticleParams& p, std::size_t n);
 
 // The collision rule of these parameters: r, delta, the sub-threshold kind and
 // the restitution law.

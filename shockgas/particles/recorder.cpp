@@ -38,10 +38,10 @@ std::vector<double> sample_times(double t_end, std::size_t samples) {
 Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, double mean_particle_mass,
                    const StateSink* sink)
     : p_(p),
+      n_(n),
       L_(L),
       ring_(ring),
       sink_(sink),
-      merges_only_(collision_rule(p).merges_only()),
       spacing_(L / static_cast<double>(n)),
       counted_(mean_particle_mass) {
   samples_ = sample_times(p.t_end, p.samples);
@@ -53,7 +53,7 @@ Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, 
 }
 
 ClusterCriteria Recorder::criteria(double t) const {
-  return merges_only_ ? merged_bodies_criteria() : default_cluster_criteria(p_.delta, spacing_, t);
+  return gas_cluster_criteria(p_.r, p_.delta, spacing_, t);
 }
 
 double Recorder::next_stop() const {
@@ -181,7 +181,38 @@ void Recorder::frame(double t, const ChainView& s) {
 
 double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }
 
+// The clusters of at least two particles at t (RunResult::final_clusters), by
+// the criteria and the rule the time series counts with (criteria(t), counted_:
+// MultiParticleRule). Counted first, then kept: no vector grows past what it holds. They come in
+// order of x but for the cluster across a ring's wrap, which comes last and may
+// belong first (and, should rounding put a centre of mass out of order, are sorted).
+Bodies Recorder::final_clusters(const ChainView& s, double t) const {
+  const ClusterCriteria at_t = criteria(t);
+  const SortedState sorted(s, L_, ring_);
+  const double L = ring_ ? L_ : 0.0;
+  std::size_t count = 0;
+  visit_clusters(sorted, L, at_t, [&](const Cluster& k) { count += counted_.counts(k); });
+  Bodies found;
+  found.reserve(count);
+  visit_clusters(sorted, L, at_t, [&](const Cluster& k) {
+    if (counted_.counts(k)) found.push_back(k.x, k.v, k.m);
+  });
+  if (found.size() >= 2 && found.x.back() < found.x.front())
+    for (auto* column : {&found.x, &found.v, &found.m})
+      std::rotate(column->begin(), column->end() - 1, column->end());
+  if (std::is_sorted(found.x.begin(), found.x.end())) return found;
+  std::vector<std::size_t> order(found.size());  // rounding: a centre of mass out of order
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return found.x[a] < found.x[b]; });
+  Bodies in_order;
+  in_order.reserve(order.size());
+  for (std::size_t k : order) in_order.push_back(found.x[k], found.v[k], found.m[k]);
+  return in_order;
+}
+
 RunResult Recorder::finish(const ChainView& final_state, const RunStop& stop, const Counters& c) {
+  if (records_final_clusters(p_, n_)) out_.final_clusters = final_clusters(final_state, stop.time);
   if (!sink_)
     out_.final_state = sorted_bodies(final_state, L_, ring_);
   else if (sink_->final_state)

@@ -69,19 +69,19 @@ class Recorder {
   };
   void record(double t, const Row& row, const Counters& c, std::size_t copies,
               const std::vector<double>& density);
-  // The cluster criteria at time t: none joined where every collision merges
-  // (the bodies are the clusters), else default_cluster_criteria(delta, L / n, t).
+  // The cluster criteria at time t: gas_cluster_criteria(r, delta, L / n, t).
   ClusterCriteria criteria(double t) const;
   std::size_t count_clusters(double t, const ChainView& s, ClusterCounter& counter) const;
   void snapshot(double t, const ChainView& s, std::size_t copies);
   void frame(double t, const ChainView& s);
   double wrap(double x) const;
+  Bodies final_clusters(const ChainView& s, double t) const;
 
   const ParticleParams& p_;
+  std::size_t n_;
   double L_;
   bool ring_;
   const StateSink* sink_;
-  bool merges_only_;
   double spacing_;  // L / n [length]
   MultiParticleRule counted_;
   std::vector<double> samples_, snapshots_, frames_;

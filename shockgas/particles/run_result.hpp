@@ -4,6 +4,7 @@
 // space-time record). Only what ParticleParams asks for is filled.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -103,7 +104,13 @@ struct RunSchedule {
 
 struct RunResult {
   TimeSeries series;
-  Bodies final_state;               // at stop.time: sorted; ring: x in [0, L)
+  Bodies final_state;  // at stop.time: sorted; ring: x in [0, L)
+  // At stop.time, when params.final_clusters asks (records_final_clusters): the
+  // clusters (find_clusters, gas_cluster_criteria at stop.time; r = 0: the merged
+  // bodies) holding at least two particles (MultiParticleRule), the clusters the
+  // time series counts, as centre of mass x, velocity v and mass m, in order of
+  // x (ring: in [0, L)).
+  std::optional<Bodies> final_clusters;
   std::vector<Snapshot> snapshots;  // the requested times reached
   ScaledHistogram histogram;        // empty unless params.histogram_bins > 0
   SpaceTime spacetime;              // empty unless params.spacetime

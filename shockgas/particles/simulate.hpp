@@ -90,6 +90,9 @@ struct EnsembleResult {
   // jackknife over realizations needs (shockgas/compare/realization_errors.hpp).
   std::vector<std::vector<double>> T_by_realization;          // at the samples it reached
   std::vector<std::vector<double>> histogram_by_realization;  // empty rows without a histogram
+  // Each realization's clusters of two or more particles at its end, in index
+  // order (RunResult::final_clusters; nullopt where not recorded).
+  std::vector<std::optional<Bodies>> final_clusters;
   RunResult first;             // realization 0 in full (final state, snapshots, space-time)
   std::vector<RunStop> stops;  // how each realization ended
   std::vector<std::uint64_t> collisions_per_realization;
@@ -110,7 +113,7 @@ EnsembleResult run_ensemble(const InitialCondition& initial, const ParticleParam
                             const ProgressCallback& progress = {});
 // The ensemble of realizations 0..R-1 from their runs in index order (runs[k]
 // is realization k, runs[0] whole; of the others only the series, histogram
-// density, stop and collisions are read): the one reduction of an ensemble,
+// density, final clusters, stop and collisions are read): the one reduction of an ensemble,
 // whether its realizations ran on threads, on MPI ranks or in shards, so that
 // the result depends on none of these. wall_seconds is left 0.
 EnsembleResult reduce_ensemble(std::vector<RunResult> runs);

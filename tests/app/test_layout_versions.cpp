@@ -10,6 +10,7 @@
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/output/layout_version.hpp"
 #include "shockgas/app/run/captured_outputs.hpp"
 
 namespace shockgas::app {
@@ -45,7 +46,7 @@ TEST(LayoutVersions, LoadReadsLayout1AsFloat64AndLayout2InItsDeclaredTypes) {
   EXPECT_EQ(now.datasets.at("/particles/count").storage, Storage::integer);
   EXPECT_EQ(now.datasets.at("/compare/occupied").storage, Storage::integer);
   EXPECT_EQ(now.datasets.at("/particles/T").storage, Storage::float64);
-  EXPECT_EQ(std::get<std::string>(now.attributes.at("/@layout_version")), "2.1");
+  EXPECT_EQ(std::get<std::string>(now.attributes.at("/@layout_version")), layout_version_text());
 }
 
 }  // namespace

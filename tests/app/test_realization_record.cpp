@@ -37,6 +37,7 @@ TEST(RealizationRecord, CarriesARunExactly) {
   const particles::RunResult run = run_of(small_scene(1), 0);
   ASSERT_FALSE(run.snapshots.empty());
   ASSERT_FALSE(run.spacetime.t.empty());
+  ASSERT_TRUE(run.final_clusters.has_value());
   const RealizationRecord back = decode(encode({2, 0, run}));
   EXPECT_EQ(back.ensemble, 2u);
   EXPECT_EQ(back.index, 0u);
@@ -49,6 +50,8 @@ TEST(RealizationRecord, CarriesARunExactly) {
   EXPECT_EQ(back.run.collisions, run.collisions);
   EXPECT_EQ(back.run.stop.reason, run.stop.reason);
   EXPECT_FALSE(back.states_apart);
+  ASSERT_TRUE(back.run.final_clusters.has_value());
+  EXPECT_TRUE(same_bits(back.run.final_clusters->m, run.final_clusters->m));
 }
 
 // Realization 0 whose states are in its state file says so through a message

@@ -23,6 +23,7 @@
 #include "shockgas/app/jobs/job.hpp"
 #include "shockgas/app/jobs/merge.hpp"
 #include "shockgas/app/jobs/run_scene.hpp"
+#include "shockgas/app/jobs/statistics_run.hpp"
 #include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/report/plots.hpp"
 #include "shockgas/app/scene/scene.hpp"
@@ -46,7 +47,7 @@ std::string as_directory(std::string dir) {
 
 struct Arguments {
   std::string scene_path, out_dir, result_path, realizations, variants, resume, lab_dir = "out/lab";
-  std::vector<std::string> shards;
+  std::vector<std::string> shards;  // merge: shard directories; stats: run, merged run or shard directories
   std::vector<std::string> overrides;
   bool defaults = false, markdown = false, layout = false, quiet = false, no_plots = false, force = false;
   studies::StudyOptions bench;
@@ -84,6 +85,20 @@ void add_run(CLI::App& app, Arguments& args) {
       ->excludes(realizations)
       ->excludes(variants);
   run->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
+}
+
+void add_stats(CLI::App& app, Arguments& args) {
+  auto* stats = app.add_subcommand(
+      "stats", "Shock statistics over every realization of runs, merged runs or shards (docs/statistics.md)");
+  stats
+      ->add_option("DIR", args.shards,
+                   "run, merged run or shard directories of one gas (other seeds are more realizations)")
+      ->required();
+  stats->add_option("--out", args.out_dir, "output directory (default out/<scene name>-stats/)")
+      ->check(kDirectoryName);
+  stats->add_flag("--force", args.force, "replace an output directory that holds another scene's results");
+  stats->add_flag("--quiet,-q", args.quiet, "print only where the results are");
+  stats->add_flag("--no-plots", args.no_plots, "skip statistics.png");
 }
 
 void add_merge(CLI::App& app, Arguments& args) {
@@ -182,6 +197,12 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     std::cout << "results in " << as_directory(dir) << "\n";
     return kExitOk;
   }
+  if (app.got_subcommand("stats")) {
+    const std::string dir =
+        run_statistics({args.shards, args.out_dir, args.force, !args.no_plots, args.quiet});
+    if (args.quiet) std::cout << "statistics in " << as_directory(dir) << "\n";
+    return kExitOk;
+  }
   if (app.got_subcommand("info")) {
     if (args.layout) return std::cout << describe_layout(), kExitOk;
     print_info(args.result_path, std::cout);
@@ -225,6 +246,7 @@ int run_command(int argc, char** argv) {
   Arguments args;
   add_run(app, args);
   add_merge(app, args);
+  add_stats(app, args);
   auto* info = app.add_subcommand("info", "What a result file holds, its scene and its provenance");
   info->add_option(
       "RESULT", args.result_path,
@@ -267,12 +289,13 @@ int run_command(int argc, char** argv) {
   }
   // A run that stops early, for whatever reason, leaves its output directory
   // as it was (run_directory.hpp).
-  const std::string unchanged =
-      app.got_subcommand("run") || app.got_subcommand("merge") || app.got_subcommand("bench")
-          ? " (the results in the output directory are as they were)"
-      : app.got_subcommand("tail") ? " (the output directory is as the last finished size left it, or as it "
-                                     "was before the first, each file whole)"
-                                   : "";
+  const std::string unchanged = app.got_subcommand("run") || app.got_subcommand("merge") ||
+                                        app.got_subcommand("bench") || app.got_subcommand("stats")
+                                    ? " (the results in the output directory are as they were)"
+                                : app.got_subcommand("tail")
+                                    ? " (the output directory is as the last finished size left it, or as it "
+                                      "was before the first, each file whole)"
+                                    : "";
   try {
     // SIGINT, SIGTERM -> request_interrupt, restored on return; in an MPI job
     // its session owns them (shockgas/app/jobs/mpi_job.cpp) and does the same.

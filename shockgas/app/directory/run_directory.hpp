@@ -1,7 +1,7 @@
 #pragma once
 // The output directory of a run, whole or absent (docs/output.md, "The run
 // directory"): the one mechanism by which every command writes a directory
-// (run, shard, merge, resume, animate, bench, tail, the Python module's
+// (run, shard, merge, resume, stats, animate, bench, tail, the Python module's
 // run(out=...)).
 //
 // Before any work a command takes the lock beside its target

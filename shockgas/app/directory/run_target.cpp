@@ -102,8 +102,9 @@ std::string read_text(const fs::path& file, std::uintmax_t limit) {
 
 bool run_output_name(const fs::path& relative) {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n = {"result.h5",   "summary.json", "report.md",    "report.html",
-                                  kManifestFile, "plots.log",    "animation.log"};
+    std::vector<std::string> n = {"result.h5",     "summary.json",  "report.md",
+                                  "report.html",   kManifestFile,   "plots.log",
+                                  "animation.log", "statistics.h5", "statistics.md"};
     n.insert(n.end(), studies::kTailFiles.begin(), studies::kTailFiles.end());  // also .csv, below
     return n;
   }();
@@ -158,11 +159,17 @@ void check_target_path(const fs::path& target, const std::string& out) {
 
 void check_target_spares(const fs::path& target, const std::string& out,
                          const std::vector<std::string>& inputs, const std::string& what) {
-  for (const std::string& input : inputs)
-    if (const fs::path resolved = resolve_target(input); contains(target, resolved))
+  for (const std::string& input : inputs) {
+    const fs::path resolved = resolve_target(input);
+    if (contains(target, resolved))
       refuse(out, "a directory that neither is nor holds a " + what + " (" + input + " is " +
                       (resolved == target ? "this directory" : "in it") +
                       "; the output directory is replaced as a whole)");
+    if (contains(resolved, target))
+      refuse(out,
+             "a directory outside every " + what + " (it is in " + input +
+                 ", whose files its manifest lists: a directory written into it would be a foreign file)");
+  }
 }
 
 std::optional<std::string> scene_of_results(const fs::path& dir) {

@@ -26,8 +26,9 @@ void check_target_contents(const std::filesystem::path& target, const std::strin
                            const std::string& scene, bool force);
 
 // Refuses a target that is, or holds, one of the inputs a command reads (the
-// shards of a merge: replacing the output directory would replace them). what
-// names an input in the message ("shard being merged").
+// shards of a merge: replacing the output directory would replace them), or
+// lies inside one (it would change that input). what names an input in the
+// message ("shard being merged").
 void check_target_spares(const std::filesystem::path& target, const std::string& out,
                          const std::vector<std::string>& inputs, const std::string& what);
 

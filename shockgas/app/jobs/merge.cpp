@@ -103,7 +103,7 @@ std::string merge_shards(const std::vector<std::string>& shard_dirs, const RunOp
   ParallelRun parallel{1, 1, shards.size()};
   double shard_seconds = 0;
   for (const ShardHeader& h : shards) {
-    for (auto& r : read_shard_records(h)) records.push_back(std::move(r));
+    for (auto& r : read_shard_records(h.dir, h.verified)) records.push_back(std::move(r));
     parallel.ranks = std::max(parallel.ranks, static_cast<int>(std::min<std::uint64_t>(h.ranks, 1u << 30)));
     parallel.threads = std::max<std::size_t>(parallel.threads, h.threads);
     shard_seconds += h.wall_seconds;

@@ -125,21 +125,20 @@ ShardHeader read_shard_header(const std::string& dir) {
   return h;
 }
 
-std::vector<RealizationRecord> read_shard_records(const ShardHeader& shard) {
-  const ResultContents h5 = read_result(shard_file(shard.dir), shard.verified, [](const std::string& path) {
-    return path.rfind("/shard/", 0) == 0;
-  });
+std::vector<RealizationRecord> read_shard_records(const std::string& dir, Verification checked) {
+  const ResultContents h5 = read_result(
+      shard_file(dir), checked, [](const std::string& path) { return path.rfind("/shard/", 0) == 0; });
   std::map<std::pair<std::size_t, std::uint64_t>, RecordFields> fields;
   for (const auto& [path, values] : h5.values) {
     // /shard/{e}/{k}/{field...}
     const auto e_end = path.find('/', 7);
     const auto k_end = e_end == std::string::npos ? e_end : path.find('/', e_end + 1);
     if (k_end == std::string::npos)
-      throw InputError("shard", to_text(shard.dir),
+      throw InputError("shard", to_text(dir),
                        "a shard whose result.h5 shockgas wrote (it holds " + printable(path) +
                            ", not /shard/{e}/{k}/{field})");
-    const std::size_t e = whole_number(path.substr(7, e_end - 7), path, shard.dir);
-    const std::uint64_t k = whole_number(path.substr(e_end + 1, k_end - e_end - 1), path, shard.dir);
+    const std::size_t e = whole_number(path.substr(7, e_end - 7), path, dir);
+    const std::uint64_t k = whole_number(path.substr(e_end + 1, k_end - e_end - 1), path, dir);
     fields[{e, k}].emplace_back(path.substr(k_end + 1), values);
   }
   std::vector<RealizationRecord> records;

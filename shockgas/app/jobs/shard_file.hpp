@@ -38,8 +38,10 @@ struct ShardHeader {
 // without an attribute a shard has; FileProblem for a damaged result.h5
 // (result_reader.hpp: read in a child process).
 ShardHeader read_shard_header(const std::string& dir);
-// Every record of the shard (only /shard/..., never a whole run's datasets);
-// its result.h5 is not hashed again (a shard's may be gigabytes).
-std::vector<RealizationRecord> read_shard_records(const ShardHeader& shard);
+// Every record of the shard in dir (only /shard/..., never a whole run's
+// datasets), whose result.h5 check_result_file() has passed with this verdict
+// (ShardHeader::verified, or a reader's that read it first): it is not hashed
+// again (a shard's may be gigabytes).
+std::vector<RealizationRecord> read_shard_records(const std::string& dir, Verification checked);
 
 }  // namespace shockgas::app

@@ -1,11 +1,10 @@
 #pragma once
 // The version of the layout of result.h5 (docs/output.md, "Layout version"):
 // major.minor, written as the file's attribute /@layout_version. A minor
-// version adds datasets or attributes a reader of the same major may ignore,
-// or changes what a dataset counts under its path, type and unit (2.1:
-// /particles/n_clusters); a major version changes a path's type, its unit or
-// its place. A file without the attribute is of layout 1.0 (written before it
-// was versioned).
+// version adds datasets or attributes a reader of the same major may ignore;
+// a major version changes what a path holds, its type or its place (3.0:
+// /particles/n_clusters counts the clusters of two or more particles). A file
+// without the attribute is of layout 1.0 (written before it was versioned).
 // Every reader (Hdf5File::open: info, merge, animate, the report, the Python
 // load) reads every layout of its major and below, and refuses a newer major.
 #include <string>
@@ -17,17 +16,17 @@ struct LayoutVersion {
 };
 
 // The layout this build writes.
-inline constexpr LayoutVersion kLayoutVersion{2, 1};
+inline constexpr LayoutVersion kLayoutVersion{3, 0};
 
-// "2.1".
+// "3.0".
 std::string layout_version_text(LayoutVersion v = kLayoutVersion);
 
 // The version an attribute's text names ("" = 1.0, before versioning);
 // FileProblem for a text that is not major.minor.
 LayoutVersion parse_layout_version(const std::string& file, const std::string& text);
 
-// FileProblem (exit 2) "written in layout 3.0; this shockgas reads layouts
-// 1.0 to 2.x" when the file's major is newer than kLayoutVersion's.
+// FileProblem (exit 2) "written in layout 4.0; this shockgas reads layouts
+// 1.0 to 3.x" when the file's major is newer than kLayoutVersion's.
 void check_layout_version(const std::string& file, const std::string& text);
 
 }  // namespace shockgas::app

@@ -1,6 +1,7 @@
 // Each realization's own series in result.h5, and the error bars they give the
 // analysis (a jackknife over realizations, shockgas/compare/realization_errors.hpp) in
 // summary.json, declared once.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,6 +12,9 @@ namespace shockgas::app::layout {
 namespace {
 
 using Json = nlohmann::ordered_json;
+
+const char* const kClustersWhen =
+    "when particles.final_clusters records them (auto: N x realizations <= 8.3 x 10^7)";
 
 // Rows of different lengths as one matrix, NaN where a row ends early.
 void ragged_matrix(const std::vector<std::vector<double>>& rows, Emitter& out) {
@@ -33,6 +37,19 @@ Emit error_of(F f) {
   };
 }
 
+// Every realization's final clusters, one field of them (&Bodies::x, v or m)
+// concatenated in index order; nothing unless every realization recorded them.
+bool all_recorded(const particles::EnsembleResult& e) {
+  return !e.final_clusters.empty() && std::all_of(e.final_clusters.begin(), e.final_clusters.end(),
+                                                  [](const auto& c) { return c.has_value(); });
+}
+void concatenated(const particles::EnsembleResult& e, std::vector<double> Bodies::*field, Emitter& out) {
+  if (!all_recorded(e)) return;
+  std::vector<double> all;
+  for (const auto& c : e.final_clusters) all.insert(all.end(), ((*c).*field).begin(), ((*c).*field).end());
+  out.values(all);
+}
+
 }  // namespace
 
 std::vector<Declaration> realization_datasets() {
@@ -53,6 +70,39 @@ std::vector<Declaration> realization_datasets() {
               "when particles.histogram_bins > 0",
               ensemble([](const particles::EnsembleResult& e, Emitter& out) {
                 ragged_matrix(e.histogram_by_realization, out);
+              })),
+      dataset(p, "/particles/realizations/stop_time", "time",
+              "when each realization ended (t_end where it completed; /particles@stop_reason for "
+              "realization 0)",
+              "", ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+                std::vector<double> t;
+                for (const particles::RunStop& s : e.stops) t.push_back(s.time);
+                out.values(t);
+              })),
+      stored_as(Storage::integer,
+                dataset(p, "/particles/realizations/clusters_count", "1",
+                        "how many clusters of at least two particles each realization holds at its end: "
+                        "realization k's are entries sum(count[:k]) .. of clusters_x, clusters_v, clusters_m",
+                        kClustersWhen, ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+                          if (!all_recorded(e)) return;
+                          std::vector<double> count;
+                          for (const auto& c : e.final_clusters)
+                            count.push_back(static_cast<double>(c->size()));
+                          out.values(count);
+                        }))),
+      dataset(p, "/particles/realizations/clusters_x", "length",
+              "centre of mass of each cluster of at least two particles (as /particles/n_clusters counts "
+              "them, at the end; r = 0: the merged bodies), each realization's in order of x",
+              kClustersWhen, ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+                concatenated(e, &Bodies::x, out);
+              })),
+      dataset(p, "/particles/realizations/clusters_v", "length/time", "velocity of each of those clusters",
+              kClustersWhen, ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+                concatenated(e, &Bodies::v, out);
+              })),
+      dataset(p, "/particles/realizations/clusters_m", "mass", "mass of each of those clusters",
+              kClustersWhen, ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+                concatenated(e, &Bodies::m, out);
               })),
   };
 }

@@ -72,8 +72,9 @@ std::vector<Declaration> shard_datasets() {
               "", fields_of_depth(1, 0)),
       dataset(
           p, "/shard/{e}/{k}/{group}/{field}", "",
-          "its series (t, T, ...: the columns of /particles), histogram (shape = zmax and bins, t, density); "
-          "for realization 0 also its final state (final/x, v, m) and space-time record (spacetime/labels, "
+          "its series (t, T, ...: the columns of /particles), histogram (shape = zmax and bins, t, density), "
+          "final clusters (clusters/x, v, m, as particles.final_clusters says); for realization 0 also its "
+          "final state (final/x, v, m) and space-time record (spacetime/labels, "
           "t, x)",
           "", fields_of_depth(2, 0)),
       dataset(p, "/shard/{e}/{k}/snapshots/{i}/{field}", "", "realization 0's snapshot i (t, x, v, m)",

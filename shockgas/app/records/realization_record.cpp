@@ -81,6 +81,7 @@ RecordFields to_fields(const RunResult& run) {
   f.emplace_back("schedule/order", text_codes(run.schedule.order));
   f.emplace_back("schedule/why_global", text_codes(run.schedule.why_global));
   if (run.final_state.size() > 0) put_bodies(f, "final", run.final_state);
+  if (run.final_clusters) put_bodies(f, "clusters", *run.final_clusters);
   for (std::size_t k = 0; k < run.snapshots.size(); ++k) {
     const std::string prefix = "snapshots/" + std::to_string(k);
     f.emplace_back(prefix + "/t", std::vector<double>{run.snapshots[k].t});
@@ -116,6 +117,7 @@ RunResult from_fields(const RecordFields& fields) {
   run.schedule.order = from_codes(in.array("schedule/order"));
   run.schedule.why_global = from_codes(in.array("schedule/why_global"));
   if (in.has("final/x")) run.final_state = in.bodies("final");
+  if (in.has("clusters/x")) run.final_clusters = in.bodies("clusters");
   for (std::size_t k = 0; in.has("snapshots/" + std::to_string(k) + "/t"); ++k) {
     const std::string prefix = "snapshots/" + std::to_string(k);
     run.snapshots.push_back({in.numbers(prefix + "/t", 1)[0], in.bodies(prefix)});

@@ -4,10 +4,10 @@
 // shard and read back for a merge (and saved with a checkpoint), so that every
 // path hands particles::reduce_ensemble the same numbers, bit for bit.
 //
-// A record holds the time series, the histogram, how the run ended and its
-// collisions; the record of realization 0 also holds its states (final state,
-// snapshots, space-time record), which the other realizations never carry
-// (strip_states).
+// A record holds the time series, the histogram, the final clusters (when
+// recorded), how the run ended and its collisions; the record of realization 0
+// also holds its states (final state, snapshots, space-time record), which the
+// other realizations never carry (strip_states).
 #include <cstdint>
 #include <string>
 #include <utility>

@@ -78,6 +78,11 @@ void particle_memory(const Scene& s, std::vector<ResourceItem>& items) {
                    "the time series of every realization",
                    R * samples * kSeriesColumns * 8,
                    {"particles.realizations"}});
+  if (particles::records_final_clusters(p, s.initial.N))
+    items.push_back({"particles.final_clusters",
+                     "the final clusters of every realization (at most N / 2 each)",
+                     particles::final_clusters_bound(p, s.initial.N),
+                     {"initial.N", "particles.realizations"}});
   if (p.histogram_bins > 0)
     items.push_back({"particles.histogram_bins",
                      "the velocity histograms of every realization",
@@ -151,6 +156,11 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
                        {"particles.spacetime_frames", "particles.spacetime_particles", "initial.N"}});
     if (!p.snapshots.empty())
       items.push_back({"particles.snapshots", "the snapshots", d(p.snapshots.size()) * N * kBodyBytes});
+    if (particles::records_final_clusters(p, s.initial.N))
+      items.push_back({"particles.final_clusters",
+                       "the final clusters of every realization (at most N / 2 each)",
+                       particles::final_clusters_bound(p, s.initial.N),
+                       {"initial.N", "particles.realizations"}});
     if (keeps_states_apart(s))
       items.push_back({"initial.N",
                        "realization 0's states in their file beside the results until they are written",

@@ -6,6 +6,7 @@
 
 #include "shockgas/app/output/run_results.hpp"
 #include "shockgas/compare/shock_mass_law.hpp"
+#include "shockgas/compare/shock_statistics.hpp"
 #include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -20,14 +21,11 @@ const continuum::ContinuumResult& compared_field(const Scene& scene,
   throw RunError("compare: solver " + scene.compare.solver + " did not run");
 }
 
-// Edges 1.5, 2.5, 4.5, ..., 2^k + 0.5 up to past the heaviest cluster: each bin
-// holds whole particle masses, twice as many as the one before.
+// Edges 1.5, 2.5, 4.5, ... particles up to past the heaviest cluster.
 std::vector<double> mass_edges(const std::vector<particles::Cluster>& clusters) {
   double heaviest = 0;
   for (const auto& c : clusters) heaviest = std::max(heaviest, c.m);
-  std::vector<double> edges{1.5, 2.5};  // at least one bin, when no cluster is heavier than a particle
-  for (double m = 4; edges.back() <= heaviest; m *= 2) edges.push_back(m + 0.5);
-  return edges;
+  return compare::doubling_mass_edges(heaviest);
 }
 
 std::vector<double> counts_in(const std::vector<double>& edges,
