@@ -38,7 +38,13 @@ def _count_in_time(ax, f, summary):
     start = max(t[0], t_stick) if t_stick else t[0]
     # The laws are statistical (none over a few bodies) and hold from 10 t_stick (theory.shock_count).
     gas = is_gas(summary) and theory(summary, "shock_count") is not None
-    if coefficient is not None and N and start < t[-1] and gas:
+    exact_count = an["n_clusters_exact"][:][ok] if an is not None and "n_clusters_exact" in an else None
+    if exact_count is not None and start < t[-1] and gas:
+        late = t >= start
+        ax.plot(t[late], exact_count[late], **EXACT,
+                label="exact: shocks heavier than 1.5 particles of Burgers turbulence from this white noise "
+                      "(shock-mass law)")
+    elif coefficient is not None and N and start < t[-1] and gas:
         tt = np.geomspace(start, t[-1], 50)
         ax.plot(tt, coefficient * tt ** (-2 / 3), **EXACT,
                 label=rf"exact: shocks of Burgers turbulence from this white noise, ${coefficient / N:.4g}\,N t^{{-2/3}}$"

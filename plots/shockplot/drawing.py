@@ -1,6 +1,7 @@
 """The drawing of a run directory by one process (plots/plot_result.py): the
-libraries are imported once, then the pictures (pictures.py) and, when asked,
-the animation (movie_files.py) are drawn by as many worker processes as there
+libraries are imported once, then the pictures (pictures.py), the statistics
+page where the run wrote statistics.csv (statistics.py) and, when asked, the
+animation (movie_files.py) are drawn by as many worker processes as there
 are free cores to run them, forked after the imports. The workers take the jobs from
 one queue, the costliest first, so that the animation runs beside the pictures
 and two pictures never wait for each other.
@@ -18,11 +19,14 @@ from .movie_files import draw_animation
 from .pictures import called_for, draw
 from .run_files import open_result, read_summary
 from .saving import CannotWrite
+from .statistics import CSV as STATISTICS_CSV
+from .statistics import PNG as STATISTICS_PNG
+from .statistics import draw_statistics
 
 ANIMATION = "animation"
 # What a job costs, roughly (the queue hands the costliest out first).
 COST = {ANIMATION: 100, "fields.png": 6, "clusters.png": 5, "temperature.png": 4, "evolution.png": 4,
-        "regimes.png": 3, "velocity_distribution.png": 2, "spacetime.png": 2}
+        "regimes.png": 3, "velocity_distribution.png": 2, "spacetime.png": 2, STATISTICS_PNG: 4}
 FAILED, CANNOT_WRITE = 1, 4  # exit codes (plots/plot_result.py)
 BUSY = 50  # per cent of the time some task waited for a CPU
 
@@ -32,6 +36,7 @@ def jobs(out_dir, animation):
     with open_result(out_dir) as f:
         names = list(called_for(f, read_summary(out_dir, missing={})))
     names += [ANIMATION] if animation else []
+    names += [STATISTICS_PNG] if os.path.exists(os.path.join(out_dir, STATISTICS_CSV)) else []
     return sorted(names, key=lambda name: -COST.get(name, 1))
 
 
@@ -80,6 +85,8 @@ def _work(out_dir, names, queue, report, who):
             try:
                 if name == ANIMATION:
                     draw_animation(out_dir, who)
+                elif name == STATISTICS_PNG:
+                    draw_statistics(out_dir)
                 else:
                     draw(f, summary, out_dir, name)
             except CannotWrite as exc:

@@ -81,4 +81,13 @@ std::vector<double> expected_shocks_in_mass_bins(std::span<const double> mass_ed
   return count;
 }
 
+double expected_shocks_above(double mass, double D, double L, double rho, double t) {
+  require(mass >= 0, "compare.mass", mass, ">= 0");
+  for (const auto& [name, value] :
+       {std::pair{"compare.D", D}, {"compare.length", L}, {"compare.density", rho}, {"compare.t", t}})
+    require_above(name, value, 0.0);
+  const double a = std::cbrt(4 * D * t * t), mu = mass / (rho * a);
+  return mu >= kMuMax ? 0.0 : L / a * shock_mass_integral(mu, kMuMax);
+}
+
 }  // namespace shockgas::compare

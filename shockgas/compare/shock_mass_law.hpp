@@ -37,4 +37,9 @@ double shock_mass_integral(double mu1, double mu2);
 std::vector<double> expected_shocks_in_mass_bins(std::span<const double> mass_edges, double D, double L,
                                                  double rho, double t);
 
+// The expected number of shocks heavier than `mass` (the same gas and units):
+// (L / a) int_{mass / (rho a)}^inf N(mu) dmu. Throws InputError unless mass >= 0
+// and D, L, rho, t > 0.
+double expected_shocks_above(double mass, double D, double L, double rho, double t);
+
 }  // namespace shockgas::compare

@@ -63,6 +63,20 @@ TEST(ShockMassLaw, BinsInTheGasUnitsAddUpToTheShockCount) {
   EXPECT_THROW(expected_shocks_in_mass_bins(std::vector<double>{2, 1}, D, L, 1.0, t), InputError);
 }
 
+// The shocks above a mass: all of them from 0 (1.916 N t^(-2/3), as above), the
+// heavy bins' sum above an edge (the same quadrature: agreement to rounding),
+// none beyond mu = 12 (the law's cut-off, e^-288 of its scale).
+TEST(ShockMassLaw, ShocksAboveAMassAreTheBinsAboveIt) {
+  const double D = 1.0 / 3, L = 1e6, t = 1000, a = std::cbrt(4 * D * t * t);
+  EXPECT_NEAR(expected_shocks_above(0, D, L, 1.0, t) / (L * std::pow(t, -2.0 / 3)), 1.9157, 5e-5);
+  const std::vector<double> edges{1.5, 2.5, 4.5, 8.5, 12 * a};
+  double heavy = 0;
+  for (double c : expected_shocks_in_mass_bins(edges, D, L, 1.0, t)) heavy += c;
+  EXPECT_NEAR(expected_shocks_above(1.5, D, L, 1.0, t) / heavy, 1.0, 1e-12);
+  EXPECT_EQ(expected_shocks_above(12 * a, D, L, 1.0, t), 0.0);
+  EXPECT_THROW(expected_shocks_above(-1, D, L, 1.0, t), InputError);
+}
+
 // The references of a white-noise start: T t^(2/3) -> 0.2129 and 1.916 N t^(-2/3)
 // shocks for the gas's uniform velocities (docs/paper.md); nothing for other starts.
 TEST(WhiteNoiseReferences, TheGasStartHasTheQuotedLaws) {

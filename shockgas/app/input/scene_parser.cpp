@@ -130,6 +130,7 @@ void read_tables(const toml::table& root, const std::string& path, Scene& scene)
   scene.has_particles = root.contains("particles");
   scene.has_continuum = root.contains("continuum");
   scene.has_compare = root.contains("compare");
+  scene.has_statistics = root.contains("statistics");
   scene.has_sweep = root.contains("sweep");
 }
 
@@ -200,6 +201,21 @@ void validate_compare(const Scene& scene) {
           "particle data (not \"" + name_of(Velocities::expression) + "\") when [compare] is present");
 }
 
+// [statistics] reduces each realization's final clusters: it needs the
+// particles, recording them.
+void validate_statistics(const Scene& scene) {
+  require(scene.has_particles, "statistics", std::string("(table)"),
+          "[statistics] only together with [particles]");
+  const particles::ParticleParams& p = scene.particles;
+  const double most = particles::kRecordedClustersBytes / particles::kRecordedClusterBytesPerParticle;
+  require(particles::records_final_clusters(p, scene.initial.N), "particles.final_clusters",
+          name_of(p.final_clusters),
+          "\"always\", or \"auto\" while initial.N x particles.realizations <= " + to_text(most, 2) +
+              " (here " +
+              to_text(static_cast<double>(scene.initial.N) * static_cast<double>(p.realizations), 3) +
+              "), when [statistics] is present: it reduces each realization's final clusters");
+}
+
 // The name becomes a directory, out/<name>/: a name, not a path.
 void validate_name(const Scene& scene) {
   const std::string& n = scene.name;
@@ -221,6 +237,7 @@ void validate_scene(const Scene& scene) {
     require(scene.continuum.t_end > 0, "continuum.t_end", scene.continuum.t_end,
             "a time > 0 (a scene without [particles] must give continuum.t_end)");
   if (scene.has_compare) validate_compare(scene);
+  if (scene.has_statistics) validate_statistics(scene);
   check_animation(scene);
 }
 

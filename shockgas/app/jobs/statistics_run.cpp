@@ -5,10 +5,9 @@
 
 #include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/directory/run_target.hpp"
-#include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
-#include "shockgas/app/jobs/statistics_files.hpp"
 #include "shockgas/app/jobs/statistics_sources.hpp"
+#include "shockgas/app/output/statistics_files.hpp"
 #include "shockgas/app/report/plots.hpp"
 #include "shockgas/core/error.hpp"
 
@@ -75,12 +74,8 @@ std::string run_statistics(const StatisticsOptions& options) {
     throw InputError("stats", all_of(options.dirs), "realizations that reached t_end; none of these did");
   std::vector<Bodies> clusters;
   for (const auto& [key, b] : reached) clusters.push_back(*b);
-  const compare::ShockStatistics stats = compare::shock_statistics(clusters, statistics_shape(scene));
-
-  write_statistics_h5(out.staging() / "statistics.h5", stats, about);
-  write_statistics_csv(out.staging() / "statistics.csv", stats);
-  const std::string text = statistics_markdown(stats, about);
-  write_file(out.staging() / "statistics.md", text);
+  const std::string text =
+      write_statistics(out.staging(), {compare::shock_statistics(clusters, statistics_shape(scene)), about});
   std::string notes;
   if (options.plots)
     notes = run_plot_script("plot_statistics.py", "SHOCKGAS_PLOT_STATISTICS_SCRIPT", out.staging().string(),

@@ -8,7 +8,6 @@
 #include "shockgas/app/input/scene_parser.hpp"
 #include "shockgas/app/jobs/shard_file.hpp"
 #include "shockgas/app/output/result_reader.hpp"
-#include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::app {
@@ -109,21 +108,6 @@ std::string gas_of(const Scene& scene) {
     if (keep && !key.empty()) out += table.substr(1, table.size() - 2) + "." + line + "\n";
   }
   return out;
-}
-
-compare::StatisticsShape statistics_shape(const Scene& scene) {
-  compare::StatisticsShape shape;
-  const InitialParams& p = scene.initial;
-  shape.N = static_cast<double>(p.N);
-  shape.L = domain_length(p);
-  shape.t = scene.particles.t_end;
-  shape.ring = scene.particles.geometry == particles::Geometry::ring;
-  // Lattice and random starts hold particles of mass 1; expressions and files
-  // their own masses (the same in every realization).
-  const bool own_masses = p.velocities == Velocities::expression || p.velocities == Velocities::file;
-  shape.mass = own_masses ? total_mass(make_initial_bodies(p, 0)) : shape.N;
-  if (const auto exact = compare::white_noise_references(p)) shape.white_noise_D = exact->D;
-  return shape;
 }
 
 StatisticsSource read_statistics_source(const std::string& dir) {

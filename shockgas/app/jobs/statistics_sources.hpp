@@ -37,8 +37,4 @@ StatisticsSource read_statistics_source(const std::string& dir);
 // per line (sources with different seeds are independent samples of one gas).
 std::string gas_of(const Scene& scene);
 
-// The shape compare::shock_statistics needs (white-noise D where the start is
-// white noise on a lattice).
-compare::StatisticsShape statistics_shape(const Scene& scene);
-
 }  // namespace shockgas::app

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "shockgas/app/output/frames.hpp"
+#include "shockgas/app/output/statistics_files.hpp"
 #include "shockgas/app/records/realization_record.hpp"
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/compare/field_distance.hpp"
@@ -54,6 +55,10 @@ struct ParticleResults {
   // and the exact mass-weighted law of z averaged over the histogram's bins.
   std::optional<compare::WhiteNoiseReferences> exact;
   std::vector<double> histogram_exact;
+  // With exact and particles.clusters: the exact expected number of shocks the
+  // time series counts (heavier than MultiParticleRule's 1.5 M / N) at each
+  // sample time (shock_mass_law.hpp).
+  std::vector<double> n_clusters_exact;
   std::optional<compare::AnalysisErrors> errors;  // jackknife over realizations (2 or more)
 };
 
@@ -105,9 +110,10 @@ struct RunResults {
   std::optional<ParticleResults> particles;
   std::vector<ContinuumRun> continuum;
   std::optional<Comparison> comparison;
-  std::optional<Frames> frames;         // when output.animation
-  std::vector<VariantResult> variants;  // a sweep's
-  std::optional<ShardResults> shard;    // a shard's
+  std::optional<Frames> frames;                // when output.animation
+  std::optional<StatisticsResult> statistics;  // when [statistics]
+  std::vector<VariantResult> variants;         // a sweep's
+  std::optional<ShardResults> shard;           // a shard's
 };
 
 // A particle ensemble computed elsewhere (gathered from the ranks of an MPI job,
@@ -130,5 +136,8 @@ std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialConditi
                                         ProgressBar& progress);
 Comparison run_comparison(const Scene& scene, const InitialCondition& initial,
                           const ParticleResults& particles, const std::vector<ContinuumRun>& continuum);
+// [statistics]: the shock statistics of the realizations that reached t_end
+// (compare::shock_statistics of their final clusters); RunError when none did.
+StatisticsResult run_statistics_stage(const Scene& scene, const particles::EnsembleResult& ensemble);
 
 }  // namespace shockgas::app

@@ -6,6 +6,7 @@
 #include <optional>
 #include <sstream>
 
+#include "shockgas/app/output/statistics_files.hpp"
 #include "shockgas/app/output/theory_scopes.hpp"
 #include "shockgas/compare/cooling_corrections.hpp"
 #include "shockgas/compare/theory.hpp"
@@ -166,6 +167,13 @@ void comparison_part(std::ostream& out, const RunResults& r) {
 
 }  // namespace
 
+// The numbers of statistics.md under the report's own heading.
+void statistics_part(std::ostream& out, const StatisticsResult& s) {
+  const std::string page = statistics_markdown(s.stats, s.about);
+  out << "## Shock statistics over the realizations (statistics.md, statistics.png)\n"
+      << page.substr(page.find('\n') + 1) << "\n";
+}
+
 std::string phase_times_text(const std::vector<std::pair<std::string, double>>& phases) {
   std::ostringstream out;
   out << "## Time of each phase\n\n"
@@ -190,6 +198,7 @@ std::string report_text(const RunResults& r) {
   }
   if (!r.continuum.empty()) continuum_part(out, scene, r.continuum);
   if (r.comparison) comparison_part(out, r);
+  if (r.statistics) statistics_part(out, *r.statistics);
   return out.str();
 }
 

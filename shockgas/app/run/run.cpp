@@ -156,6 +156,10 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
     r.particles = run_particles(scene, initial, r.shape, progress, source);
     sink(r, Part::particles);
     sink(r, Part::analysis);
+    if (scene.has_statistics) {
+      progress.phase("statistics: the clusters of every realization at t_end");
+      r.statistics = run_statistics_stage(scene, r.particles->ensemble);
+    }
     release_records(*r.particles);
   }
   if (scene.has_continuum) {
@@ -201,6 +205,7 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
   }
   write_xdmf(dir.string());
   write_file(dir / "summary.json", summary.dump(2) + "\n");
+  if (r.statistics) write_statistics(dir, *r.statistics);
   if (options.plots && scene.output.plots)
     draw_plots(dir, scene.output.animation, progress,
                variant != std::string::npos ? dir.filename().string() : "");

@@ -12,13 +12,26 @@
 #include "shockgas/app/run/progress_bar.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
 #include "shockgas/compare/heaviest.hpp"
+#include "shockgas/compare/shock_mass_law.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/interrupt.hpp"
+#include "shockgas/particles/cluster_finder.hpp"
 
 namespace shockgas::app {
 
 namespace {
+
+// The exact expected number of shocks heavier than the lightest cluster the
+// time series counts (MultiParticleRule: 1.5 M / N), at each sample time.
+std::vector<double> exact_cluster_counts(const compare::WhiteNoiseReferences& w, const std::vector<double>& t,
+                                         const Scene& scene) {
+  const double mean_mass = w.density * w.length / static_cast<double>(scene.initial.N);
+  const double lightest = particles::MultiParticleRule(mean_mass).heavy_mass();
+  std::vector<double> n;
+  for (double ti : t) n.push_back(compare::expected_shocks_above(lightest, w.D, w.length, w.density, ti));
+  return n;
+}
 
 bool contains(const std::vector<double>& times, double t) {
   return std::find(times.begin(), times.end(), t) != times.end();
@@ -85,6 +98,8 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   r.exact = compare::white_noise_references(scene.initial);
   if (r.exact && r.histogram.bins > 0)
     r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
+  if (r.exact && scene.particles.clusters)
+    r.n_clusters_exact = exact_cluster_counts(*r.exact, r.ensemble.t, scene);
   r.errors = compare::jackknife_analysis(
       r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r, fit.t_min, fit.t_max, r.histogram,
       r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);

@@ -83,6 +83,7 @@ struct Scene {
   bool has_particles = false;
   bool has_continuum = false;
   bool has_compare = false;
+  bool has_statistics = false;  // [statistics]: the shock statistics into the run directory
 
   // Where each key was set ("scene.toml:12" or "--set particles.r=0.5").
   std::map<std::string, std::string> key_origin;

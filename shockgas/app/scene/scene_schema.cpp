@@ -97,6 +97,12 @@ std::vector<TableSpec> build_schema() {
           compare::parameters(),
           "the particle analysis, and particles against continuum (present with [continuum] = compare)",
           +[](Scene& s) -> compare::CompareParams& { return s.compare; }),
+      TableSpec{
+          "statistics",
+          "the shock statistics of every realization's clusters at t_end, as `shockgas stats` computes "
+          "them, written into the run directory as statistics.h5, .csv, .md and .png (present = compute "
+          "them; needs [particles] and its final clusters, particles.final_clusters); no keys",
+          {}},
       bind(
           sweep, "variants of the scene run side by side (present = sweep)",
           +[](Scene& s) -> SweepParams& { return s.sweep; }),

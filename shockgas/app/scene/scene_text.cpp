@@ -24,7 +24,9 @@ std::string comment(const ParameterInfo& info) {
 std::string print_tables(const Scene& scene, bool with_comments) {
   std::ostringstream out;
   for (const auto& table : scene_schema()) {
-    const std::string off = table.name == "sweep" && !scene.has_sweep ? "# " : "";
+    const bool absent =
+        (table.name == "sweep" && !scene.has_sweep) || (table.name == "statistics" && !scene.has_statistics);
+    const std::string off = absent ? "# " : "";
     if (with_comments) out << "\n# " << table.doc << "\n";
     out << off << "[" << table.name << "]\n";
     for (const auto& key : table.keys) {
@@ -99,8 +101,9 @@ std::string scene_reference_markdown() {
          "A bad value stops the run before any work with `file:line: table.key = value is not allowed;\n"
          "allowed: ...` and exit code 2. Integers may be written as whole-number floats (`N = 1e6`).\n";
   for (const auto& table : scene_schema()) {
-    out << "\n## [" << table.name << "]\n\n" << sentence(table.doc) << "\n\n";
-    out << "| key | kind | default | unit | allowed | meaning |\n|---|---|---|---|---|---|\n";
+    out << "\n## [" << table.name << "]\n\n" << sentence(table.doc) << "\n";
+    if (table.keys.empty()) continue;
+    out << "\n| key | kind | default | unit | allowed | meaning |\n|---|---|---|---|---|---|\n";
     for (const auto& key : table.keys) {
       const auto& i = key.info;
       out << "| `" << i.key << "` | " << i.kind << " | " << code_cell(toml_text(key.get(defaults))) << " | "

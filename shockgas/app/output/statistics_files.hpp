@@ -1,12 +1,15 @@
 #pragma once
-// The files of `shockgas stats` (statistics_run.hpp), from one
-// compare::ShockStatistics: statistics.h5 (group /statistics, every dataset
-// with its unit and meaning), statistics.csv (one row per bin or number) and
-// statistics.md (the numbers in words, each law with where it holds).
+// The shock statistics' files, from one compare::ShockStatistics, written by
+// `shockgas stats` (jobs/statistics_run.hpp) and by a run whose scene has
+// [statistics] (run/stage_statistics.cpp): statistics.h5 (group /statistics,
+// every dataset with its unit and meaning), statistics.csv (one row per bin or
+// number) and statistics.md (the numbers in words, each law with where it
+// holds); statistics.png is drawn from statistics.csv.
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "shockgas/app/scene/scene.hpp"
 #include "shockgas/compare/shock_statistics.hpp"
 
 namespace shockgas::app {
@@ -20,10 +23,23 @@ struct StatisticsAbout {
   double r = 0;                      // particles.r of the gas
 };
 
+// The statistics with where they come from: what a run with [statistics] holds.
+struct StatisticsResult {
+  compare::ShockStatistics stats;
+  StatisticsAbout about;
+};
+
+// The shape compare::shock_statistics needs (white-noise D where the start is
+// white noise on a lattice).
+compare::StatisticsShape statistics_shape(const Scene& scene);
+
 void write_statistics_h5(const std::filesystem::path& file, const compare::ShockStatistics& s,
                          const StatisticsAbout& about);
 void write_statistics_csv(const std::filesystem::path& file, const compare::ShockStatistics& s);
 // statistics.md's text, also what the command prints.
 std::string statistics_markdown(const compare::ShockStatistics& s, const StatisticsAbout& about);
+
+// statistics.h5, statistics.csv and statistics.md into dir; returns the markdown.
+std::string write_statistics(const std::filesystem::path& dir, const StatisticsResult& r);
 
 }  // namespace shockgas::app

@@ -1,4 +1,4 @@
-#include "shockgas/app/jobs/statistics_files.hpp"
+#include "shockgas/app/output/statistics_files.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,7 @@
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/layout_version.hpp"
+#include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/version.hpp"
 
 namespace shockgas::app {
@@ -70,6 +71,21 @@ std::string test_words(const BinnedStatistic& b) {
 }
 
 }  // namespace
+
+compare::StatisticsShape statistics_shape(const Scene& scene) {
+  compare::StatisticsShape shape;
+  const InitialParams& p = scene.initial;
+  shape.N = static_cast<double>(p.N);
+  shape.L = domain_length(p);
+  shape.t = scene.particles.t_end;
+  shape.ring = scene.particles.geometry == particles::Geometry::ring;
+  // Lattice and random starts hold particles of mass 1; expressions and files
+  // their own masses (the same in every realization).
+  const bool own_masses = p.velocities == Velocities::expression || p.velocities == Velocities::file;
+  shape.mass = own_masses ? total_mass(make_initial_bodies(p, 0)) : shape.N;
+  if (const auto exact = compare::white_noise_references(p)) shape.white_noise_D = exact->D;
+  return shape;
+}
 
 void write_statistics_h5(const std::filesystem::path& file, const ShockStatistics& s,
                          const StatisticsAbout& about) {
@@ -164,6 +180,14 @@ std::string statistics_markdown(const ShockStatistics& s, const StatisticsAbout&
            "numbers are measured only.\n";
   }
   return out.str();
+}
+
+std::string write_statistics(const std::filesystem::path& dir, const StatisticsResult& r) {
+  write_statistics_h5(dir / "statistics.h5", r.stats, r.about);
+  write_statistics_csv(dir / "statistics.csv", r.stats);
+  std::string text = statistics_markdown(r.stats, r.about);
+  write_file(dir / "statistics.md", text);
+  return text;
 }
 
 }  // namespace shockgas::app
