@@ -153,8 +153,9 @@ py::dict solve(const std::string& name, const py::handle& v0, const py::handle& 
   const std::string stage = "continuum/" + name;
   auto work = [&](ProgressRelay& relay) {
     relay.report(stage, 0.0, 0.0);
-    auto r = continuum::solve(name, f, p, p.t_end,
-                              [&](double fraction, double t) { relay.report(stage, fraction, t); });
+    auto r = continuum::solve(name, f, p, p.t_end, [&](double fraction, double t, std::uint64_t) {
+      relay.report(stage, fraction, t);
+    });
     relay.report(stage, 1.0, r.t);
     return r;
   };

@@ -96,7 +96,8 @@ py::dict simulate(const py::handle& x, const py::handle& v, const py::handle& m,
   check_memory_of(b.size(), &p, nullptr);
   auto work = [&](ProgressRelay& relay) {
     relay.report("particles", 0.0, 0.0);
-    auto r = particles::simulate(b, L, p, [&](double f, double t) { relay.report("particles", f, t); });
+    auto r = particles::simulate(b, L, p,
+                                 [&](double f, double t, std::uint64_t) { relay.report("particles", f, t); });
     relay.report("particles", 1.0, r.stop.time);
     return r;
   };

@@ -248,7 +248,7 @@ std::size_t advance(Grid& grid, const TimeLoop& loop, StepFn&& step) {
       }
     }
     if (loop.progress && (t >= next_report * loop.t_end || steps % kProgressSteps == 0)) {
-      loop.progress(t / loop.t_end, t);
+      loop.progress(t / loop.t_end, t, 0);
       next_report = std::floor(100 * t / loop.t_end + 1) / 100;
     }
   }

@@ -107,7 +107,7 @@ ContinuumResult solve_hopf_cole(const InitialField& f, const ContinuumParams& p,
   }
   r.method_note += "; density not computed (Hopf-Cole gives v only), rho empty";
   require_finite(r.v, r.x, t_end);
-  if (progress) progress(1.0, t_end);
+  if (progress) progress(1.0, t_end, 0);
   return r;
 }
 

@@ -37,8 +37,8 @@ ContinuumResult initial_fields(const SolverInfo& info, const InitialField& f, co
 // progress of step k of n, mapped into the whole series.
 ProgressCallback step_progress(const ProgressCallback& progress, std::size_t k, std::size_t n) {
   if (!progress) return {};
-  return [progress, k, n](double fraction, double t) {
-    progress((static_cast<double>(k) + fraction) / static_cast<double>(n), t);
+  return [progress, k, n](double fraction, double t, std::uint64_t events) {
+    progress((static_cast<double>(k) + fraction) / static_cast<double>(n), t, events);
   };
 }
 
@@ -85,7 +85,7 @@ std::vector<ContinuumResult> solve_at_times(const std::string& name, const Initi
     if (t > 0 && !info.direct_in_time) last = std::make_unique<ContinuumResult>(r);
     out.push_back(std::move(r));
   }
-  if (progress) progress(1.0, times.empty() ? 0.0 : times.back());
+  if (progress) progress(1.0, times.empty() ? 0.0 : times.back(), 0);
   return out;
 }
 

@@ -28,9 +28,9 @@ ContinuumResult solve(const std::string& name, const InitialField& f, const Cont
   check_boundary(info, p);
   const auto start = std::chrono::steady_clock::now();
   // The solvers' progress points are their safe points: an abort request stops them there.
-  const ProgressCallback checked = [&progress](double fraction, double t) {
+  const ProgressCallback checked = [&progress](double fraction, double t, std::uint64_t events) {
     throw_if_aborted();
-    if (progress) progress(fraction, t);
+    if (progress) progress(fraction, t, events);
   };
   ContinuumResult r = info.run(f, p, t_end, checked);
   throw_if_aborted();

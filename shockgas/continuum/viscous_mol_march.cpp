@@ -25,7 +25,7 @@ ContinuumResult march_mol(const MolProblem& m, sundials::Integrator& integrator,
   for (int k = 1; k <= kMolOutputs; ++k) {
     const double t = integrator.advance(m.t_end * k / kMolOutputs);
     require_finite_state(m, integrator.state(), t);
-    if (progress) progress(static_cast<double>(k) / kMolOutputs, t);
+    if (progress) progress(static_cast<double>(k) / kMolOutputs, t, 0);
   }
   ContinuumResult r = mol_result(m, integrator.state());
   r.stats = integrator.statistics();

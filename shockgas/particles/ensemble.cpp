@@ -45,26 +45,30 @@ std::vector<double> mean_histogram(const std::vector<RunResult>& runs) {
   return h;
 }
 
-// Thread-safe progress: the mean of the workers' fractions.
+// Thread-safe progress: the mean of the workers' fractions, the sum of their events.
 class SharedProgress {
  public:
-  SharedProgress(const ProgressCallback& cb, std::size_t runs) : cb_(cb), fraction_(runs, 0.0) {}
+  SharedProgress(const ProgressCallback& cb, std::size_t runs)
+      : cb_(cb), fraction_(runs, 0.0), events_(runs, 0) {}
   ProgressCallback for_run(std::size_t k) {
     if (!cb_) return {};
-    return [this, k](double f, double t) { report(k, f, t); };
+    return [this, k](double f, double t, std::uint64_t events) { report(k, f, t, events); };
   }
-  void report(std::size_t k, double f, double t) {
+  void report(std::size_t k, double f, double t, std::uint64_t events) {
     std::lock_guard lock(mutex_);
     fraction_[k] = f;
+    events_[k] = events;
     double sum = 0;
-    for (double x : fraction_) sum += x;
-    cb_(sum / static_cast<double>(fraction_.size()), t);
+    std::uint64_t all = 0;
+    for (std::size_t i = 0; i < fraction_.size(); ++i) sum += fraction_[i], all += events_[i];
+    cb_(sum / static_cast<double>(fraction_.size()), t, all);
   }
 
  private:
   const ProgressCallback& cb_;
   std::mutex mutex_;
   std::vector<double> fraction_;
+  std::vector<std::uint64_t> events_;
 };
 
 // What a realization that never ran because of a checkpoint request reports.
@@ -88,7 +92,7 @@ std::vector<RunResult> run_all(const InitialCondition& ic, const ParticleParams&
       return;
     }
     runs[k] = run_realization(ic, k, each, progress.for_run(k));
-    if (ProgressCallback cb = progress.for_run(k)) cb(1.0, p.t_end);
+    if (ProgressCallback cb = progress.for_run(k)) cb(1.0, p.t_end, runs[k].collisions);
   });
   return runs;
 }

@@ -34,6 +34,7 @@ struct RunWatch {
   const ProgressCallback& progress;
   Clock::time_point start = Clock::now();
   double last_report = 0;
+  std::uint64_t collisions_seen = 0;  // at the last safe point: what progress reports
   StopReason reason = StopReason::completed;
   // With saves (run_state.hpp): at each safe point when due, write_state is
   // handed to them; on a checkpoint request too, and then Interrupted is thrown.
@@ -44,6 +45,7 @@ struct RunWatch {
   bool operator()(double t, std::uint64_t collisions) {
     if (p.max_collisions > 0 && collisions >= p.max_collisions)
       return reason = StopReason::event_limit, false;
+    collisions_seen = collisions;
     const bool go_on = tick(t);
     if (saves_on_request()) save_and_stop(t);
     if (saves && go_on && saves->due()) saves->save(t, work_fraction(t, p.t_end), write_state);
@@ -68,7 +70,7 @@ struct RunWatch {
     if (p.max_wall_seconds > 0 && s >= p.max_wall_seconds) return reason = StopReason::wall_limit, false;
     if (progress && s - last_report >= 0.1) {
       last_report = s;
-      progress(work_fraction(t, p.t_end), t);
+      progress(work_fraction(t, p.t_end), t, collisions_seen);
     }
     return true;
   }

@@ -161,7 +161,8 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
   detail::RunWatch watch{p, progress};
   if (resume) {
     restore_run(*resume, engine, scheduler ? &*scheduler : nullptr, recorder);
-    if (progress) progress(detail::work_fraction(engine.now(), p.t_end), engine.now());
+    watch.collisions_seen = engine.collisions();
+    if (progress) progress(detail::work_fraction(engine.now(), p.t_end), engine.now(), engine.collisions());
   }
   watch.saves = checkpoints.saves;
   watch.write_state = [&](RunStateWriter& out) {

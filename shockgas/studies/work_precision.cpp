@@ -100,7 +100,7 @@ double run_budget(const Context& ctx) { return ctx.full ? 120.0 : 3.0; }
 
 ProgressCallback budget_watch(double budget) {
   const auto start = std::chrono::steady_clock::now();
-  return [start, budget](double fraction, double) {
+  return [start, budget](double fraction, double, std::uint64_t) {
     const double elapsed = seconds_since(start);
     if (fraction > 0 && elapsed / fraction > budget)
       throw RunError("stopped by the bench: projected " + fmt(elapsed / fraction) + " s per run > budget " +

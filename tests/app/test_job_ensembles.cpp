@@ -178,7 +178,8 @@ class JobInterrupted : public ::testing::Test {
 // The launcher ends the job with SIGTERM because rank 1 died: it cannot answer.
 TEST_F(JobInterrupted, ARankThatCannotAnswerIsNamedWithItsRealization) {
   FakeJob job;
-  job.from_rank_1(kProgress, doubles({0.5, 3.0, 0, 3}));  // running realization 3
+  job.from_rank_1(kProgress,
+                  doubles({0.5, 3.0, 0, 0, 3}));  // fraction, time, collisions; running realization 3
   EXPECT_EQ(
       failure_of(job, 4),
       "rank 1 stopped while running realization 3 (killed, or its node was lost); the job stops, no result "
@@ -245,7 +246,7 @@ TEST_F(JobCheckpoints, ALostRankIsNamedAfterTheCheckpointIsSaved) {
   const auto plan = plan_of(4);
   FakeJob job;
   job.from_rank_1(kRecord, encode(record_of(*plan, {0, 1})));
-  job.from_rank_1(kProgress, doubles({0.5, 3.0, 0, 3}));  // running realization 3, then silent
+  job.from_rank_1(kProgress, doubles({0.5, 3.0, 0, 0, 3}));  // running realization 3, then silent
   auto checkpoints = checkpointer(4);
   request_interrupt(InterruptMode::checkpoint, 15);
   ProgressBar quiet(false);

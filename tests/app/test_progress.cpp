@@ -222,5 +222,38 @@ TEST(Progress, ALogSaysWhichRealizationAndAnEtaWithin30PercentAtHalfWay) {
   EXPECT_NE(err.find("realization 8 of 8"), std::string::npos) << err;
 }
 
+// A log gives the engine's speed as it is quoted, collisions per second since
+// the stage's first progress (simulated time per second falls as the gas
+// slows): 8e6 collisions between the scripted seconds 1 and 3 are 4.0 M/s. A
+// stage that counts none (a continuum solver) gives no rate on its later lines.
+TEST(Progress, ALogGivesTheCollisionsPerSecondSinceTheFirstProgress) {
+  double clock = 0;
+  const auto start = ProgressBar::Clock::now();
+  const auto scripted = [&] {
+    return start +
+           std::chrono::duration_cast<ProgressBar::Clock::duration>(std::chrono::duration<double>(clock));
+  };
+  const std::string err = stderr_of("progress-collisions", [&] {
+    ProgressBar bar(true, {}, scripted);
+    bar.stage("particles");
+    clock = 1.0;
+    bar.update(0.1, 10, 1'000'000);  // the base: a line for 10 %, no rate yet
+    clock = 3.0;
+    bar.update(0.5, 50, 9'000'000);
+    bar.stage("continuum/godunov");
+    clock = 5.0;
+    bar.update(0.2, 0.1);  // the base of its rate, were it counting
+    clock = 7.0;
+    bar.update(0.6, 0.3);
+    bar.finish();
+  });
+  EXPECT_TRUE(std::regex_search(
+      err, std::regex(R"(particles:  50%  t = 50  elapsed 3\.0 s  eta [0-9]+ s  4\.0 M collisions/s\n)")))
+      << err;
+  const auto continuum = err.find("continuum/godunov:");
+  ASSERT_NE(continuum, std::string::npos) << err;
+  EXPECT_EQ(err.find("collisions/s", continuum), std::string::npos) << err;
+}
+
 }  // namespace
 }  // namespace shockgas::app

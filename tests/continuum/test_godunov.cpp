@@ -222,7 +222,7 @@ TEST(GodunovRun, LandsOnTEndAndReportsProgress) {
   ContinuumParams p;
   p.cells = 64;
   double last_fraction = 0, last_time = 0;
-  const auto r = solve_godunov(sine(), p, 0.3, 2, [&](double fraction, double t) {
+  const auto r = solve_godunov(sine(), p, 0.3, 2, [&](double fraction, double t, std::uint64_t) {
     last_fraction = fraction;
     last_time = t;
   });

@@ -103,7 +103,8 @@ TEST(ViscousMol, ReportsProgressAtEachOutputTime) {
   p.nu = 0.05;
   p.cells = 64;
   std::vector<double> fractions;
-  sc::solve_cvode(sine_field(), p, 0.1, [&](double fraction, double) { fractions.push_back(fraction); });
+  sc::solve_cvode(sine_field(), p, 0.1,
+                  [&](double fraction, double, std::uint64_t) { fractions.push_back(fraction); });
   ASSERT_FALSE(fractions.empty());
   EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
   EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));

@@ -73,7 +73,7 @@ TEST(Ensemble, KeepsEachRealizationsSeriesForTheJackknife) {
 TEST(Ensemble, ProgressIsReportedAndEnds) {
   double last = -1;
   ParticleParams p = four_realizations(2);
-  run_ensemble(small_gas(), p, [&](double fraction, double) { last = fraction; });
+  run_ensemble(small_gas(), p, [&](double fraction, double, std::uint64_t) { last = fraction; });
   EXPECT_DOUBLE_EQ(last, 1.0);  // every realization reports completion
 }
 

@@ -43,7 +43,7 @@ ParticleParams endless(Schedule schedule, std::size_t threads) {
 // The progress callback runs at the engine's check points, inside the windows:
 // the request is made there, during the run.
 ProgressCallback request_at_first_report(InterruptMode mode) {
-  return [mode](double, double) { request_interrupt(mode); };
+  return [mode](double, double, std::uint64_t) { request_interrupt(mode); };
 }
 
 TEST_F(RunInterrupt, AbortThrowsFromInsideTheWindowsOnTwoThreads) {

@@ -43,7 +43,7 @@ TEST(RunInterruptSlow, AbortStopsTenMillionBodiesOnTwoThreadsPromptly) {
   });
   bool interrupted = false;
   try {
-    simulate(ip, 0, p, [&](double, double) { running = true; });
+    simulate(ip, 0, p, [&](double, double, std::uint64_t) { running = true; });
   } catch (const Interrupted&) {
     interrupted = true;
   }

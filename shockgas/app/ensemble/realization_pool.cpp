@@ -32,9 +32,11 @@ struct RealizationPool::State {
   std::atomic<bool> abandoned{false};  // the running realizations stop unfinished
   std::atomic<bool> go{false};         // every worker started (or the pool refused)
 
-  mutable std::mutex mutex;      // guards what follows
-  std::vector<double> fraction;  // per item
-  std::vector<bool> active;      // per item
+  mutable std::mutex mutex;            // guards what follows
+  std::vector<double> fraction;        // per item
+  std::vector<std::uint64_t> events;   // per item: collisions so far
+  std::vector<std::uint64_t> resumed;  // per item: those its saved state held (counted by another process)
+  std::vector<bool> active;            // per item
   double sim_time = 0;
   std::size_t ended = 0;  // items finished or failed
   std::size_t workers = 0;
@@ -46,16 +48,23 @@ struct RealizationPool::State {
     const InitialCondition& ic = plan->initial(item.ensemble);
     particles::ParticleParams p = particle_params(plan->scene(item.ensemble));
     p.threads = threads_per_run;
-    auto progress = [this, i](double f, double t) {
+    bool from_save =
+        false;  // resumed: its next report (simulate's, on restoring) gives the save's collisions
+    auto progress = [this, i, &from_save](double f, double t, std::uint64_t n) {
       if (abandoned) throw Abandoned{};
       std::lock_guard lock(mutex);
       fraction[i] = f;
+      if (from_save) resumed[i] = n, from_save = false;  // simulate's report right after restoring
+      events[i] = n;
       sim_time = std::max(sim_time, t);
     };
     // Not started on a pending request: a resumed run starts it.
     if (interrupt_requested() != InterruptMode::none) throw Interrupted(interrupt_signal());
     std::unique_ptr<RealizationSaves> saves = checkpoints ? checkpoints->saves_for(item) : nullptr;
-    if (const auto at = saves ? saves->resumed_at() : std::nullopt) progress(at->first, at->second);
+    if (const auto at = saves ? saves->resumed_at() : std::nullopt) {
+      progress(at->first, at->second, 0);
+      from_save = true;
+    }
     // Its states file, from where its save left it if resumed (the snapshots
     // taken before the save are there, not in the save).
     std::optional<StateFileWriter> states;
@@ -82,6 +91,7 @@ struct RealizationPool::State {
     if (states) states->commit();  // on the disk before its record is kept
     std::lock_guard lock(mutex);
     fraction[i] = 1;
+    events[i] = r.run.collisions;
     sim_time = std::max(sim_time, r.run.stop.time);
     active[i] = false;
     ++ended;
@@ -130,6 +140,8 @@ RealizationPool::RealizationPool(std::shared_ptr<const EnsemblePlan> plan, std::
   s.checkpoints = checkpoints;
   s.items = std::move(items);
   s.fraction.assign(s.items.size(), 0.0);
+  s.events.assign(s.items.size(), 0);
+  s.resumed.assign(s.items.size(), 0);
   s.active.assign(s.items.size(), false);
   const particles::ThreadSplit split = particles::split_threads(threads, s.items.size());
   s.threads_per_run = split.per_run;  // threads left over go to each run's windows
@@ -183,6 +195,14 @@ double RealizationPool::fraction() const {
   double sum = 0;
   for (double f : state_->fraction) sum += f;
   return sum / static_cast<double>(state_->items.size());
+}
+
+std::uint64_t RealizationPool::events() const {
+  std::lock_guard lock(state_->mutex);
+  std::uint64_t sum = 0;
+  for (std::size_t i = 0; i < state_->events.size(); ++i)
+    sum += state_->events[i] - std::min(state_->events[i], state_->resumed[i]);
+  return sum;
 }
 
 double RealizationPool::sim_time() const {

@@ -56,6 +56,9 @@ class RealizationPool {
   // the largest simulated time reported.
   double fraction() const;
   double sim_time() const;
+  // The collisions of the pool's realizations so far, in this process (those
+  // resumed from a saved state: since their resumption).
+  std::uint64_t events() const;
   // Every item finished, or one failed and the others stopped.
   bool finished() const;
 

@@ -54,13 +54,14 @@ ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::siz
     checkpoints->poll();  // saves when due; on an interrupt request saves and throws
   };
   while (!pool.finished()) {
-    progress.update(done(), pool.sim_time());
+    progress.update(done(), pool.sim_time(), pool.events());
     keep_finished();
     std::this_thread::sleep_for(kPoll);
   }
   keep_finished();
   if (auto failure = pool.failure()) std::rethrow_exception(failure->error);
-  progress.update(done(), pool.sim_time());     // the end: 100 %, which the last poll may have missed
+  progress.update(done(), pool.sim_time(),
+                  pool.events());               // the end: 100 %, which the last poll may have missed
   if (checkpoints) checkpoints->save_at_end();  // an interrupt while the results are written keeps them all
   out.records = checkpoints ? checkpoints->take_records() : pool.take_finished();
   sort_in_plan_order(out.records);
@@ -107,10 +108,10 @@ class Gatherer {
       check_silence();
       keep_records();
       if (received() == expected_) break;
-      progress_.update(fraction(), pool_->sim_time());
+      progress_.update(fraction(), pool_->sim_time(), events());
       if (seconds_since(beat) > kBeatSeconds) {
         job_.send(1, kProgress,
-                  pack_items({pool_->fraction(), 0.0}, pool_->running()));  // for rank 1 to name us
+                  pack_items({pool_->fraction(), 0.0, 0.0}, pool_->running()));  // for rank 1 to name us
         beat = Clock::now();
       }
       std::this_thread::sleep_for(kPoll);
@@ -124,6 +125,7 @@ class Gatherer {
   struct Peer {
     std::size_t items = 0, received = 0;
     double fraction = 0;
+    std::uint64_t events = 0;  // its collisions so far, as it last said
     std::vector<WorkItem> running;
     Clock::time_point heard;
     bool answered = false;
@@ -158,7 +160,8 @@ class Gatherer {
     } else if (m.tag == kProgress) {
       const auto n = unpack(m.bytes);
       p.fraction = n.at(0);
-      p.running = unpack_items(n, 2);
+      p.events = static_cast<std::uint64_t>(n.at(2));
+      p.running = unpack_items(n, kProgressNumbers);
     } else if (m.tag == kFailed) {
       const std::size_t head = 3 * sizeof(double);  // bad input, the item, then the message
       const std::vector<double> numbers = unpack(m.bytes.substr(0, head));
@@ -291,6 +294,11 @@ class Gatherer {
     for (std::size_t j = 1; j < peers_.size(); ++j)
       done += (peers_[j].working() ? peers_[j].fraction : 1.0) * static_cast<double>(peers_[j].items);
     return expected_ == 0 ? 1.0 : done / static_cast<double>(expected_);
+  }
+  std::uint64_t events() const {
+    std::uint64_t n = pool_->events();
+    for (std::size_t j = 1; j < peers_.size(); ++j) n += peers_[j].events;
+    return n;
   }
 
   Job& job_;

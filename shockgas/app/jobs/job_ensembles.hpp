@@ -36,7 +36,7 @@ class Checkpointer;
 // The messages between the ranks (MPI tags). Numbers travel as doubles, an
 // item as its ensemble and index.
 enum JobTag : int {
-  kProgress = 1,     // any rank -> 0 (and 0 -> 1): fraction done, time reached, items running
+  kProgress = 1,     // any rank -> 0 (and 0 -> 1): fraction done, time reached, collisions, items running
   kRecord = 2,       // -> 0: a finished realization (encode())
   kFailed = 3,       // -> 0: 1 if the input was bad (else 0), an item, then the text of the error
   kInterrupted = 4,  // -> 0: a signal (0: an answer to kStop), then the items running
@@ -45,6 +45,9 @@ enum JobTag : int {
   kItems = 7,        // 0 -> each at the start: the items it runs
   kSaved = 8,        // -> 0 after kInterrupted on a checkpoint request: what its states hold (text)
 };
+
+// The numbers before the items of a kProgress message.
+inline constexpr std::size_t kProgressNumbers = 3;
 
 inline constexpr double kAnswerSeconds = 0.5;  // well inside Open MPI's 1 s from SIGTERM to SIGKILL
 inline constexpr double kSilenceSeconds = 30;  // a rank sends a heartbeat every 0.2 s

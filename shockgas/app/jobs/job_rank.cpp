@@ -45,12 +45,15 @@ class Worker {
           answer(0);
         }
         if (m->tag == kProgress)
-          root_running_ = unpack_items(unpack(m->bytes), 2), root_heard_ = Clock::now();
+          root_running_ = unpack_items(unpack(m->bytes), kProgressNumbers), root_heard_ = Clock::now();
       }
       if (done) return;
       check_root();
       if (seconds_since(beat) > kBeatSeconds) {
-        job_.send(0, kProgress, pack_items({fraction(), pool_ ? pool_->sim_time() : 0.0}, running()));
+        job_.send(0, kProgress,
+                  pack_items({fraction(), pool_ ? pool_->sim_time() : 0.0,
+                              pool_ ? static_cast<double>(pool_->events()) : 0.0},
+                             running()));
         beat = Clock::now();
       }
       std::this_thread::sleep_for(kPoll);

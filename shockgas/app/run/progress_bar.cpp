@@ -59,7 +59,7 @@ void ProgressBar::stage(const std::string& name, std::size_t realizations) {
   if (listener_) listener_(stage_, 0.0, 0.0);
 }
 
-void ProgressBar::update(double fraction, double sim_time) {
+void ProgressBar::update(double fraction, double sim_time, std::uint64_t events) {
   fault_point("compute");
   if (!enabled_ && !listener_) return;
   std::lock_guard<std::mutex> lock(mutex_);
@@ -68,32 +68,50 @@ void ProgressBar::update(double fraction, double sim_time) {
   const auto now = now_();
   // The base is the first update that reports any progress: a resumed run's
   // workers report where they took up only after the first poll, which says 0.
-  if (!base_ && (fraction > 0 || sim_time > 0)) base_ = Base{now, std::clamp(fraction, 0.0, 1.0), sim_time};
+  if (!base_ && (fraction > 0 || sim_time > 0))
+    base_ = Base{now, std::clamp(fraction, 0.0, 1.0), sim_time, events};
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   if (elapsed < 1.0) return;  // short runs print nothing
   fraction = std::clamp(fraction, 0.0, 1.0);
   if (tty_) {
     if (std::chrono::duration<double>(now - last_draw_).count() < 0.1 && fraction < 1.0) return;
     last_draw_ = now;
-    draw(fraction, sim_time);
+    draw(fraction, sim_time, events);
   } else {
     const int decile = static_cast<int>(std::floor(10 * fraction));
     if (decile <= last_decile_) return;
     last_decile_ = decile;
-    draw(fraction, sim_time);
+    draw(fraction, sim_time, events);
   }
 }
 
 // Rate and remaining time from the work done since the first update: a
 // resumed run starts where its checkpoint was, not at 0.
 std::string ProgressBar::eta_text(double fraction, Clock::time_point now) const {
-  const Base base = base_.value_or(Base{now, fraction, 0.0});
+  const Base base = base_.value_or(Base{now, fraction, 0.0, 0});
   const double since = std::chrono::duration<double>(now - base.clock).count();
   const double done = fraction - base.fraction;
   if (!(done > 0)) return "?";  // unknown until this process has done some of the work
   char eta[32];
   std::snprintf(eta, sizeof eta, "%.0f s", since * (1 - fraction) / done);
   return eta;
+}
+
+// The collisions per second since the first update: what an engine's speed is
+// quoted in, where simulated time per second falls as a gas slows down.
+std::string ProgressBar::rate_text(std::uint64_t events, Clock::time_point now) const {
+  if (!base_ || events <= base_->events) return "";
+  const double since = std::chrono::duration<double>(now - base_->clock).count();
+  if (!(since > 0)) return "";
+  const double rate = static_cast<double>(events - base_->events) / since;
+  char text[48];
+  if (rate >= 1e6)
+    std::snprintf(text, sizeof text, "%.1f M collisions/s", rate / 1e6);
+  else if (rate >= 1e3)
+    std::snprintf(text, sizeof text, "%.1f k collisions/s", rate / 1e3);
+  else
+    std::snprintf(text, sizeof text, "%.0f collisions/s", rate);
+  return text;
 }
 
 // Realizations are equal shares of an ensemble's fraction: the one under way is
@@ -105,10 +123,11 @@ std::string ProgressBar::realization_text(double fraction) const {
   return "realization " + std::to_string(k) + " of " + std::to_string(realizations_);
 }
 
-void ProgressBar::draw(double fraction, double sim_time) {
+void ProgressBar::draw(double fraction, double sim_time, std::uint64_t events) {
   const auto now = now_();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const std::string eta = eta_text(fraction, now);
+  const std::string rate = rate_text(events, now);
   // An ensemble's simulated time is that of its furthest realization: not a measure of its progress.
   std::string which = realization_text(fraction);
   if (which.empty()) {
@@ -122,11 +141,13 @@ void ProgressBar::draw(double fraction, double sim_time) {
     const int filled = static_cast<int>(width * fraction);
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    std::snprintf(line, sizeof line, "\r%-18s [%s] %3.0f%%  %s  eta %s  ", stage_.c_str(), bar.c_str(),
-                  100 * fraction, which.c_str(), eta.c_str());
+    // Fixed widths: a shorter line than the last would leave its end on the screen.
+    std::snprintf(line, sizeof line, "\r%-18s [%s] %3.0f%%  %s  eta %-6s  %-20s", stage_.c_str(), bar.c_str(),
+                  100 * fraction, which.c_str(), eta.c_str(), rate.c_str());
   } else {
-    std::snprintf(line, sizeof line, "%s: %3.0f%%  %s  elapsed %.1f s  eta %s\n", stage_.c_str(),
-                  100 * fraction, which.c_str(), elapsed, eta.c_str());
+    std::snprintf(line, sizeof line, "%s: %3.0f%%  %s  elapsed %.1f s  eta %s%s%s\n", stage_.c_str(),
+                  100 * fraction, which.c_str(), elapsed, eta.c_str(), rate.empty() ? "" : "  ",
+                  rate.c_str());
   }
   spoke_ = true;
   if (line_open_) std::fputs("\n", stderr);  // the phase's time follows on a line of its own
@@ -206,7 +227,8 @@ void ProgressBar::say(const std::string& line) {
 }
 
 ProgressCallback ProgressBar::callback() {
-  return [this](double fraction, double sim_time) { update(fraction, sim_time); };
+  return
+      [this](double fraction, double sim_time, std::uint64_t events) { update(fraction, sim_time, events); };
 }
 
 }  // namespace shockgas::app

@@ -2,7 +2,8 @@
 // Progress of a run on stderr: a redrawn bar when stderr is a terminal, one
 // line per 10 % otherwise, each with the stage's fraction, which realization
 // of how many an ensemble is at, and the time left, eta = elapsed * (1 - f) /
-// (f - f0) from the rate measured since the stage's first progress f0; silent
+// (f - f0) from the rate measured since the stage's first progress f0, and,
+// where the stage counts collisions, their rate since then; silent
 // during the first second, so that short runs print nothing. Between the
 // measured stages, the phases of a run whose progress is not measured (the
 // comparison, the result files, the plots) each say what the run is doing, on
@@ -42,9 +43,10 @@ class ProgressBar {
   // realizations > 1: the stage is an ensemble of that many, each an equal
   // share of its fraction, and its lines say "realization k of n".
   void stage(const std::string& name, std::size_t realizations = 0);
-  // fraction of the stage done, in [0, 1]; sim_time the simulated time reached.
-  // Thread-safe.
-  void update(double fraction, double sim_time);
+  // fraction of the stage done, in [0, 1]; sim_time the simulated time reached;
+  // events the collisions done so far (0: not counted; else the lines give
+  // their rate since the stage's first progress). Thread-safe.
+  void update(double fraction, double sim_time, std::uint64_t events = 0);
   // Finishes the current line, if a bar was drawn.
   void finish();
 
@@ -71,13 +73,14 @@ class ProgressBar {
   ProgressCallback callback();
 
  private:
-  void draw(double fraction, double sim_time);
+  void draw(double fraction, double sim_time, std::uint64_t events);
   std::string eta_text(double fraction, Clock::time_point now) const;  // "12 s", or "?" before any progress
-  std::string realization_text(double fraction) const;                 // "realization 3 of 8", or ""
-  void say_short_phases();                                             // the final timing line
-  void end_line();                                                     // under mutex_
-  void end_phase(const char* outcome);                                 // outcome: nullptr for the wall time
-  void announce();                                                     // under mutex_
+  std::string rate_text(std::uint64_t events, Clock::time_point now) const;  // "12.3 M collisions/s", or ""
+  std::string realization_text(double fraction) const;                       // "realization 3 of 8", or ""
+  void say_short_phases();                                                   // the final timing line
+  void end_line();                                                           // under mutex_
+  void end_phase(const char* outcome);  // outcome: nullptr for the wall time
+  void announce();                      // under mutex_
   bool enabled_, tty_;
   Listener listener_;
   std::function<Clock::time_point()> now_;
@@ -92,6 +95,7 @@ class ProgressBar {
   struct Base {
     Clock::time_point clock;
     double fraction, time;
+    std::uint64_t events;
   };
   std::optional<Base> base_;
   bool drawn_ = false;

@@ -37,12 +37,12 @@ ProgressCallback wall_limited(const Scene& scene, const std::string& name, Progr
   const double limit = scene.has_particles ? scene.particles.max_wall_seconds : 0;
   if (limit <= 0) return report;
   const auto start = std::chrono::steady_clock::now();
-  return [=](double fraction, double t) {
+  return [=](double fraction, double t, std::uint64_t events) {
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limit)
       throw RunError("continuum: " + name + " had reached t = " + to_text(t, 4) + " of " +
                      to_text(scene.continuum_t_end()) + " when the wall limit particles.max_wall_seconds = " +
                      to_text(limit) + " s ran out (a smaller continuum.t_end or fewer cells end sooner)");
-    if (report) report(fraction, t);
+    if (report) report(fraction, t, events);
   };
 }
 
