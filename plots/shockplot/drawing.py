@@ -32,7 +32,8 @@ BUSY = 50  # per cent of the time some task waited for a CPU
 
 
 def jobs(out_dir, animation):
-    """The run's pictures and, with `animation`, the animation: costliest first."""
+    """The run's pictures, its statistics page where it wrote statistics.csv and,
+    with `animation`, the animation: costliest first."""
     with open_result(out_dir) as f:
         names = list(called_for(f, read_summary(out_dir, missing={})))
     names += [ANIMATION] if animation else []

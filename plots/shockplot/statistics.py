@@ -105,7 +105,7 @@ def spacing_panel(ax, table, realizations):
 def figure(directory):
     """The statistics page of DIR (its statistics.csv), not yet saved."""
     table = [{k: v if k == "quantity" else number(v) for k, v in row.items()}
-             for row in read_csv(os.path.join(directory, "statistics.csv"))]
+             for row in read_csv(os.path.join(directory, CSV))]
     count = one_row(table, "count")
     correlation = one_row(table, "mass_speed_correlation")
     realizations = int(one_row(table, "realizations")[2])
@@ -120,8 +120,6 @@ def figure(directory):
     fig.suptitle(f"Shock statistics: {count[2]:.4g}{error} clusters of ≥ 2 particles per realization{exact}; "
                  f"correlation of mass and |v − U| {r_text}", fontsize=11)
     return fig
-
-
 
 
 def draw_statistics(directory):

@@ -81,13 +81,34 @@ std::vector<double> expected_shocks_in_mass_bins(std::span<const double> mass_ed
   return count;
 }
 
-double expected_shocks_above(double mass, double D, double L, double rho, double t) {
+std::vector<double> expected_shocks_above(double mass, double D, double L, double rho,
+                                          std::span<const double> t) {
   require(mass >= 0, "compare.mass", mass, ">= 0");
   for (const auto& [name, value] :
-       {std::pair{"compare.D", D}, {"compare.length", L}, {"compare.density", rho}, {"compare.t", t}})
+       {std::pair{"compare.D", D}, {"compare.length", L}, {"compare.density", rho}})
     require_above(name, value, 0.0);
-  const double a = std::cbrt(4 * D * t * t), mu = mass / (rho * a);
-  return mu >= kMuMax ? 0.0 : L / a * shock_mass_integral(mu, kMuMax);
+  std::vector<double> a(t.size()), mu(t.size());
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    require_above("compare.t", t[k], 0.0);
+    a[k] = std::cbrt(4 * D * t[k] * t[k]);
+    mu[k] = std::min(mass / (rho * a[k]), kMuMax);
+  }
+  // From the largest lower end down: each integral is the one above it plus a piece.
+  std::vector<std::size_t> order(t.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return mu[i] > mu[j]; });
+  std::vector<double> n(t.size());
+  double above = 0, from = kMuMax;
+  for (std::size_t k : order) {
+    above += shock_mass_integral(mu[k], from);
+    from = mu[k];
+    n[k] = L / a[k] * above;
+  }
+  return n;
+}
+
+double expected_shocks_above(double mass, double D, double L, double rho, double t) {
+  return expected_shocks_above(mass, D, L, rho, std::span<const double>(&t, 1)).front();
 }
 
 }  // namespace shockgas::compare

@@ -42,4 +42,11 @@ std::vector<double> expected_shocks_in_mass_bins(std::span<const double> mass_ed
 // and D, L, rho, t > 0.
 double expected_shocks_above(double mass, double D, double L, double rho, double t);
 
+// The same at each of the times t (> 0, any order), in one sweep of the
+// quadrature from the largest mass unit's lower end to the cut-off: the cost of
+// one call, not of one per time (each density value is an Airy sum and a
+// convolution). Agrees with expected_shocks_above to the quadrature's error.
+std::vector<double> expected_shocks_above(double mass, double D, double L, double rho,
+                                          std::span<const double> t);
+
 }  // namespace shockgas::compare

@@ -124,6 +124,8 @@ void masses(const std::vector<Bodies>& runs, const StatisticsShape& shape, Shock
   const double a = std::cbrt(4 * *shape.white_noise_D * shape.t * shape.t), density = shape.N / shape.L;
   edges.back() = std::max(edges.back(), 13 * density * a);  // the law is 0 beyond mu = 12
   s.mass.exact = expected_shocks_in_mass_bins(edges, *shape.white_noise_D, shape.L, density, shape.t);
+  // The bins span 1.5 particles to the law's cut-off: their sum is
+  // expected_shocks_above(1.5, ...), without a second quadrature.
   s.count_exact = 0;
   for (double e : s.mass.exact) *s.count_exact += e;
   test_counts(s.mass, observed, runs.size());

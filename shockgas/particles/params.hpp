@@ -59,6 +59,9 @@ constexpr std::array<EnumName<ClusterRecord>, 3> enum_names(ClusterRecord) {
 // at most 1 GB (N x realizations <= 8.3 x 10^7).
 inline constexpr double kRecordedClusterBytesPerParticle = 12;
 inline constexpr double kRecordedClustersBytes = 1e9;
+// auto's bound on N x realizations (8.3 x 10^7).
+inline constexpr double kRecordedClustersAutoParticles =
+    kRecordedClustersBytes / kRecordedClusterBytesPerParticle;
 
 // Collisions between two safe points of the global queue, where the limits
 // (max_collisions, max_wall_seconds), the saves and inelastic collapse are

@@ -64,17 +64,31 @@ TEST(ShockMassLaw, BinsInTheGasUnitsAddUpToTheShockCount) {
 }
 
 // The shocks above a mass: all of them from 0 (1.916 N t^(-2/3), as above), the
-// heavy bins' sum above an edge (the same quadrature: agreement to rounding),
-// none beyond mu = 12 (the law's cut-off, e^-288 of its scale).
+// heavy bins' sum above an edge (the same integrand on other panels: the
+// quadrature's own error, measured below 1e-13 relative), none beyond the law's
+// cut-off mu = 12 (e^-288 of its scale).
 TEST(ShockMassLaw, ShocksAboveAMassAreTheBinsAboveIt) {
   const double D = 1.0 / 3, L = 1e6, t = 1000, a = std::cbrt(4 * D * t * t);
   EXPECT_NEAR(expected_shocks_above(0, D, L, 1.0, t) / (L * std::pow(t, -2.0 / 3)), 1.9157, 5e-5);
-  const std::vector<double> edges{1.5, 2.5, 4.5, 8.5, 12 * a};
+  const std::vector<double> edges{1.5, 2.5, 4.5, 8.5, 13 * a};
   double heavy = 0;
   for (double c : expected_shocks_in_mass_bins(edges, D, L, 1.0, t)) heavy += c;
   EXPECT_NEAR(expected_shocks_above(1.5, D, L, 1.0, t) / heavy, 1.0, 1e-12);
-  EXPECT_EQ(expected_shocks_above(12 * a, D, L, 1.0, t), 0.0);
+  EXPECT_EQ(expected_shocks_above(13 * a, D, L, 1.0, t), 0.0);
   EXPECT_THROW(expected_shocks_above(-1, D, L, 1.0, t), InputError);
+}
+
+// At many times in one sweep (pieces of the quadrature added from the cut-off
+// down) as at each alone: the same integrand on other panels, so the same to the
+// quadrature's error (measured below 1e-13 relative); in the order of the times given.
+TEST(ShockMassLaw, ShocksAboveAMassInTimeAreThoseAtEachTime) {
+  const double D = 1.0 / 3, L = 1e4;
+  const std::vector<double> times{1000, 1, 10, 1e5, 100, 3};
+  const std::vector<double> swept = expected_shocks_above(1.5, D, L, 1.0, times);
+  ASSERT_EQ(swept.size(), times.size());
+  for (std::size_t k = 0; k < times.size(); ++k)
+    EXPECT_NEAR(swept[k] / expected_shocks_above(1.5, D, L, 1.0, times[k]), 1.0, 1e-12) << times[k];
+  EXPECT_GT(swept[0], swept[3]);  // fewer shocks at later times
 }
 
 // The references of a white-noise start: T t^(2/3) -> 0.2129 and 1.916 N t^(-2/3)

@@ -17,8 +17,9 @@ namespace shockgas::app {
 // A result file a reader refuses: FileProblem with key "RESULT" and the problem
 // "no such file", "a directory", "not a regular file", "empty", "truncated",
 // "damaged", "not an HDF5 file", "unreadable" or "too large to read".
-inline FileProblem result_problem(const std::string& path, std::string problem, const std::string& detail) {
-  return FileProblem("RESULT", path, std::move(problem), detail);
+inline FileProblem result_problem(const std::string& path, const std::string& problem,
+                                  const std::string& detail) {
+  return FileProblem("RESULT", path, problem, detail);
 }
 
 enum class Verification {

@@ -207,7 +207,7 @@ void validate_statistics(const Scene& scene) {
   require(scene.has_particles, "statistics", std::string("(table)"),
           "[statistics] only together with [particles]");
   const particles::ParticleParams& p = scene.particles;
-  const double most = particles::kRecordedClustersBytes / particles::kRecordedClusterBytesPerParticle;
+  const double most = particles::kRecordedClustersAutoParticles;
   require(particles::records_final_clusters(p, scene.initial.N), "particles.final_clusters",
           name_of(p.final_clusters),
           "\"always\", or \"auto\" while initial.N x particles.realizations <= " + to_text(most, 2) +

@@ -137,7 +137,8 @@ std::vector<ContinuumRun> run_continuum(const Scene& scene, const InitialConditi
 Comparison run_comparison(const Scene& scene, const InitialCondition& initial,
                           const ParticleResults& particles, const std::vector<ContinuumRun>& continuum);
 // [statistics]: the shock statistics of the realizations that reached t_end
-// (compare::shock_statistics of their final clusters); RunError when none did.
-StatisticsResult run_statistics_stage(const Scene& scene, const particles::EnsembleResult& ensemble);
+// (compare::shock_statistics of their final clusters, moved out of the ensemble
+// once written); none when no realization did (the report says so).
+std::optional<StatisticsResult> run_statistics_stage(const Scene& scene, particles::EnsembleResult& ensemble);
 
 }  // namespace shockgas::app

@@ -18,7 +18,7 @@ namespace shockgas::app {
 struct StatisticsAbout {
   std::string scene;                 // the scene's name
   std::string resolved;              // its resolved parameters (one source's: they agree but for the seed)
-  std::vector<std::string> sources;  // the directories, as given
+  std::vector<std::string> sources;  // the directories, as given (a run's own [statistics]: its scene file)
   std::size_t left_out = 0;          // realizations that stopped before t_end
   double r = 0;                      // particles.r of the gas
 };

@@ -165,14 +165,19 @@ void comparison_part(std::ostream& out, const RunResults& r) {
       << " | " << slope << " |\n\n";
 }
 
-}  // namespace
-
-// The numbers of statistics.md under the report's own heading.
-void statistics_part(std::ostream& out, const StatisticsResult& s) {
-  const std::string page = statistics_markdown(s.stats, s.about);
-  out << "## Shock statistics over the realizations (statistics.md, statistics.png)\n"
-      << page.substr(page.find('\n') + 1) << "\n";
+// The numbers of statistics.md under the report's own heading; or why there are none.
+void statistics_part(std::ostream& out, const RunResults& r) {
+  out << "## Shock statistics over the realizations (statistics.md)\n";
+  if (!r.statistics) {
+    out << "\nNone: no realization reached particles.t_end = " << brief(r.scene->particles.t_end)
+        << ", and the statistics are of the clusters there; no statistics files were written.\n\n";
+    return;
+  }
+  const std::string page = statistics_markdown(r.statistics->stats, r.statistics->about);
+  out << page.substr(page.find('\n') + 1) << "\n";
 }
+
+}  // namespace
 
 std::string phase_times_text(const std::vector<std::pair<std::string, double>>& phases) {
   std::ostringstream out;
@@ -198,7 +203,7 @@ std::string report_text(const RunResults& r) {
   }
   if (!r.continuum.empty()) continuum_part(out, scene, r.continuum);
   if (r.comparison) comparison_part(out, r);
-  if (r.statistics) statistics_part(out, *r.statistics);
+  if (r.scene->has_statistics && r.particles) statistics_part(out, r);
   return out.str();
 }
 

@@ -200,7 +200,8 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
           throw_if_aborted();
         },
         source);
-    progress.phase("writing result.h5, summary.json");
+    progress.phase(r.statistics ? "writing result.h5, summary.json, statistics.h5, .csv, .md"
+                                : "writing result.h5, summary.json");
     h5.close();
   }
   write_xdmf(dir.string());

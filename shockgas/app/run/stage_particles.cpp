@@ -28,9 +28,7 @@ std::vector<double> exact_cluster_counts(const compare::WhiteNoiseReferences& w,
                                          const Scene& scene) {
   const double mean_mass = w.density * w.length / static_cast<double>(scene.initial.N);
   const double lightest = particles::MultiParticleRule(mean_mass).heavy_mass();
-  std::vector<double> n;
-  for (double ti : t) n.push_back(compare::expected_shocks_above(lightest, w.D, w.length, w.density, ti));
-  return n;
+  return compare::expected_shocks_above(lightest, w.D, w.length, w.density, t);
 }
 
 bool contains(const std::vector<double>& times, double t) {
