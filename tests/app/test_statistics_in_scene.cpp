@@ -65,6 +65,20 @@ TEST(StatisticsInScene, AMergedRunWritesThemAndAShardDoesNot) {
   EXPECT_EQ(read_text(root / "merged" / "statistics.csv"), read_text(root / "whole" / "statistics.csv"));
 }
 
+// Every realization stopped by a limit: the run keeps its results and says why
+// there are no statistics, and writes none.
+TEST(StatisticsInScene, WithoutARealizationAtTEndTheRunSaysSoAndWritesNone) {
+  const fs::path root = fresh_dir("statistics-in-scene-stopped");
+  write_text(root / "s.toml", kScene);
+  ASSERT_EQ(run_scene(root / "s.toml", root / "run",
+                      {"--set", "particles.solver=events", "--set", "particles.max_collisions=100"})
+                .first,
+            0);
+  EXPECT_FALSE(fs::exists(root / "run" / "statistics.csv"));
+  const std::string report = read_text(root / "run" / "report.md");
+  EXPECT_NE(report.find("None: no realization reached particles.t_end = 300"), std::string::npos) << report;
+}
+
 TEST(StatisticsInScene, ASceneThatCannotGiveThemIsRefusedNamingTheKey) {
   const fs::path root = fresh_dir("statistics-in-scene-refused");
   write_text(root / "s.toml", kScene);
