@@ -16,7 +16,7 @@
 # time depends on the mirror).
 #
 # Usage: bench/first_contact.sh [--append] [--build-dir DIR] [--keep]
-#   --build-dir DIR  where to build (default: a new directory under /tmp)
+#   --build-dir DIR  where to build (default: a new build-first-contact-PID in the checkout)
 #   --keep           keep the build directory afterwards
 set -euo pipefail
 self=$(realpath "$0")
@@ -35,7 +35,10 @@ done
 cd "$(dirname "$self")/.."
 [ -x /usr/bin/time ] || { echo "first_contact.sh: needs /usr/bin/time (Debian package time)" >&2; exit 2; }
 if [ -z "$build" ]; then
-  build=$(mktemp -d /tmp/shockgas-first-contact.XXXXXX)
+  # In the checkout with the usual permissions, as a clone's build/ (tests run
+  # the command as another user: mktemp's private directory would refuse them).
+  build=$PWD/build-first-contact-$$
+  mkdir -m 755 "$build"
 elif [ -e "$build" ] && [ -n "$(ls -A "$build")" ]; then
   echo "first_contact.sh: --build-dir $build is not empty (allowed: a new or empty directory)" >&2
   exit 2
@@ -73,7 +76,8 @@ step "configure + build of the command (Release, no compiler cache)" \
   bash -c 'cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER= \
     -DCMAKE_C_COMPILER_LAUNCHER= >/dev/null && cmake --build "$1" -j"$2" --target shockgas >/dev/null' _ "$build" "$cores"
 step "the default scene with its plots" "$build/shockgas" run data/scenes/default.toml --out "$out/default" -q
-step "build of the rest (tests, benchmarks, Python, lab)" cmake --build "$build" -j"$cores"
+step "build of the rest (tests, benchmarks, Python, lab)" \
+  bash -c 'cmake --build "$1" -j"$2" >/dev/null' _ "$build" "$cores"
 step "the README's default test set (ctest -LE slow -j2)" \
   bash -c 'cd "$1" && ctest -LE slow -j2 >"$2" 2>&1 || { tail -30 "$2" >&2; exit 1; }' _ "$build" "$out/ctest.log"
 
