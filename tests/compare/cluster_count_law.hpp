@@ -12,8 +12,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <string>
-#include <vector>
 
 #include "shockgas/compare/shock_mass_law.hpp"
 #include "shockgas/compare/white_noise_references.hpp"
@@ -37,12 +35,10 @@ inline double all_shocks(const WhiteNoiseReferences& w, double t) {
   return w.shock_count_coefficient * std::pow(t, -2.0 / 3.0);
 }
 
-// The shocks heavier than 1.5 particles (unit masses); beyond mu = 12 mass
-// units rho a the law is below e^-288, so the bin up to there holds them all.
+// The shocks heavier than 1.5 particles (unit masses): the law's count above
+// a mass (ShockMassLaw.ShocksAboveAMassAreTheBinsAboveIt holds it to its bins).
 inline double shocks_of_two_or_more(const WhiteNoiseReferences& w, double t) {
-  const double unit = w.density * std::cbrt(4 * w.D * t * t);
-  const std::vector<double> edges{1.5, 1.5 + 12 * unit};
-  return expected_shocks_in_mass_bins(edges, w.D, w.length, w.density, t).front();
+  return expected_shocks_above(1.5, w.D, w.length, w.density, t);
 }
 
 // The ensemble's count at its samples from t_from on against the exact count of
