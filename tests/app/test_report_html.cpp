@@ -34,6 +34,14 @@ fs::path run_scene(const std::string& name, const std::string& scene) {
   return dir / "out";
 }
 
+// The theory cell of the row of summary key `key`.
+std::string theory_cell(const std::string& page, const std::string& key) {
+  const auto at = page.find("<code>" + key + "</code>");
+  const auto cell = page.rfind("<td class=\"theory\"", at);
+  if (at == std::string::npos || cell == std::string::npos) return "no row for " + key;
+  return page.substr(cell, page.find("</td>", cell) - cell);
+}
+
 const char* kGas =
     "[scene]\ndescription = \"a gas & its <shocks>\"\n[initial]\nN = 400\n[particles]\nr = 0.9\nt_end = 200\n"
     "samples = 20\n[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 400\n[compare]\nfit_window = 4\n";
@@ -48,10 +56,18 @@ TEST(ReportHtml, ShowsEverySummaryKeyWithItsMeaningAndTheory) {
     const LayoutEntry* e = find_in_layout(LayoutEntry::Kind::summary, key);
     ASSERT_TRUE(e);
     EXPECT_NE(page.find(html::escape(e->description)), std::string::npos) << key;
-    EXPECT_NE(page.find(html::escape(e->theory)), std::string::npos) << key;
   }
-  // a theory that names another key shows that key's value: t_dissip ~ 1/eps = 20 at r = 0.9
-  EXPECT_NE(page.find("~ 20 time"), std::string::npos);
+  // a property of the numerics holds for every scene
+  EXPECT_NE(theory_cell(page, "continuum.hopf_lax.mass_drift").find("0 (conservative schemes)"),
+            std::string::npos);
+  // a theory that names another key shows that key's value where its law holds: t_dissip ~ 1/eps
+  // = 20 at r = 0.9 >= 7/9 (theory.crossovers)
+  EXPECT_NE(theory_cell(page, "analysis.t_dissip").find("data-laws=\"crossovers\">~ 20 time"),
+            std::string::npos);
+  // and none where it does not: T ~ t^(-2/3) from 10 t_stick = 10 eps^(-3/2) = 894 > t_end = 200
+  EXPECT_NE(theory_cell(page, "analysis.T_exponent")
+                .find("data-refused=\"sticky_cooling\">no theory for this scene"),
+            std::string::npos);
   // the provenance carries the build summary.json records (it was left out)
   EXPECT_NE(page.find("<tr><th>build</th><td>" + html::escape(kBuildTarget) + "</td></tr>"),
             std::string::npos);
@@ -59,6 +75,25 @@ TEST(ReportHtml, ShowsEverySummaryKeyWithItsMeaningAndTheory) {
   EXPECT_EQ(page.find("://"), std::string::npos);
   EXPECT_EQ(page.find(" src=\"data:"), std::string::npos);  // --no-plots: no picture to embed
   EXPECT_NE(page.find("default-src 'none'"), std::string::npos);
+}
+
+// The sticky gas (r = 0) has no elastic or homogeneous-cooling regime: no crossover times and
+// no -2 plateau are stated for it, while its cooling law is.
+TEST(ReportHtml, StatesATheoryOnlyWhereItsLawHolds) {
+  const fs::path out =
+      run_scene("sticky",
+                "[initial]\nN = 400\n[particles]\nr = 0\nt_end = 100\nsamples = 10\n[continuum]\n"
+                "solvers = [\"hopf_lax\"]\ncells = 400\n");
+  const std::string page = read_file(out / "report.html");
+  for (const char* key : {"analysis.t_dissip", "analysis.t_stick", "analysis.t_dissip_theory",
+                          "analysis.t_stick_theory", "analysis.T_steepest_local_exponent"})
+    EXPECT_NE(theory_cell(page, key).find("data-refused=\"crossovers\">no theory for this scene"),
+              std::string::npos)
+        << key << ": " << theory_cell(page, key);
+  // T ~ t^(-2/3) holds from 10 t_stick: at r = 0 (t_stick = 2^(3/2)) on [100 / fit_window, 100]
+  EXPECT_NE(theory_cell(page, "analysis.T_exponent").find("data-laws=\"sticky_cooling\">-2/3"),
+            std::string::npos)
+      << theory_cell(page, "analysis.T_exponent");
 }
 
 TEST(ReportHtml, SweepSetsItsResultBesideTheReference) {

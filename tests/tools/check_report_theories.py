@@ -13,7 +13,9 @@ and, for a sweep, one such entry per variant in order:
 For the run and each variant:
 - summary.json's theory.<law>.holds is true exactly for the laws listed;
 - report.md names a law only as "theory `<law>`", and only a listed one; every
-  other mention of a theory reads "no theory for this scene".
+  other mention of a theory reads "no theory for this scene";
+- report.html's theory cells state the values of listed laws only (data-laws),
+  and withhold (data-refused, "no theory for this scene") only laws not listed.
 Prints one line per finding and "N passed, N failed"; exits 1 on any failure.
 """
 import json
@@ -41,6 +43,23 @@ def report_findings(text, hold):
     return findings
 
 
+CELL = re.compile(r'<td class="theory"(?: data-laws="([\w ]*)")?(?: data-refused="([\w ]*)")?>(.*?)</td>')
+
+
+def html_findings(text, hold):
+    """(ok, message) for every theory cell of report.html's tables."""
+    findings = []
+    for laws, refused, value in CELL.findall(text):
+        for law in laws.split():
+            findings.append((law in hold, f"report.html states theory {law}'s value {value!r}" +
+                             ("" if law in hold else ": it does not hold for this scene")))
+        for law in refused.split():
+            findings.append((law not in hold and value == NONE,
+                             f"report.html withholds theory {law} ({value!r})" +
+                             (": it holds for this scene" if law in hold else "")))
+    return findings
+
+
 def summary_findings(summary, hold):
     laws = summary.get("theory", {})
     findings = [(bool(laws), "summary.json has the theory.<law> keys")]
@@ -57,6 +76,9 @@ def check_run(run_dir, summary, entry):
     report = os.path.join(run_dir, "report.md")
     if os.path.exists(report):
         findings += report_findings(open(report, encoding="utf-8").read(), hold)
+    page = os.path.join(run_dir, "report.html")
+    if os.path.exists(page):
+        findings += html_findings(open(page, encoding="utf-8").read(), hold)
     return findings
 
 

@@ -18,6 +18,16 @@ namespace shockgas::app {
 // The parts of a run, in the order they are written.
 enum class Part { provenance, initial, particles, analysis, continuum, compare, animation, sweep, shard };
 
+// One thing theory says of a value: the value and a word of where it holds
+// ("-2/3 (sticky gas)"), or another key's value ("~ {analysis.t_dissip_theory}"),
+// under the law `law` (an id of compare::theory_declarations(): the summary's
+// theory.<law> says whether it holds for a scene). An empty law: a property of
+// the numerics that holds for every scene ("0 to rounding").
+struct Theory {
+  std::string law;
+  std::string value;
+};
+
 struct LayoutEntry {
   enum class Kind { dataset, attribute, summary };
   Kind kind = Kind::dataset;
@@ -29,10 +39,9 @@ struct LayoutEntry {
   std::string unit;  // "1" for a pure number, "" for text
   std::string description;
   std::string when;  // the condition under which it is written; "" = always (for its part)
-  // What theory says the value should be, where it says anything: a value and a
-  // word of where it holds ("-2/3 (sticky gas)"), or another key's value
-  // ("~ {analysis.t_dissip_theory}"). Reports show it beside the value.
-  std::string theory;
+  // What theory says the value should be, where it says anything (Theory).
+  // Reports show each beside the value where its law holds for the scene.
+  std::vector<Theory> theory = {};
   Storage storage = Storage::float64;  // a dataset's values in the file (storage.hpp)
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "shockgas/app/output/declaration.hpp"
+#include "shockgas/compare/theory_scope.hpp"
 
 namespace shockgas::app::layout {
 
@@ -16,27 +17,33 @@ using Emit = std::function<void(const RunResults&, Emitter&)>;
 inline Declaration dataset(Part part, std::string path, std::string unit, std::string description,
                            std::string when, Emit emit) {
   return {{LayoutEntry::Kind::dataset, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when), ""},
+           std::move(when)},
           std::move(emit)};
 }
 
 inline Declaration attribute(Part part, std::string path, std::string unit, std::string description,
                              std::string when, Emit emit) {
   return {{LayoutEntry::Kind::attribute, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when), ""},
+           std::move(when)},
           std::move(emit)};
 }
 
 inline Declaration key(Part part, std::string path, std::string unit, std::string description,
                        std::string when, Emit emit) {
   return {{LayoutEntry::Kind::summary, part, std::move(path), std::move(unit), std::move(description),
-           std::move(when), ""},
+           std::move(when)},
           std::move(emit)};
 }
 
-// d with what theory says its value should be (LayoutEntry::theory).
-inline Declaration with_theory(Declaration d, std::string theory) {
-  d.entry.theory = std::move(theory);
+// d with what the law says its value should be (LayoutEntry::theory).
+inline Declaration with_theory(Declaration d, compare::Law law, std::string value) {
+  d.entry.theory.push_back({compare::declaration(law).id, std::move(value)});
+  return d;
+}
+
+// d with what its numerics give wherever it is written ("0 to rounding").
+inline Declaration with_exact_value(Declaration d, std::string value) {
+  d.entry.theory.push_back({"", std::move(value)});
   return d;
 }
 

@@ -171,7 +171,7 @@ std::vector<Declaration> evolution() {
                       "breaking time t* measured: where -1 / min dv/dx, a straight line t* - t, reaches zero",
                       "with 2 or more resolved smooth frames",
                       evolution_key([](const Evolution& e) { return Json(e.shock_formation_time); })),
-                  "{evolution.breaking_time_theory}"),
+                  compare::Law::breaking, "{evolution.breaking_time_theory}"),
       key(p, "evolution.shock_formation_frames", "1", "the smooth frames resolved well enough for that line",
           continuum, evolution_key([](const Evolution& e) { return Json(e.formation_frames); })),
       key(p, "evolution.breaking_time_theory", "time",
@@ -181,15 +181,18 @@ std::vector<Declaration> evolution() {
             if (std::isfinite(f.breaking_time_theory)) out.json(f.breaking_time_theory);
           })),
       with_theory(
-          key(p, "evolution.amplitude_exponent", "1",
-              "fitted a in (max v - min v) / 2 ~ t^a on /animation/evolution/amplitude_fit_t: after the "
-              "first shock, from the start of theory.n_wave_decay's or theory.sawtooth_decay's window, and "
-              "from t_end / compare.fit_window",
-              "where one of those laws holds, with 3 or more frames in the window",
-              evolution_key([](const Evolution& e) {
-                return e.amplitude_fit ? Json(e.amplitude_fit->exponent) : Json(nullptr);
-              })),
-          "-1/2 (N-wave), -1 (periodic sawtooth)"),
+          with_theory(
+              key(p, "evolution.amplitude_exponent", "1",
+                  "fitted a in (max v - min v) / 2 ~ t^a on /animation/evolution/amplitude_fit_t: after the "
+                  "first shock, from the start of theory.n_wave_decay's or theory.sawtooth_decay's window, "
+                  "and "
+                  "from t_end / compare.fit_window",
+                  "where one of those laws holds, with 3 or more frames in the window",
+                  evolution_key([](const Evolution& e) {
+                    return e.amplitude_fit ? Json(e.amplitude_fit->exponent) : Json(nullptr);
+                  })),
+              compare::Law::n_wave_decay, "-1/2 (N-wave)"),
+          compare::Law::sawtooth_decay, "-1 (periodic sawtooth)"),
       key(p, "evolution.amplitude_exponent_error", "1",
           "its least-squares standard error: the misfit of one deterministic run to a power law, not an "
           "error bar",
@@ -199,7 +202,7 @@ std::vector<Declaration> evolution() {
       with_theory(key(p, "evolution.lobe_area_change", "1",
                       "largest |A(t) / A(0) - 1| of the lobes above and below the mean over the frames",
                       continuum, evolution_key([](const Evolution& e) { return Json(e.lobe_area_change); })),
-                  "0 for an isolated wave whose lobes meet no other wave (not for data with jumps)"),
+                  compare::Law::lobe_areas, "0 (an isolated pulse without a jump)"),
       key(p, "evolution.shocks_max", "1", "most shocks in one frame", continuum,
           evolution_key([](const Evolution& e) {
             double n = 0;

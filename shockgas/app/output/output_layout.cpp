@@ -107,6 +107,16 @@ std::string theory_markdown(std::string text) {
   return text;
 }
 
+// "; theory: -2/3 (sticky gas) where theory.sticky_cooling holds; ..."
+std::string theories_markdown(const std::vector<Theory>& theories) {
+  std::string out;
+  for (const Theory& t : theories)
+    out += "; " + (t.law.empty()
+                       ? "exact: " + theory_markdown(t.value)
+                       : "theory: " + theory_markdown(t.value) + " where `theory." + t.law + "` holds");
+  return out;
+}
+
 std::string cell(const std::string& text) {
   std::string out;
   for (char c : text)
@@ -132,7 +142,7 @@ void table(std::ostringstream& out, const std::vector<Declaration>& decls, Part 
     any = true;
     std::string meaning = e.description;
     if (!e.when.empty()) meaning += " (" + e.when + ")";
-    if (!e.theory.empty()) meaning += "; theory: " + theory_markdown(e.theory);
+    meaning += theories_markdown(e.theory);
     out << "| `" << e.path << "` | " << (e.unit.empty() ? "" : cell(e.unit)) << " | "
         << (typed ? type_cell(e) + " | " : "") << cell(meaning) << " |\n";
   }

@@ -37,7 +37,7 @@ std::vector<Declaration> extreme_keys() {
                 if (r.particles && r.particles->cooling.crossovers.t_min_exponent > 0)
                   out.json(r.particles->cooling.crossovers.min_exponent);
               }),
-          "-2 (homogeneous cooling, as eps -> 0)"),
+          compare::Law::crossovers, "-2 (homogeneous cooling, as eps -> 0)"),
       key(a, "analysis.heaviest_cluster_x", "length", "position of the heaviest cluster at the end", "",
           cluster(&particles::Cluster::x)),
       key(a, "analysis.heaviest_cluster_m", "mass", "its mass", "", cluster(&particles::Cluster::m)),

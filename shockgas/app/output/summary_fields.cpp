@@ -51,7 +51,7 @@ std::vector<Declaration> continuum() {
           })),
       key(p, "continuum.{solver}.n_shocks", "1", "shocks the solver knows", "solvers that know their shocks",
           each([](const Run& c) { return c.result.has_shocks ? Opt(c.result.shocks.size()) : Opt(); })),
-      with_theory(
+      with_exact_value(
           key(p, "continuum.{solver}.mass_drift", "1",
               "sum rho dx at t over its initial value, minus 1 (0 to rounding for conservative schemes)",
               "solvers that give a density",
@@ -73,7 +73,7 @@ std::vector<Declaration> continuum() {
           "other cells than the exact one's, even next to it: continuum.{solver}.w1_rho says where the mass "
           "is)",
           "when both give a density", each(l1([](const Run& c) { return c.l1_rho; }, relative))),
-      with_theory(
+      with_exact_value(
           key(p, "continuum.{solver}.w1_rho", "1",
               "where the mass is: W1 / L = (1/L) min_c int |M - M_exact - c| dx of the cumulative mass "
               "fractions M(x), the mean distance the mass must move as a fraction of the domain "
@@ -109,7 +109,7 @@ std::vector<Declaration> comparison() {
       with_theory(key(p, "compare.matched_mass_fraction", "1",
                       "cluster mass matched to a shock / eligible cluster mass", "",
                       cmp([](const C&, const S& s) { return s.match.matched_mass_fraction; })),
-                  "1"),
+                  compare::Law::clusters_are_shocks, "1"),
       key(p, "compare.matched_pairs", "1", "matched shock-cluster pairs", "",
           cmp([](const C&, const S& s) { return s.match.pairs.size(); })),
       key(p, "compare.max_position_error", "length", "largest |x_cluster - x_shock| of a pair", "",
@@ -122,7 +122,7 @@ std::vector<Declaration> comparison() {
       with_theory(
           key(p, "compare.sawtooth_slope_times_t", "1", "median over ramps of the continuum's slope x t", "",
               cmp([](const C&, const S& s) { return s.sawtooth.slope_times_t.median; })),
-          "1"),
+          compare::Law::ramp_slope, "1"),
       key(p, "compare.sawtooth_slope_times_t_quartiles", "1", "its quartiles", "",
           cmp([](const C&, const S& s) {
             return Json{s.sawtooth.slope_times_t.q25, s.sawtooth.slope_times_t.q75};
@@ -130,10 +130,10 @@ std::vector<Declaration> comparison() {
       with_theory(key(p, "compare.particle_sawtooth_slope_times_t", "1",
                       "median over ramps of the particles' slope x t", "",
                       cmp([](const C&, const S& s) { return s.particle_sawtooth.slope_times_t.median; })),
-                  "1"),
+                  compare::Law::ramp_slope, "1"),
       with_theory(key(p, "compare.shock_count_ratio", "1", "n_shocks / (N t^(-2/3))", "",
                       cmp([](const C&, const S& s) { return s.shock_count_ratio; })),
-                  "O(1), constant in the sticky regime"),
+                  compare::Law::shock_count, "O(1), constant in the sticky regime"),
       key(p, "compare.n_shocks_exact", "1",
           "the exact expected number of shocks of mass >= min_mass of Burgers turbulence from this white "
           "noise (shockgas/compare/shock_mass_law.hpp): what n_shocks of hopf_lax and n_clusters of an r = 0 "

@@ -183,7 +183,7 @@ std::vector<Declaration> analysis() {
                       "else [t_end / fit_window, t_end]",
                       "with 3 or more samples in the window",
                       fit([](const Cooling&, const Fit& f) { return f.exponent; })),
-                  "-2/3 (sticky gas, t_stick << t << N^(3/2))"),
+                  compare::Law::sticky_cooling, "-2/3 (sticky gas, t_stick << t << N^(3/2))"),
       key(p, "analysis.T_exponent_error", "1",
           "its least-squares standard error, several times too small (correlated sample times): not an error "
           "bar; "
@@ -197,15 +197,18 @@ std::vector<Declaration> analysis() {
           key(p, "analysis.t_dissip", "time",
               "end of the elastic regime read off d ln T / d ln t (null: not crossed)", "",
               fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_dissip); })),
-          "~ {analysis.t_dissip_theory}"),
+          compare::Law::crossovers, "~ {analysis.t_dissip_theory}"),
       with_theory(key(p, "analysis.t_stick", "time",
                       "end of homogeneous cooling read off d ln T / d ln t (null: not crossed)", "",
                       fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_stick); })),
-                  "~ {analysis.t_stick_theory}"),
-      key(p, "analysis.t_dissip_theory", "time", "theory: end of the elastic regime, 1/eps, eps = (1 - r)/2",
-          "", fit([](const Cooling& a, const Fit&) { return a.crossovers.t_dissip_theory; })),
-      key(p, "analysis.t_stick_theory", "time", "theory: end of homogeneous cooling, eps^(-3/2)", "",
-          fit([](const Cooling& a, const Fit&) { return a.crossovers.t_stick_theory; })),
+                  compare::Law::crossovers, "~ {analysis.t_stick_theory}"),
+      with_theory(key(p, "analysis.t_dissip_theory", "time",
+                      "theory: end of the elastic regime, 1/eps, eps = (1 - r)/2", "",
+                      fit([](const Cooling& a, const Fit&) { return a.crossovers.t_dissip_theory; })),
+                  compare::Law::crossovers, "1/eps"),
+      with_theory(key(p, "analysis.t_stick_theory", "time", "theory: end of homogeneous cooling, eps^(-3/2)",
+                      "", fit([](const Cooling& a, const Fit&) { return a.crossovers.t_stick_theory; })),
+                  compare::Law::crossovers, "eps^(-3/2)"),
       key(p, "analysis.cooling_law_not_determined", "", "why the cooling law could not be fitted",
           "when the data refuse it",
           [](const RunResults& r, Emitter& out) {
@@ -220,7 +223,7 @@ std::vector<Declaration> analysis() {
                         if (r.particles && r.particles->distribution.collapse_distance)
                           out.json(*r.particles->distribution.collapse_distance);
                       }),
-                  "0 (one scaled distribution)"),
+                  compare::Law::velocity_scaling, "0 (one scaled distribution)"),
       key(p, "analysis.velocity_distribution_not_determined", "",
           "why the distribution could not be analysed", "when the data refuse it",
           [](const RunResults& r, Emitter& out) {
@@ -235,7 +238,7 @@ std::vector<Declaration> analysis() {
                       distribution([](const Dist& a, Emitter& out) {
                         out.json(a.tail.at_bound ? Json(nullptr) : Json(a.tail.exponent));
                       })),
-                  "3"),
+                  compare::Law::velocity_scaling, "3"),
       key(p, "analysis.velocity_tail_exponent_error", "1", "its error (profile least squares)", "",
           distribution([](const Dist& a, Emitter& out) {
             if (!a.tail.at_bound) out.json(a.tail.exponent_error);

@@ -74,6 +74,30 @@ std::string theory_text(const std::string& theory, const Json& summary) {
   return out;
 }
 
+bool law_holds(const std::string& law, const Json& summary) {
+  const Json* holds = lookup(summary, "theory." + law + ".holds");
+  return holds && holds->is_boolean() && holds->get<bool>();
+}
+
+// The theory cell of a row: what theory says of it where its law holds for
+// this run (the summary's theory.<law>.holds), "no theory for this scene"
+// where none of its laws does. data-laws lists the laws the cell states.
+std::string theory_cell(const std::vector<Theory>& theories, const Json& summary) {
+  std::string text, laws, refused;
+  for (const Theory& t : theories) {
+    if (!t.law.empty() && !law_holds(t.law, summary)) {
+      refused += (refused.empty() ? "" : " ") + t.law;
+      continue;
+    }
+    text += (text.empty() ? "" : "; ") + theory_text(t.value, summary);
+    if (!t.law.empty()) laws += (laws.empty() ? "" : " ") + t.law;
+  }
+  if (text.empty() && !refused.empty())
+    return "<td class=\"theory\" data-refused=\"" + refused + "\">no theory for this scene</td>";
+  return "<td class=\"theory\"" + (laws.empty() ? std::string() : " data-laws=\"" + laws + "\"") + ">" +
+         html::escape(text) + "</td>";
+}
+
 struct Row {
   std::string key;
   const Json* value;
@@ -110,9 +134,9 @@ std::string figures_table(const Json& summary) {
       if (r.entry->part != part) continue;
       const std::string unit = r.entry->unit == "1" || r.entry->unit.empty() ? "" : " " + r.entry->unit;
       out << "<tr><td>" << html::escape(r.entry->description) << "</td><td class=\"value\">"
-          << html::escape(value_text(*r.value) + (r.value->is_number() ? unit : ""))
-          << "</td><td class=\"theory\">" << html::escape(theory_text(r.entry->theory, summary))
-          << "</td><td class=\"key\"><code>" << html::escape(r.key) << "</code></td></tr>\n";
+          << html::escape(value_text(*r.value) + (r.value->is_number() ? unit : "")) << "</td>"
+          << theory_cell(r.entry->theory, summary) << "<td class=\"key\"><code>" << html::escape(r.key)
+          << "</code></td></tr>\n";
     }
     out << "</tbody>\n</table>\n";
   }
