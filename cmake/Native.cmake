@@ -23,6 +23,7 @@ option(SHOCKGAS_NATIVE "Compile for the build machine's processor (-march=native
        ${_native_default})
 # The options that put a file back on the portable target (shockgas/compare/CMakeLists.txt).
 set(SHOCKGAS_PORTABLE_OPTIONS "")
+set(SHOCKGAS_BUILD_INSTRUCTION_SETS "")
 
 check_cxx_compiler_flag(-ffp-contract=off SHOCKGAS_COMPILER_HAS_FP_CONTRACT)
 if(SHOCKGAS_COMPILER_HAS_FP_CONTRACT)
@@ -42,6 +43,22 @@ if(SHOCKGAS_NATIVE)
     set(_march " = ${CMAKE_MATCH_1}")
   endif()
   set(SHOCKGAS_BUILD_TARGET "native (-march=native${_march})")
+  # The instruction sets -march=native enables, of those the start-up check can ask
+  # the processor about (the SHOCKGAS_INSTRUCTION_SET lines of instruction_sets.cpp).
+  execute_process(COMMAND ${CMAKE_CXX_COMPILER} -march=native -dM -E -x c++ /dev/null
+                  OUTPUT_VARIABLE _macros ERROR_QUIET RESULT_VARIABLE _rc)
+  file(STRINGS ${PROJECT_SOURCE_DIR}/shockgas/core/instruction_sets.cpp _lines
+       REGEX "SHOCKGAS_INSTRUCTION_SET\\(\"")
+  string(REGEX MATCHALL "SHOCKGAS_INSTRUCTION_SET\\(\"[a-z0-9.]+\"" _probes "${_lines}")
+  foreach(_probe ${_probes})
+    string(REGEX REPLACE ".*\"([a-z0-9.]+)\"" "\\1" _isa "${_probe}")
+    string(TOUPPER "${_isa}" _macro)
+    string(REPLACE "." "_" _macro "${_macro}")
+    if(_rc EQUAL 0 AND _macros MATCHES "#define __${_macro}__ 1")
+      string(APPEND SHOCKGAS_BUILD_INSTRUCTION_SETS " ${_isa}")
+    endif()
+  endforeach()
+  string(STRIP "${SHOCKGAS_BUILD_INSTRUCTION_SETS}" SHOCKGAS_BUILD_INSTRUCTION_SETS)
 else()
   set(SHOCKGAS_BUILD_TARGET "portable (the compiler's default target)")
 endif()
