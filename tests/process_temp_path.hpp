@@ -61,7 +61,7 @@ inline std::filesystem::path process_temp_path(const std::string& prefix, const 
 
 // The same path, emptied and created as a directory.
 inline std::filesystem::path fresh_process_directory(const std::string& prefix, const std::string& name) {
-  const auto dir = process_temp_path(prefix, name);
+  auto dir = process_temp_path(prefix, name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -94,7 +94,7 @@ inline const char* kSceneB =
 // the directory it draws into, one picture named after the scene, and, after
 // `seconds`, a second one.
 inline fs::path fake_plot_script(const fs::path& dir, double seconds) {
-  const fs::path script = dir / "fake_plot.py";
+  fs::path script = dir / "fake_plot.py";
   write_text(
       script,
       "import json, os, sys, time\n"
