@@ -17,6 +17,7 @@ const lab = {
   t: 0, target: 0, frames: 0, rateFrames: 0, rateSince: 0, fps: 0, lastCollisions: 0, lastT: 0, lagging: false,
   waiting: null,  // a frame received and not yet drawn
   drawMs: 0,
+  drawn: 0,  // frames drawn since the page opened (its frame rate: tests/lab/check_lab_page.py)
 };
 
 function startWorker() {
@@ -102,7 +103,7 @@ function askNext() {
 // The newest frame received, drawn; the frame rate counts the frames drawn.
 function drawFrame(frame) {
   const begin = performance.now();
-  ++lab.rateFrames;
+  ++lab.rateFrames, ++lab.drawn;
   if (begin - lab.rateSince >= 1000) lab.fps = lab.rateFrames * 1000 / (begin - lab.rateSince), lab.rateFrames = 0, lab.rateSince = begin;
   lab.views.velocity.draw(frame);
   lab.views.density.draw(frame);

@@ -9,10 +9,88 @@ const COLOUR = {particles: '#d95f02', cluster: '#1b6ac9', exact: '#000', shock: 
 // The axis units of a scene: pointwise scenes in the domain's length, white noise in initial spacings.
 function lengthUnit(frame) { return frame.pointwise ? 'domain = 1' : 'initial spacings'; }
 
+// The marks of a view painted as pixels into an image of the plotting area,
+// which is then drawn over it in one copy: paths of 10^4 antialiased squares
+// and of a few thousand rings took a software rasteriser (a browser without a
+// GPU) 15-40 ms a frame, more than the engine and the rest of the drawing
+// together. Dots are whole-pixel squares; rings and crosses are stamps drawn
+// once by the canvas itself (antialiased) and blended in where they go.
+class PixelLayer {
+  constructor() {
+    this.canvas = document.createElement('canvas');
+    this.image = null;
+  }
+
+  // An empty layer the size of the plotting area of axes a.
+  begin(a) {
+    this.a = a;
+    const w = Math.max(1, Math.floor(a.width)), h = Math.max(1, Math.floor(a.height));
+    if (!this.image || this.image.width !== w || this.image.height !== h) {
+      this.canvas.width = w, this.canvas.height = h;
+      this.image = this.canvas.getContext('2d').createImageData(w, h);
+    }
+    this.image.data.fill(0);
+  }
+
+  // A square of s pixels at (x, y) in the axes' units.
+  square(x, y, s, rgb) {
+    const {data, width: w, height: h} = this.image;
+    const x0 = Math.round(this.a.px(x) - this.a.m.left - s / 2), y0 = Math.round(this.a.py(y) - this.a.m.top - s / 2);
+    for (let j = Math.max(0, y0); j < Math.min(h, y0 + s); ++j)
+      for (let i = Math.max(0, x0), k = 4 * (j * w + i); i < Math.min(w, x0 + s); ++i, k += 4)
+        data[k] = rgb[0], data[k + 1] = rgb[1], data[k + 2] = rgb[2], data[k + 3] = 255;
+  }
+
+  // A stamp (makeStamp) centred at (x, y) in the axes' units, blended over what is there.
+  stamp(x, y, st) {
+    const {data, width: w, height: h} = this.image;
+    const x0 = Math.round(this.a.px(x) - this.a.m.left) - st.half, y0 = Math.round(this.a.py(y) - this.a.m.top) - st.half;
+    for (let j = 0; j < st.size; ++j) {
+      const row = y0 + j;
+      if (row < 0 || row >= h) continue;
+      for (let i = 0; i < st.size; ++i) {
+        const col = x0 + i, alpha = st.alpha[j * st.size + i];
+        if (col < 0 || col >= w || alpha === 0) continue;
+        const k = 4 * (row * w + col), below = data[k + 3] / 255, out = alpha + below * (1 - alpha);
+        for (let c = 0; c < 3; ++c) data[k + c] = (st.rgb[c] * alpha + data[k + c] * below * (1 - alpha)) / out;
+        data[k + 3] = 255 * out;
+      }
+    }
+  }
+
+  // The layer over the plotting area.
+  finish() {
+    this.canvas.getContext('2d').putImageData(this.image, 0, 0);
+    this.a.ctx.drawImage(this.canvas, this.a.m.left, this.a.m.top);
+  }
+}
+
+// '#rrggbb' as [r, g, b].
+function rgbOf(colour) { return [1, 3, 5].map((k) => parseInt(colour.slice(k, k + 2), 16)); }
+
+// A mark drawn by draw(ctx, centre) on a canvas of size x size pixels, kept as its coverage (0..1) per pixel.
+function makeStamp(size, colour, draw) {
+  const canvas = Object.assign(document.createElement('canvas'), {width: size, height: size});
+  const c = canvas.getContext('2d');
+  draw(c, size / 2);
+  const px = c.getImageData(0, 0, size, size).data, alpha = new Float32Array(size * size);
+  for (let k = 0; k < alpha.length; ++k) alpha[k] = px[4 * k + 3] / 255;
+  return {size, half: Math.floor(size / 2), alpha, rgb: rgbOf(colour)};
+}
+
 class VelocityView {
   constructor(canvas) {
     this.axes = new Axes(canvas, {title: 'velocity v(x)', ylabel: 'v  [length / time]'});
     this.range = null;
+    this.layer = new PixelLayer();
+    this.particleRgb = rgbOf(COLOUR.particles);
+    this.ring = makeStamp(14, COLOUR.cluster, (c, o) => {
+      c.strokeStyle = COLOUR.cluster, c.lineWidth = 1.5, c.beginPath(), c.arc(o, o, 5, 0, 2 * Math.PI), c.stroke();
+    });
+    this.cross = makeStamp(12, COLOUR.hull, (c, o) => {
+      c.strokeStyle = COLOUR.hull, c.lineWidth = 1, c.beginPath();
+      c.moveTo(o - 4, o - 4), c.lineTo(o + 4, o + 4), c.moveTo(o - 4, o + 4), c.lineTo(o + 4, o - 4), c.stroke();
+    });
   }
   reset() { this.range = null; }
 
@@ -34,33 +112,17 @@ class VelocityView {
     a.setRange(0, frame.L, this.range[0], this.range[1]);
     a.clear();
     a.clipped((c) => {
-      // One path for all the dots, one for all the rings: a canvas draws one fill far faster than thousands.
-      c.fillStyle = COLOUR.particles;
-      const m0 = frame.particle_mass;
-      c.beginPath();
-      for (let i = 0; i < frame.x.length; ++i) {
-        const s = Math.min(6, 1.2 + Math.sqrt(frame.m[i] / m0) * 0.6);
-        c.rect(a.px(frame.x[i]) - s / 2, a.py(frame.v[i]) - s / 2, s, s);
-      }
-      c.fill();
-      c.strokeStyle = COLOUR.cluster;
-      c.lineWidth = 1.5;
-      c.beginPath();
-      for (let k = 0; k < frame.cluster_x.length; ++k) {
-        const x = a.px(frame.cluster_x[k]), y = a.py(frame.cluster_v[k]);
-        c.moveTo(x + 5, y), c.arc(x, y, 5, 0, 2 * Math.PI);
-      }
-      c.stroke();
-      // r = 0: the exact sticky gas's clusters (the hull) as crosses, on which the engine's should sit.
-      c.strokeStyle = COLOUR.hull;
-      c.lineWidth = 1;
-      c.beginPath();
-      for (let k = 0; k < frame.hull_x.length; ++k) {
-        if (frame.hull_m[k] < 1.5 * m0) continue;
-        const x = a.px(frame.hull_x[k]), y = a.py(frame.hull_v[k]);
-        c.moveTo(x - 4, y - 4), c.lineTo(x + 4, y + 4), c.moveTo(x - 4, y + 4), c.lineTo(x + 4, y - 4);
-      }
-      c.stroke();
+      // The particles (a dot's size grows with its mass), the clusters as rings and, at r = 0, the
+      // exact sticky gas's clusters (the hull) as crosses, on which the engine's should sit.
+      const m0 = frame.particle_mass, p = this.layer;
+      p.begin(a);
+      for (let i = 0; i < frame.x.length; ++i)
+        p.square(frame.x[i], frame.v[i], Math.max(1, Math.round(Math.min(6, 1.2 + Math.sqrt(frame.m[i] / m0) * 0.6))),
+                 this.particleRgb);
+      for (let k = 0; k < frame.cluster_x.length; ++k) p.stamp(frame.cluster_x[k], frame.cluster_v[k], this.ring);
+      for (let k = 0; k < frame.hull_x.length; ++k)
+        if (frame.hull_m[k] >= 1.5 * m0) p.stamp(frame.hull_x[k], frame.hull_v[k], this.cross);
+      p.finish();
       // The exact solution dashed over the dots, so that both show where they agree.
       c.setLineDash([5, 4]);
       if (frame.exact_v.length > 0) drawCells(a, c, frame.L, frame.exact_v, COLOUR.exact, 1.3);

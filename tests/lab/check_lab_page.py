@@ -9,9 +9,9 @@ file:// in headless Chromium and checks it as an instructor would meet it:
     page's line of settings says it, the frame counter starts again);
   - bad input (N = 0, r = 1.5, N = 10^9) is refused with a message naming the
     key, and the page goes on (a good value runs again);
-  - with --frame-rate: the frame rate of the white-noise scene at N = 2000 and
+  - with --frame-rate: the frames drawn per second of the white-noise scene at N = 2000 and
     N = 10^4, measured over MEASURE_S seconds each, printed
-    (docs/performance/lab.md keeps it), and at least MIN_FPS at N = 2000 unless
+    (docs/performance/lab.md keeps it), and at least MIN_FPS at both unless
     other work holds the cores (load average above BUSY_LOAD per core, which
     the test then says); a measurement, so the default test (lab.page) leaves
     it to lab.page_frame_rate, label slow;
@@ -30,7 +30,7 @@ import time
 from pathlib import Path
 
 SKIP = 77
-MIN_FPS = 30.0  # the lab's promise at N = 2000 (docs/gallery.md, "The lab")
+MIN_FPS = 30.0  # the lab's promise up to N = 10^4 (docs/gallery.md, "The lab")
 MEASURE_S = 4.0
 BUSY_LOAD = 1.0  # load average per core above which the frame rate says more about the machine than the page
 
@@ -95,6 +95,11 @@ def play(drv):
     drv.execute_script("if (document.getElementById('play').textContent === 'Play') document.getElementById('play').click()")
 
 
+def drawn(drv):
+    """Frames the page has drawn (a frame the worker sent may be passed over for a newer one)."""
+    return int(drv.execute_script("return lab.drawn"))
+
+
 def frame_rate(drv, scene, n):
     """Frames drawn per second of wall time, the white-noise scene playing at N = n."""
     drv.execute_script("const s = document.getElementById('scene'); s.value = arguments[0];"
@@ -104,9 +109,9 @@ def frame_rate(drv, scene, n):
     problems = wait_for(drv, f"a run at N = {n}", lambda: f"N = {n}," in text(drv, "running") and frames(drv) > 5)
     if problems:
         return None, problems
-    f0, t0 = frames(drv), time.monotonic()
+    f0, t0 = drawn(drv), time.monotonic()
     time.sleep(MEASURE_S)
-    f1, t1 = frames(drv), time.monotonic()
+    f1, t1 = drawn(drv), time.monotonic()
     return (f1 - f0) / (t1 - t0), []
 
 
@@ -120,11 +125,11 @@ def frame_rates(drv):
     print("frame rate, white noise (the gallery's cooling scene: r = 0.97, delta = 0.01, sticky below): " +
           ", ".join(f"N = {n}: {r:.1f} frames/s" for n, r in rates.items() if r is not None) +
           f"; load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
-    if rates.get(2000) is not None and rates[2000] < MIN_FPS:
-        if load <= BUSY_LOAD:
-            problems.append(f"{rates[2000]:.1f} frames/s at N = 2000, fewer than {MIN_FPS}")
-        else:  # the page's speed is not measured when other processes hold the cores
-            print(f"not held against {MIN_FPS} frames/s: the machine is busy (load {load:.1f} per core)")
+    slow = {n: r for n, r in rates.items() if r is not None and r < MIN_FPS}
+    if slow and load <= BUSY_LOAD:
+        problems += [f"{r:.1f} frames/s at N = {n}, fewer than {MIN_FPS}" for n, r in slow.items()]
+    elif slow:  # the page's speed is not measured when other processes hold the cores
+        print(f"not held against {MIN_FPS} frames/s: the machine is busy (load {load:.1f} per core)")
     return problems
 
 
