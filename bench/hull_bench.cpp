@@ -177,9 +177,10 @@ struct EngineLikeChain {
       return shockgas::particles::simulate(bodies(100'000), 1e5, p).final_state;
     }();
     body.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      body[i] = {tile.x[i % tile.size()] + 1e5 * static_cast<double>(i / tile.size()),
-                 tile.v[i % tile.size()], 0.0};
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t copy = i / tile.size();  // the tile's copy body i is in, each 1e5 further on
+      body[i] = {tile.x[i % tile.size()] + 1e5 * static_cast<double>(copy), tile.v[i % tile.size()], 0.0};
+    }
   }
 };
 

@@ -26,7 +26,7 @@ py::array_t<T> to_numpy(std::vector<T>&& values, std::vector<py::ssize_t> shape 
   if (shape.empty()) shape = {static_cast<py::ssize_t>(owner->size())};
   T* data = owner->data();
   py::capsule keep(owner.get(), [](void* p) { delete static_cast<std::vector<T>*>(p); });
-  owner.release();  // the capsule owns it now
+  static_cast<void>(owner.release());  // the capsule owns it now
   return py::array_t<T>(shape, data, keep);
 }
 

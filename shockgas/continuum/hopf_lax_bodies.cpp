@@ -55,7 +55,11 @@ class Chain {
   }
 
  private:
-  double period(std::size_t k) const { return static_cast<double>(k / n_); }
+  // The whole periods in k (integer division: body k lies in period k / n).
+  double period(std::size_t k) const {
+    const std::size_t whole = k / n_;
+    return static_cast<double>(whole);
+  }
   const Bodies& b_;
   double L_;
   std::size_t n_;

@@ -8,6 +8,8 @@
 // spread (parallel.*). Used by the shard tests and, as compare_runs, by the MPI
 // and checkpoint tests.
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -42,7 +44,7 @@ inline void compare_json(const nlohmann::json& a, const nlohmann::json& b, const
     for (std::size_t i = 0; i < a.size(); ++i) compare_json(a[i], b[i], at + std::to_string(i) + ".", out);
   } else if (a.is_number_float() && b.is_number_float()) {
     const double x = a.get<double>(), y = b.get<double>();
-    if (std::memcmp(&x, &y, sizeof x) != 0)
+    if (std::bit_cast<std::uint64_t>(x) != std::bit_cast<std::uint64_t>(y))
       out.push_back("summary key " + at + ": " + a.dump() + " vs " + b.dump());
   } else if (a != b) {
     out.push_back("summary key " + at + ": " + a.dump() + " vs " + b.dump());

@@ -20,14 +20,14 @@ namespace fs = std::filesystem;
 using testing_support::run;
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path dir = testing_support::process_temp_path("shockgas-test-", name);
+  fs::path dir = testing_support::process_temp_path("shockgas-test-", name);
   fs::remove_all(dir);
   return dir;
 }
 
 fs::path write_scene(const fs::path& dir, const std::string& text) {
   fs::create_directories(dir);
-  const fs::path path = dir / "scene.toml";
+  fs::path path = dir / "scene.toml";
   std::ofstream(path) << text;
   return path;
 }

@@ -31,7 +31,7 @@ const fs::path& pristine() {
 }
 
 fs::path lone_copy(const std::string& name) {
-  const fs::path file = fresh_dir("damage-" + name) / "result.h5";
+  fs::path file = fresh_dir("damage-" + name) / "result.h5";
   fs::create_directories(file.parent_path());
   fs::copy_file(pristine(), file);
   return file;

@@ -29,7 +29,7 @@ const fs::path& pristine() {
 }
 
 fs::path copy_of_run(const std::string& name) {
-  const fs::path dir = fresh_dir("integrity-" + name) / "run";
+  fs::path dir = fresh_dir("integrity-" + name) / "run";
   fs::copy(pristine(), dir, fs::copy_options::recursive);
   return dir;
 }
@@ -59,7 +59,7 @@ void damage(const fs::path& file, std::size_t from, std::size_t to, std::size_t 
 }
 
 TEST(Integrity, TheManifestListsEveryFileWithItsSizeAndSha256) {
-  const fs::path run = pristine();
+  const fs::path& run = pristine();
   const auto m = read_manifest(run);
   ASSERT_TRUE(m);
   EXPECT_EQ(m->scene, "alpha");

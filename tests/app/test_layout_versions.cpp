@@ -19,7 +19,7 @@ namespace {
 using namespace testing;
 
 fs::path layout_1_run() {
-  const fs::path run = fresh_dir("layout-1.0") / "run";
+  fs::path run = fresh_dir("layout-1.0") / "run";
   fs::copy(fs::path(SHOCKGAS_SOURCE_DIR) / "tests/data/layout-1.0", run, fs::copy_options::recursive);
   return run;
 }

@@ -52,7 +52,7 @@ int wait_bounded(Child& child, std::chrono::seconds limit = std::chrono::seconds
 }
 
 fs::path shared_dir(const std::string& name) {
-  const fs::path root = fresh_dir(name);
+  fs::path root = fresh_dir(name);
   fs::permissions(root, fs::perms::all);  // for the unprivileged user
   write_text(root / "scene.toml",
              "[scene]\nname = \"threads\"\n[initial]\nN = 20000\n[particles]\nr = 0.5\n"

@@ -35,7 +35,7 @@ const ValueFilter kEveryValue = [](const std::string&) { return true; };
 // and /declared, `declared` doubles whose chunks are never written: a sound
 // dataset that reads as its fill value 0, held in no bytes at all.
 fs::path declaring_file(const std::string& name, std::uint64_t declared, std::size_t padding) {
-  const fs::path file = testing::fresh_dir(name) / "result.h5";
+  fs::path file = testing::fresh_dir(name) / "result.h5";
   fs::create_directories(file.parent_path());
   Hdf5File h5 = Hdf5File::create(file.string());
   h5.set_attribute("/", "layout_version", layout_version_text());

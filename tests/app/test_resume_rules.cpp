@@ -32,7 +32,7 @@ const char* kScene =
 // runs: its checkpoint, realization 0's state and its states file.
 fs::path interrupted(const fs::path& root) {
   write_text(root / "scene.toml", kScene);
-  const fs::path run = root / "run";
+  fs::path run = root / "run";
   Child child({"run", (root / "scene.toml").string(), "--out", run.string(), "-q"},
               with_env({{"SHOCKGAS_FAULT", "compute:2:stop"}}));
   EXPECT_TRUE(child.wait_stopped()) << child.err();

@@ -127,7 +127,7 @@ const std::vector<std::string> kRooms = {"files",  "scene", "records",  "directo
 std::string layer_of(const std::string& path) {
   const auto slash = path.find('/');
   if (slash == std::string::npos) return path == "shockgas.hpp" ? path : "";
-  const std::string module = path.substr(0, slash);
+  std::string module = path.substr(0, slash);
   const auto second = path.find('/', slash + 1);
   if (module != "app" || second == std::string::npos) return module;
   return path.substr(0, second);

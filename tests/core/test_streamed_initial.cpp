@@ -3,7 +3,8 @@
 // is the same to the bit as from a whole copy.
 #include <gtest/gtest.h>
 
-#include <cstring>
+#include <bit>
+#include <cstdint>
 
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/initial_stream.hpp"
@@ -36,7 +37,9 @@ Bodies drawn(const InitialCondition& initial, std::uint64_t k) {
   return b;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
 
 TEST(StreamedInitial, HoldsNoBodiesAndDrawsTheSameOnes) {
   for (Positions positions : {Positions::lattice, Positions::random})

@@ -193,7 +193,7 @@ int run(std::vector<std::string> args, std::string* said = nullptr) {
 
 fs::path write_scene(const fs::path& dir) {
   fs::create_directories(dir);
-  const fs::path path = dir / "scene.toml";
+  fs::path path = dir / "scene.toml";
   std::ofstream(path) << "[initial]\nN = 2048\n[particles]\nr = 0.5\ndelta = 0.05\nt_end = 20\n"
                       << "[output]\nplots = false\n";
   return path;

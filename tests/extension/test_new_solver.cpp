@@ -44,7 +44,7 @@ int run(std::vector<std::string> args, std::string* said = nullptr) {
 // The sine scene after its shock (data/scenes/sine.toml) with the new solver and the exact one.
 fs::path write_scene(const fs::path& dir, std::size_t cells, double cfl) {
   fs::create_directories(dir);
-  const fs::path path = dir / "scene.toml";
+  fs::path path = dir / "scene.toml";
   std::ofstream(path) << "[initial]\nvelocities = \"expression\"\nv0 = \"0.5 + sin(2*pi*x)\"\n"
                       << "[continuum]\nsolvers = [\"hopf_lax\", \"rusanov\"]\nt_end = 0.5\ncells = " << cells
                       << "\ncfl = " << cfl << "\n[output]\nplots = false\n";

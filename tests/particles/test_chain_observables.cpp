@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <numeric>
@@ -158,7 +160,8 @@ TEST(PeriodWrap, EqualsWrapIntoToTheBit) {
           : u < 0.95 ? k * L
                      : std::nextafter(k * L, u < 0.975 ? -1e300 : 1e300);
       const double got = wrap(x), want = wrap_into(x, L);
-      ASSERT_EQ(std::memcmp(&got, &want, sizeof got), 0) << "x = " << x << ", L = " << L;
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(want))
+          << "x = " << x << ", L = " << L;
     }
   }
 }

@@ -7,8 +7,9 @@
 // with bodies at several local times and rounding-sized drops, light and heavy.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,9 @@ struct Body {
   double at(double s) const { return x + v * (s - t); }
 };
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
 
 void expect_same_part(const ClusterPart& a, const ClusterPart& b) {
   EXPECT_EQ(a.joined, b.joined);

@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -127,7 +129,8 @@ TEST(PeriodWrap, WrapAllEqualsWrapIntoToTheBit) {
       wrap.wrap_all(x.data(), w.data(), n);
       for (std::size_t i = 0; i < n; ++i) {
         const double want = wrap_into(x[i], L);
-        ASSERT_EQ(std::memcmp(&w[i], &want, sizeof want), 0) << "x = " << x[i] << ", L = " << L;
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(w[i]), std::bit_cast<std::uint64_t>(want))
+            << "x = " << x[i] << ", L = " << L;
       }
     }
   }

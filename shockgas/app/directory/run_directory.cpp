@@ -53,7 +53,7 @@ void rename_or_throw(const fs::path& from, const fs::path& to, unsigned flags) {
 bool exchange_unsupported(int error) { return error == EINVAL || error == ENOSYS || error == ENOTSUP; }
 
 fs::path checked_target(const fs::path& out) {
-  const fs::path target = resolve_target(out);
+  fs::path target = resolve_target(out);
   check_target_path(target, out.string());
   return target;
 }
@@ -228,7 +228,7 @@ fs::path swap_into_place(const fs::path& staging, const fs::path& target, SwapMe
   }
   // Two renames: between them the target is missing, and the previous results
   // wait at `.NAME.old-*` for clear_leftovers() to put them back.
-  const fs::path aside =
+  fs::path aside =
       staging.parent_path() /
       (hidden(target, "old-") + staging.filename().string().substr(hidden(target, "tmp-").size()));
   rename_or_throw(target, aside, 0);

@@ -20,11 +20,11 @@ bool holds_plots(const fs::path& dir) {
 
 fs::path running_file() {
   std::error_code ec;
-  const fs::path program = fs::read_symlink("/proc/self/exe", ec);
+  fs::path program = fs::read_symlink("/proc/self/exe", ec);
   Dl_info info{};
   if (dladdr(reinterpret_cast<void*>(&running_file), &info) != 0 && info.dli_fname != nullptr) {
     // The program itself is named as it was started (maybe relative); a shared object by its path.
-    const fs::path object = fs::weakly_canonical(info.dli_fname, ec);
+    fs::path object = fs::weakly_canonical(info.dli_fname, ec);
     if (!ec && !object.empty() && object.filename() != program.filename()) return object;
   }
   return program;

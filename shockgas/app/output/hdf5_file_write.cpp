@@ -55,7 +55,7 @@ H5Handle creation_properties(const std::vector<hsize_t>& dims, const std::string
   check(H5Pset_shuffle(dcpl.get()), "H5Pset_shuffle", path);
   check(H5Pset_deflate(dcpl.get(), kDeflateLevel), "H5Pset_deflate", path);
   check(H5Pset_fletcher32(dcpl.get()), "H5Pset_fletcher32", path);
-  check(H5Pset_obj_track_times(dcpl.get(), 0), "H5Pset_obj_track_times",
+  check(H5Pset_obj_track_times(dcpl.get(), false), "H5Pset_obj_track_times",
         path);  // the same bytes for the same run
   return dcpl;
 }

@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kChunk = 4096;  // bodies per read: 96 KiB for the three columns
-constexpr std::size_t kEntryWords = 7, kEntryBytes = kEntryWords * 8, kTrailerBytes = 3 * 8;
+constexpr std::size_t kEntryWords = 7, kEntryBytes = kEntryWords * 8, kTrailerBytes = std::size_t{3} * 8;
 
 std::string reason() { return std::strerror(errno); }
 

@@ -19,7 +19,7 @@ namespace shockgas::app {
 // requested meanwhile. Passes the fault point "plot" at each poll (fault.hpp).
 // With `said`, the child's stdout and stderr go there instead (its last
 // kSaidBytes), for the caller to tell the user what matters of it.
-inline constexpr std::size_t kSaidBytes = 64 * 1024;
+inline constexpr std::size_t kSaidBytes = std::size_t{64} * 1024;
 int run_child(const std::vector<std::string>& argv, std::string* said = nullptr);
 
 }  // namespace shockgas::app

@@ -22,6 +22,8 @@ struct CapturedDataset {
   Storage storage = Storage::float64;  // as declared: the type the file (and Python) gives the values
 };
 
+// Its implicit move is noexcept, as VariantResult's (run_results.hpp).
+// NOLINTNEXTLINE(bugprone-exception-escape)
 struct CapturedOutputs {
   std::map<std::string, CapturedDataset> datasets;  // "/particles/T"
   // "/particles@stop_reason": text for attributes declared without a unit, else a number.
