@@ -34,6 +34,7 @@
 #include <tuple>
 
 #include "csv_main.hpp"
+#include "plain_pav.hpp"
 #include "shockgas/core/initial_condition.hpp"
 #include "shockgas/core/sticky_hull.hpp"
 #include "shockgas/particles/recorder.hpp"
@@ -81,25 +82,13 @@ const Bodies& bodies(std::size_t n) {
 }
 
 // The plain pass: blocks (mean of y, weight) on a stack; returns the block count.
+// Pushed body by body, as the command's baseline is.
 struct PlainPav {
-  std::unique_ptr<double[]> mean, weight;
+  shockgas::bench::PlainPav stack;
   std::size_t blocks = 0;
-  PlainPav(const Bodies& b, double t)
-      : mean(std::make_unique_for_overwrite<double[]>(b.size())),
-        weight(std::make_unique_for_overwrite<double[]>(b.size())) {
-    std::size_t top = 0;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-      double y = b.x[i] + t * b.v[i], w = b.m[i];
-      while (top > 0 && mean[top - 1] > y) {
-        const double total = weight[top - 1] + w;
-        y = (weight[top - 1] * mean[top - 1] + w * y) / total;
-        w = total;
-        --top;
-      }
-      mean[top] = y, weight[top] = w;
-      ++top;
-    }
-    blocks = top;
+  PlainPav(const Bodies& b, double t) : stack(b.size()) {
+    for (std::size_t i = 0; i < b.size(); ++i) stack.push(b.x[i] + t * b.v[i], b.m[i]);
+    blocks = stack.blocks();
   }
 };
 
