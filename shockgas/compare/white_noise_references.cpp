@@ -2,20 +2,17 @@
 
 #include <cmath>
 
+#include "shockgas/compare/chernoff_table.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
 #include "shockgas/compare/eulerian_velocity_law.hpp"
 #include "shockgas/compare/gauss_legendre.hpp"
 
 namespace shockgas::compare {
 
-namespace {
-
 bool is_white_noise_on_a_lattice(const InitialParams& p) {
   return p.positions == Positions::lattice &&
          (p.velocities == Velocities::uniform || p.velocities == Velocities::gaussian) && p.N > 0;
 }
-
-}  // namespace
 
 // int u^2 P_mass(u) du on [-5, 5] (P_mass(5) ~ 1e-40), 8-point Gauss-Legendre on
 // panels of 0.05: the integrand is smooth, the rule exact to rounding long before.
@@ -33,6 +30,12 @@ double cluster_law_second_moment() {
     return sum;
   }();
   return moment;
+}
+
+void prepare_white_noise_laws() {
+  chernoff_log_g_table();
+  cluster_velocity_law();
+  cluster_law_second_moment();
 }
 
 std::optional<WhiteNoiseReferences> white_noise_references(const InitialParams& p) {
