@@ -90,11 +90,13 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   // beside the checkpoint when one refers to it (state_file.hpp); a shard's
   // records carry them.
   const fs::path states_dir = shard || !out ? fs::path() : out->work();
-  // The white-noise laws' tables, which the analysis after the particles needs,
-  // built beside them (white_noise_references.hpp); waited for on return.
-  const std::future<void> laws = !shard && compare::is_white_noise_on_a_lattice(scene.initial)
-                                     ? start_beside(compare::prepare_white_noise_laws)
-                                     : std::future<void>();
+  // The white-noise laws' tables, which the analysis after the particles needs
+  // (the process that writes the run, not a shard's), built beside them
+  // (white_noise_references.hpp); waited for on return.
+  const std::future<void> laws =
+      !shard && speaks_for_job() && compare::is_white_noise_on_a_lattice(scene.initial)
+          ? start_beside(compare::prepare_white_noise_laws)
+          : std::future<void>();
   ComputedRecords computed;
   {
     // Rank 0 keeps a job's checkpoint (job_ensembles.hpp); every rank saves

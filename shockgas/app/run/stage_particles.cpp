@@ -70,12 +70,13 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
                               const EnsembleSource& source) {
   ParticleResults r;
   // The white-noise laws' tables (about 0.3 s, once per process) are built on a
-  // second thread while the particles run (where a source computed them, it
-  // did so: jobs/parallel_run.cpp), and the exact cluster count (about 0.3 s)
-  // beside the rest of the analysis: the same numbers, sooner where a core is free.
-  const bool white_noise = compare::is_white_noise_on_a_lattice(scene.initial);
-  const std::future<void> laws =
-      white_noise ? start_beside(compare::prepare_white_noise_laws) : std::future<void>();
+  // second thread while the particles run here (a source's particles have run:
+  // it built them beside, jobs/parallel_run.cpp), and the exact cluster count
+  // (about 0.3 s) beside the rest of the analysis: the same numbers, sooner
+  // where a core is free.
+  const std::future<void> laws = !source && compare::is_white_noise_on_a_lattice(scene.initial)
+                                     ? start_beside(compare::prepare_white_noise_laws)
+                                     : std::future<void>();
   // A phase of progress, until compute_parts starts the next one.
   const char* analysis = "particles: analysis, writing result.h5";
   if (source) {
@@ -104,18 +105,17 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
       compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r, fit.t_min, fit.t_max);
   r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
   r.exact = compare::white_noise_references(scene.initial);
+  const bool counted = r.exact && scene.particles.clusters;
   std::future<std::vector<double>> counts;
-  if (r.exact && scene.particles.clusters)
+  if (counted)
     counts = start_beside([&r, &scene] { return exact_cluster_counts(*r.exact, r.ensemble.t, scene); });
   if (r.exact && r.histogram.bins > 0)
     r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
   r.errors = compare::jackknife_analysis(
       r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r, fit.t_min, fit.t_max, r.histogram,
       r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
-  if (counts.valid())
-    r.n_clusters_exact = counts.get();
-  else if (r.exact && scene.particles.clusters)
-    r.n_clusters_exact = exact_cluster_counts(*r.exact, r.ensemble.t, scene);
+  if (counted)
+    r.n_clusters_exact = counts.valid() ? counts.get() : exact_cluster_counts(*r.exact, r.ensemble.t, scene);
   return r;
 }
 
