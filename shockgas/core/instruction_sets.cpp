@@ -38,7 +38,6 @@ const Probe kProbes[] = {
     SHOCKGAS_INSTRUCTION_SET("avx512vbmi2"),  SHOCKGAS_INSTRUCTION_SET("avx512vnni"),
     SHOCKGAS_INSTRUCTION_SET("avx512bitalg"), SHOCKGAS_INSTRUCTION_SET("avx512vpopcntdq"),
     SHOCKGAS_INSTRUCTION_SET("avx512bf16"),   SHOCKGAS_INSTRUCTION_SET("avx512vp2intersect"),
-
 };
 #undef SHOCKGAS_INSTRUCTION_SET
 #else
@@ -66,6 +65,7 @@ bool write_message(const char* needed, const char* build_target, Has has, const 
     used += n;
     out[used] = '\0';
   };
+  auto append_text = [&](const char* text) { append(text, std::strlen(text)); };
   out[0] = '\0';
   bool any = false;
   for (const char* word = needed; *word != '\0';) {
@@ -73,25 +73,21 @@ bool write_message(const char* needed, const char* build_target, Has has, const 
     const std::size_t length = std::strcspn(word + skip, " ");
     if (length > 0 && !has(context, word + skip, length)) {
       if (!any) {
-        const char* head = "shockgas: this build was compiled for ";
-        append(head, std::strlen(head));
-        append(build_target, std::strlen(build_target));
-        const char* lacks = " and uses instructions this processor lacks: ";
-        append(lacks, std::strlen(lacks));
+        append_text("shockgas: this build was compiled for ");
+        append_text(build_target);
+        append_text(" and uses instructions this processor lacks: ");
       } else {
-        append(", ", 2);
+        append_text(", ");
       }
       append(word + skip, length);
       any = true;
     }
     word += skip + length;
   }
-  if (any) {
-    const char* tail =
+  if (any)
+    append_text(
         ". Build it on this machine, or build a portable binary or package with cmake "
-        "-DSHOCKGAS_NATIVE=OFF (docs/install.md).\n";
-    append(tail, std::strlen(tail));
-  }
+        "-DSHOCKGAS_NATIVE=OFF (docs/install.md).\n");
   return any;
 }
 

@@ -185,8 +185,7 @@ std::vector<Declaration> evolution() {
               key(p, "evolution.amplitude_exponent", "1",
                   "fitted a in (max v - min v) / 2 ~ t^a on /animation/evolution/amplitude_fit_t: after the "
                   "first shock, from the start of theory.n_wave_decay's or theory.sawtooth_decay's window, "
-                  "and "
-                  "from t_end / compare.fit_window",
+                  "and from t_end / compare.fit_window",
                   "where one of those laws holds, with 3 or more frames in the window",
                   evolution_key([](const Evolution& e) {
                     return e.amplitude_fit ? Json(e.amplitude_fit->exponent) : Json(nullptr);
