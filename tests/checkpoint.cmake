@@ -20,28 +20,28 @@ foreach(signal KILL TERM)
                    ${checkpoint_dir}/ensemble.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/shard-${signal} ${signal}
                    --realizations 1:5)
   set_tests_properties(checkpoint.resumed_after_${signal} checkpoint.shard_resumed_after_${signal}
-                       PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
+                       PROPERTIES LABELS unit TIMEOUT 300)
 endforeach()
 add_test(NAME checkpoint.states_apart_resumed_after_TERM
          COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
                  ${checkpoint_dir}/states_apart.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/states-apart TERM)
-set_tests_properties(checkpoint.states_apart_resumed_after_TERM PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
+set_tests_properties(checkpoint.states_apart_resumed_after_TERM PROPERTIES LABELS unit TIMEOUT 300)
 add_test(NAME checkpoint.sweep_resumed_after_KILL
          COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
                  ${checkpoint_dir}/sweep.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/sweep KILL)
-set_tests_properties(checkpoint.sweep_resumed_after_KILL PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2)
+set_tests_properties(checkpoint.sweep_resumed_after_KILL PROPERTIES LABELS unit TIMEOUT 300)
 foreach(signal KILL TERM)
   add_test(NAME checkpoint.single_apart_resumed_after_${signal}
            COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
                    ${checkpoint_dir}/single_apart.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/single-apart-${signal}
                    ${signal})
   set_tests_properties(checkpoint.single_apart_resumed_after_${signal}
-                       PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2
+                       PROPERTIES LABELS unit TIMEOUT 300
                        ENVIRONMENT "SAID=1 continues from a saved state;SAID_STOPPED=realization 0 saved at t =")
   add_test(NAME checkpoint.single_resumed_after_${signal}
            COMMAND sh ${checkpoint_dir}/stopped_then_resumed.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
                    ${checkpoint_dir}/single.toml ${PROJECT_BINARY_DIR}/checkpoint-tests/single-${signal} ${signal})
   set_tests_properties(checkpoint.single_resumed_after_${signal}
-                       PROPERTIES LABELS unit TIMEOUT 300 PROCESSORS 2
+                       PROPERTIES LABELS unit TIMEOUT 300
                        ENVIRONMENT "SAID=1 continues from a saved state;SAID_STOPPED=realization 0 saved at t =")
 endforeach()

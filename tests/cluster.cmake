@@ -10,7 +10,7 @@ function(shockgas_cluster_page_test case label)
            COMMAND sh ${cluster_dir}/cluster_page.sh $<TARGET_FILE:shockgas> $<TARGET_FILE:compare_runs>
                    "${SHOCKGAS_MPIRUN}" ${PROJECT_SOURCE_DIR}/docs/cluster.md ${cluster_dir}/fig4-stand-in.toml
                    ${PROJECT_BINARY_DIR}/cluster-page-tests/${case} ${case})
-  set_tests_properties(cluster_page.${case} PROPERTIES LABELS ${label} TIMEOUT 600 PROCESSORS 2)
+  set_tests_properties(cluster_page.${case} PROPERTIES LABELS ${label} TIMEOUT 600)
 endfunction()
 
 shockgas_cluster_page_test(array unit)

@@ -22,7 +22,7 @@ endif()
 set(mpi_dir ${CMAKE_CURRENT_SOURCE_DIR}/mpi)
 function(shockgas_mpi_test name)
   add_test(NAME mpi.${name} COMMAND ${ARGN})
-  set_tests_properties(mpi.${name} PROPERTIES LABELS mpi TIMEOUT 600 PROCESSORS 2)
+  set_tests_properties(mpi.${name} PROPERTIES LABELS mpi TIMEOUT 600)
 endfunction()
 
 foreach(ranks 2 3)
