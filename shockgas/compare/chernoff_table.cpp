@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "shockgas/compare/chernoff.hpp"
 #include "shockgas/core/error.hpp"
@@ -46,6 +47,13 @@ ChernoffLogGTable::ChernoffLogGTable(double lo, double hi) : lo_(lo), hi_(hi) {
   }
 }
 
+ChernoffLogGTable::ChernoffLogGTable(double lo, double hi, std::vector<double> coefficients)
+    : lo_(lo), hi_(hi), coefficients_(std::move(coefficients)) {
+  require(lo < hi && coefficients_.size() % kTerms == 0 &&
+              coefficients_.size() / kTerms == static_cast<std::size_t>(std::round((hi - lo) / kPanel)),
+          "chernoff_table.coefficients", coefficients_.size(), "21 per panel of 1/4 in [lo, hi]");
+}
+
 double ChernoffLogGTable::log_g(double x) const {
   if (!(x >= lo_ && x <= hi_)) return chernoff_log_g(x);
   const auto panels = static_cast<int>(coefficients_.size() / kTerms);
@@ -61,10 +69,5 @@ double ChernoffLogGTable::log_g(double x) const {
 }
 
 double ChernoffLogGTable::g(double x) const { return std::exp(log_g(x)); }
-
-const ChernoffLogGTable& chernoff_log_g_table() {
-  static const ChernoffLogGTable table;
-  return table;
-}
 
 }  // namespace shockgas::compare

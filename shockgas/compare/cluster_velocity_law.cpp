@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "shockgas/compare/airy.hpp"
 #include "shockgas/compare/chernoff_table.hpp"
@@ -35,15 +36,6 @@ constexpr std::array<double, 9> kSmallS = {
 };
 constexpr double kDirectFrom = 0.3;
 
-const std::vector<double>& airy_zeros() {
-  static const std::vector<double> zeros = [] {
-    std::vector<double> a;
-    for (int k = 1; k <= 1000; ++k) a.push_back(airy_ai_zero(k).a);
-    return a;
-  }();
-  return zeros;
-}
-
 // mu = v^2, v in [0, 3.25] on 13 panels of 16 points: mu^power K dmu = 2 v^(2 power + 1) K dv.
 constexpr double kVMax = 3.25;  // mu <= 10.6: the integrand is below exp(-190) of its peak beyond
 constexpr int kVPanels = 13;
@@ -51,6 +43,12 @@ constexpr int kVPanels = 13;
 constexpr double kUMax = 5.0, kUPanel = 0.05;
 
 }  // namespace
+
+std::vector<double> compute_airy_zeros() {
+  std::vector<double> a;
+  for (int k = 1; k <= 1000; ++k) a.push_back(airy_ai_zero(k).a);
+  return a;
+}
 
 double airy_zero_exponential_sum(double s) {
   require_above("airy.exponential_sum_s", s, 0.0);
@@ -75,35 +73,41 @@ ClusterVelocityLaw::ClusterVelocityLaw() {
   for (int p = 0; p < kVPanels; ++p)
     for (std::size_t i = 0; i < rule.x.size(); ++i) {
       const double v = width * (p + 0.5 + 0.5 * rule.x[i]);
-      mu_.push_back(v * v);
-      weight_.push_back(0.5 * width * rule.w[i] * 2 * v * airy_zero_exponential_sum(kCbrt2 * v * v));
+      n_.mu.push_back(v * v);
+      n_.weight.push_back(0.5 * width * rule.w[i] * 2 * v * airy_zero_exponential_sum(kCbrt2 * v * v));
     }
   const int panels = static_cast<int>(std::round(2 * kUMax / kUPanel));
-  cumulative_.assign(1, 0.0);
+  n_.cumulative.assign(1, 0.0);
   const GaussRule r = gauss_legendre(8);
   double number = 0;
   for (int p = 0; p < panels; ++p) {
     const double a = -kUMax + p * kUPanel;
-    cumulative_.push_back(cumulative_.back() + mass_integral(a, a + kUPanel));
+    n_.cumulative.push_back(n_.cumulative.back() + mass_integral(a, a + kUPanel));
     for (std::size_t i = 0; i < r.x.size(); ++i)
       number += 0.5 * kUPanel * r.w[i] * 2 * moment_sum(a + kUPanel * 0.5 * (1 + r.x[i]), 1);
   }
-  shocks_ = number;
+  n_.shocks = number;
+}
+
+ClusterVelocityLaw::ClusterVelocityLaw(Nodes nodes) : n_(std::move(nodes)) {
+  require(n_.mu.size() == n_.weight.size() && !n_.mu.empty() &&
+              n_.cumulative.size() == static_cast<std::size_t>(std::round(2 * kUMax / kUPanel)) + 1,
+          "cluster_law.nodes", n_.mu.size(), "a law's nodes and its CDF table on [-5, 5]");
 }
 
 double ClusterVelocityLaw::moment_sum(double u, int power) const {  // power 1 or 2
   const ChernoffLogGTable& g = chernoff_log_g_table();
   double sum = 0;
-  for (std::size_t j = 0; j < mu_.size(); ++j) {
-    const double m = mu_[j];
-    sum += weight_[j] * (power == 2 ? m * m : m) * std::exp(g.log_g(0.5 * m + u) + g.log_g(0.5 * m - u));
+  for (std::size_t j = 0; j < n_.mu.size(); ++j) {
+    const double m = n_.mu[j];
+    sum += n_.weight[j] * (power == 2 ? m * m : m) * std::exp(g.log_g(0.5 * m + u) + g.log_g(0.5 * m - u));
   }
   return sum;
 }
 
 double ClusterVelocityLaw::mass_density(double u) const { return 2 * moment_sum(u, 2); }
 
-double ClusterVelocityLaw::number_density(double u) const { return 2 * moment_sum(u, 1) / shocks_; }
+double ClusterVelocityLaw::number_density(double u) const { return 2 * moment_sum(u, 1) / n_.shocks; }
 
 double ClusterVelocityLaw::mass_integral(double a, double b) const {
   static const GaussRule rule = gauss_legendre(8);
@@ -121,15 +125,15 @@ double ClusterVelocityLaw::mass_cdf(double u) const {
   if (u >= kUMax) return 1.0;
   const auto p = static_cast<std::size_t>((u + kUMax) / kUPanel);
   const double left = -kUMax + static_cast<double>(p) * kUPanel;
-  return cumulative_[p] + mass_integral(left, u);
+  return n_.cumulative[p] + mass_integral(left, u);
 }
 
 double ClusterVelocityLaw::mass_quantile(double p) const {
   require(p > 0 && p < 1, "cluster_law.p", p, "0 < p < 1");
   // Bracket in the table, then Newton with the density (the CDF is smooth and increasing).
-  const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), p);
-  const auto k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(1, it - cumulative_.begin())) - 1;
-  double u = -kUMax + static_cast<double>(k) * kUPanel, c = cumulative_[k];
+  const auto it = std::upper_bound(n_.cumulative.begin(), n_.cumulative.end(), p);
+  const auto k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(1, it - n_.cumulative.begin())) - 1;
+  double u = -kUMax + static_cast<double>(k) * kUPanel, c = n_.cumulative[k];
   for (int iteration = 0; iteration < 50; ++iteration) {
     const double step = (p - c) / mass_density(u);
     if (!(std::abs(step) > 1e-15 * std::max(1.0, std::abs(u)))) break;
@@ -139,9 +143,18 @@ double ClusterVelocityLaw::mass_quantile(double p) const {
   return u;
 }
 
-const ClusterVelocityLaw& cluster_velocity_law() {
-  static const ClusterVelocityLaw law;
-  return law;
+// int u^2 P_mass(u) du on [-5, 5] (P_mass(5) ~ 1e-40), 8-point Gauss-Legendre on
+// panels of 0.05: the integrand is smooth, the rule exact to rounding long before.
+double compute_cluster_law_second_moment(const ClusterVelocityLaw& law) {
+  const GaussRule rule = gauss_legendre(8);
+  constexpr double kPanel = 0.05;
+  double sum = 0;
+  for (int p = 0; p < static_cast<int>(2 * kUMax / kPanel); ++p)
+    for (std::size_t i = 0; i < rule.x.size(); ++i) {
+      const double u = -kUMax + kPanel * (p + 0.5 + 0.5 * rule.x[i]);
+      sum += 0.5 * kPanel * rule.w[i] * u * u * law.mass_density(u);
+    }
+  return sum;
 }
 
 double cluster_velocity_density(double z, double D) {

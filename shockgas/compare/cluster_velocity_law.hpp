@@ -67,15 +67,30 @@ namespace shockgas::compare {
 // Throws InputError unless s > 0.
 double airy_zero_exponential_sum(double s);
 
+// The zeros a_1 > a_2 > ... > a_1000 of Ai that sum takes: computed
+// (airy_ai_zero, airy.hpp), and the build's (law_tables.hpp).
+std::vector<double> compute_airy_zeros();
+const std::vector<double>& airy_zeros();
+
 // The law in scaled units (u), built once: its density by Gauss-Legendre
 // quadrature in sqrt(mu) (208 nodes; g from chernoff_log_g_table), its CDF from a
 // table of that density's integrals on [-5, 5].
 class ClusterVelocityLaw {
  public:
+  // What the law is built of: the quadrature in mu and the CDF table.
+  struct Nodes {
+    std::vector<double> mu, weight;  // nodes and weights (K folded in)
+    std::vector<double> cumulative;  // P_mass integrated up to each grid point of [-5, 5]
+    double shocks = 0;               // n_s [1/a]
+  };
+  // Computes the law (about 0.1 s, from chernoff_log_g_table and airy_zeros).
   ClusterVelocityLaw();
-  double mass_density(double u) const;              // P_mass(u)
-  double number_density(double u) const;            // P_number(u)
-  double shock_density() const { return shocks_; }  // n_s [1/a]
+  // A law computed before.
+  explicit ClusterVelocityLaw(Nodes nodes);
+  const Nodes& nodes() const { return n_; }
+  double mass_density(double u) const;                // P_mass(u)
+  double number_density(double u) const;              // P_number(u)
+  double shock_density() const { return n_.shocks; }  // n_s [1/a]
   double mass_cdf(double u) const;
   double mass_quantile(double p) const;  // throws InputError unless 0 < p < 1
   // int_a^b P_mass (either order), by 8-point Gauss-Legendre on panels <= 0.05.
@@ -83,13 +98,16 @@ class ClusterVelocityLaw {
 
  private:
   double moment_sum(double u, int power) const;  // int mu^power K(mu) g(mu/2+u) g(mu/2-u) dmu
-  std::vector<double> mu_, weight_;              // nodes and weights (K folded in)
-  std::vector<double> cumulative_;               // P_mass integrated up to each grid point
-  double shocks_ = 0;
+  Nodes n_;
 };
 
-// One law shared by the functions below, built on first use (~0.2 s, thread-safe).
+// One law shared by the functions below: the build's (law_tables.hpp).
 const ClusterVelocityLaw& cluster_velocity_law();
+
+// E_mass u^2 of the law, by quadrature of its density (0.1757064): computed,
+// and the build's (law_tables.hpp).
+double compute_cluster_law_second_moment(const ClusterVelocityLaw& law);
+double cluster_law_second_moment();
 
 // In shockgas units z = (v - U) t^(1/3) = (4 D)^(1/3) u (D > 0, as in
 // eulerian_velocity_law.hpp): the mass-weighted density, CDF and quantile, and

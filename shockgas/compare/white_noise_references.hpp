@@ -38,15 +38,4 @@ bool is_white_noise_on_a_lattice(const InitialParams& p);
 // noise on a lattice or has no noise (amplitude 0).
 std::optional<WhiteNoiseReferences> white_noise_references(const InitialParams& p);
 
-// Builds the process-wide tables these laws share (the Chernoff function's,
-// chernoff_table.hpp; the cluster velocity law, cluster_velocity_law.hpp; its
-// second moment): about 0.3 s, once per process. They are function-local
-// statics, built at their first use anyway: calling this on another thread
-// ahead of that use moves the cost off the caller's path (a use while they
-// are being built waits for them, and gets the same numbers).
-void prepare_white_noise_laws();
-
-// E_mass u^2 of the cluster velocity law, by quadrature of its density (0.1757064).
-double cluster_law_second_moment();
-
 }  // namespace shockgas::compare

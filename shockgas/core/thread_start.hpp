@@ -5,7 +5,6 @@
 // stops and joins those already started before it passes the error on, so that
 // a refused thread ends the run cleanly, never leaving it waiting for a thread
 // that does not exist.
-#include <future>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -23,19 +22,6 @@ std::thread start_thread(F&& f) {
     throw RunError(std::string("cannot start a thread: ") + e.code().message() +
                    " (the system refused it: the processes and threads of this user are limited, ulimit -u, "
                    "or the system has none left)");
-  }
-}
-
-// f() on a thread of its own, for work the caller could as well do itself (a
-// table to build ahead of its use, a result to compute beside another): an
-// invalid future where the system refuses the thread, and the caller does it.
-// The future's destructor waits for f (std::async).
-template <class F>
-auto start_beside(F f) -> std::future<decltype(f())> {
-  try {
-    return std::async(std::launch::async, std::move(f));
-  } catch (const std::system_error&) {
-    return {};
   }
 }
 

@@ -33,7 +33,9 @@ TEST(ClusterVelocityLaw, ZeroSumExpansionMeetsTheDirectSum) {
 TEST(ClusterVelocityLaw, TableOfLnGIsTheDirectEvaluation) {
   // Degree-20 Chebyshev on quarters: to the direct value's rounding (measured 6e-15).
   const ChernoffLogGTable& table = chernoff_log_g_table();
-  for (double x = -11.0; x <= 11.0; x += 0.1371) {
+  EXPECT_EQ(table.lo(), -11.0);
+  EXPECT_EQ(table.hi(), 12.0);
+  for (double x = -11.0; x <= 12.0; x += 0.1371) {
     const double direct = chernoff_log_g(x);
     EXPECT_NEAR(table.log_g(x), direct, 1e-13 * std::max(1.0, std::abs(direct))) << x;
   }

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <future>
 #include <iostream>
 
 #include "shockgas/app/directory/run_directory.hpp"
@@ -17,10 +16,8 @@
 #include "shockgas/app/records/checkpoint.hpp"
 #include "shockgas/app/records/state_file.hpp"
 #include "shockgas/app/run/progress_bar.hpp"
-#include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
-#include "shockgas/core/thread_start.hpp"
 
 namespace shockgas::app {
 
@@ -90,13 +87,6 @@ std::string run_parallel(const Scene& scene, const fs::path& dir, const RunOptio
   // beside the checkpoint when one refers to it (state_file.hpp); a shard's
   // records carry them.
   const fs::path states_dir = shard || !out ? fs::path() : out->work();
-  // The white-noise laws' tables, which the analysis after the particles needs
-  // (the process that writes the run, not a shard's), built beside them
-  // (white_noise_references.hpp); waited for on return.
-  const std::future<void> laws =
-      !shard && speaks_for_job() && compare::is_white_noise_on_a_lattice(scene.initial)
-          ? start_beside(compare::prepare_white_noise_laws)
-          : std::future<void>();
   ComputedRecords computed;
   {
     // Rank 0 keeps a job's checkpoint (job_ensembles.hpp); every rank saves

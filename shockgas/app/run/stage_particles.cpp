@@ -4,7 +4,6 @@
 // exact laws of a white-noise start beside them (shockgas/compare/white_noise_references.hpp).
 // An animation adds its frame times to realization 0's snapshots (frames.hpp).
 #include <algorithm>
-#include <future>
 
 #include "shockgas/app/output/frames.hpp"
 #include "shockgas/app/output/run_results.hpp"
@@ -18,7 +17,6 @@
 #include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/interrupt.hpp"
-#include "shockgas/core/thread_start.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
 
 namespace shockgas::app {
@@ -69,14 +67,6 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
                               const compare::SceneShape& shape, ProgressBar& progress,
                               const EnsembleSource& source) {
   ParticleResults r;
-  // The white-noise laws' tables (about 0.3 s, once per process) are built on a
-  // second thread while the particles run here (a source's particles have run:
-  // it built them beside, jobs/parallel_run.cpp), and the exact cluster count
-  // (about 0.3 s) beside the rest of the analysis: the same numbers, sooner
-  // where a core is free.
-  const std::future<void> laws = !source && compare::is_white_noise_on_a_lattice(scene.initial)
-                                     ? start_beside(compare::prepare_white_noise_laws)
-                                     : std::future<void>();
   // A phase of progress, until compute_parts starts the next one.
   const char* analysis = "particles: analysis, writing result.h5";
   if (source) {
@@ -105,17 +95,13 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
       compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r, fit.t_min, fit.t_max);
   r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
   r.exact = compare::white_noise_references(scene.initial);
-  const bool counted = r.exact && scene.particles.clusters;
-  std::future<std::vector<double>> counts;
-  if (counted)
-    counts = start_beside([&r, &scene] { return exact_cluster_counts(*r.exact, r.ensemble.t, scene); });
   if (r.exact && r.histogram.bins > 0)
     r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
   r.errors = compare::jackknife_analysis(
       r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r, fit.t_min, fit.t_max, r.histogram,
       r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
-  if (counted)
-    r.n_clusters_exact = counts.valid() ? counts.get() : exact_cluster_counts(*r.exact, r.ensemble.t, scene);
+  if (r.exact && scene.particles.clusters)
+    r.n_clusters_exact = exact_cluster_counts(*r.exact, r.ensemble.t, scene);
   return r;
 }
 
