@@ -12,8 +12,9 @@ mkdir -p "$out"
 "$mpirun" --allow-run-as-root --oversubscribe -np 2 "$shockgas" run "$scene" --out "$out/run" --no-plots \
   > "$out/stdout" 2> "$out/stderr" &
 launcher=$!
-rank_pid() {  # the process whose environment says OMPI_COMM_WORLD_RANK=$1
-  for pid in $(pgrep -f "$scene"); do
+rank_pid() {  # the launcher's child whose environment says OMPI_COMM_WORLD_RANK=$1 (not
+  # another job's rank: a test running beside this one may launch the same scene)
+  for pid in $(pgrep -P $launcher); do
     if tr '\0' '\n' < /proc/$pid/environ 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$1"; then echo "$pid"; fi
   done
 }
@@ -28,7 +29,7 @@ for rank in $ranks; do
   [ -n "$pid" ] || { echo "rank $rank not found"; kill "$launcher"; exit 1; }
   pids="$pids $pid"
 done
-sleep 2.5  # inside the first realizations (each takes about 6 s of a core)
+sleep 2.5  # inside the first realizations (each takes 2-6 s of a core; 4 a rank)
 kill -s "$signal" $pids
 wait "$launcher"
 status=$?
