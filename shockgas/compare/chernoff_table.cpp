@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <utility>
 
 #include "shockgas/compare/chernoff.hpp"
@@ -49,9 +50,11 @@ ChernoffLogGTable::ChernoffLogGTable(double lo, double hi) : lo_(lo), hi_(hi) {
 
 ChernoffLogGTable::ChernoffLogGTable(double lo, double hi, std::vector<double> coefficients)
     : lo_(lo), hi_(hi), coefficients_(std::move(coefficients)) {
-  require(lo < hi && coefficients_.size() % kTerms == 0 &&
-              coefficients_.size() / kTerms == static_cast<std::size_t>(std::round((hi - lo) / kPanel)),
-          "chernoff_table.coefficients", coefficients_.size(), "21 per panel of 1/4 in [lo, hi]");
+  require(lo < hi, "chernoff_table.range", hi, "hi > lo");
+  const auto panels = static_cast<std::size_t>(std::round((hi - lo) / kPanel));
+  require(coefficients_.size() == panels * kTerms, "chernoff_table.coefficients", coefficients_.size(),
+          std::to_string(panels * kTerms) + " (" + std::to_string(kTerms) + " for each of the " +
+              std::to_string(panels) + " panels of [lo, hi])");
 }
 
 double ChernoffLogGTable::log_g(double x) const {

@@ -3,11 +3,11 @@
 // cluster velocity law integrates products of g over the shock masses).
 //
 // Piecewise Chebyshev interpolation of ln g on panels of width 1/4 with 21
-// Chebyshev-Lobatto points each, on [lo, hi] (default [-11, 12]); outside that
-// range the direct evaluation. The laws' convolutions take g at mu/2 + u up to
-// 6 + 6 = 12 (shock_mass_law.cpp) beside g of mu/2 - u; past 11, ln g < -880,
-// so such a term, exp(ln g + ln g) with ln g <= 1, is 0.0 in either evaluation,
-// and the table spares the direct one (an Airy line integral each). ln g is entire and close to a cubic
+// Chebyshev-Lobatto points each, on [lo, hi]; outside that range the direct
+// evaluation. The default range, [-11, 12], holds every argument of the laws'
+// convolutions, g(mu/2 + u) g(mu/2 - u) with mu <= 12 and |u| <= 6
+// (shock_mass_law.cpp): past 11, ln g < -880 and each such term is 0.0
+// (tests/compare/test_law_tables.cpp). ln g is entire and close to a cubic
 // (-(2/3) x^3 + ln 4x for x >> 1, 2^(1/3) a_1 |x| for x << -1), so degree 20 on
 // a quarter gives it to rounding: measured against chernoff_log_g, the
 // difference is below 1e-14 max(1, |ln g|), the direct evaluation's own
@@ -19,8 +19,8 @@ namespace shockgas::compare {
 
 class ChernoffLogGTable {
  public:
-  // Computes the table (92 x 21 direct evaluations on [-11, 12]). Throws
-  // InputError unless lo < hi.
+  // Computes the table (21 direct evaluations a panel). Throws InputError
+  // unless lo < hi.
   explicit ChernoffLogGTable(double lo = -11.0, double hi = 12.0);
   // A table computed before: its range (hi as computed, a whole number of
   // panels past lo) and coefficients.
@@ -36,7 +36,7 @@ class ChernoffLogGTable {
   std::vector<double> coefficients_;  // Chebyshev coefficients, kTerms per panel
 };
 
-// One table on [-11, 12] shared by the laws: the build's (law_tables.hpp).
+// One table on the default range shared by the laws: the build's (law_tables.hpp).
 const ChernoffLogGTable& chernoff_log_g_table();
 
 }  // namespace shockgas::compare

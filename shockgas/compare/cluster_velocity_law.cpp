@@ -147,12 +147,11 @@ double ClusterVelocityLaw::mass_quantile(double p) const {
 // panels of 0.05: the integrand is smooth, the rule exact to rounding long before.
 double compute_cluster_law_second_moment(const ClusterVelocityLaw& law) {
   const GaussRule rule = gauss_legendre(8);
-  constexpr double kPanel = 0.05;
   double sum = 0;
-  for (int p = 0; p < static_cast<int>(2 * kUMax / kPanel); ++p)
+  for (int p = 0; p < static_cast<int>(2 * kUMax / kUPanel); ++p)
     for (std::size_t i = 0; i < rule.x.size(); ++i) {
-      const double u = -kUMax + kPanel * (p + 0.5 + 0.5 * rule.x[i]);
-      sum += 0.5 * kPanel * rule.w[i] * u * u * law.mass_density(u);
+      const double u = -kUMax + kUPanel * (p + 0.5 + 0.5 * rule.x[i]);
+      sum += 0.5 * kUPanel * rule.w[i] * u * u * law.mass_density(u);
     }
   return sum;
 }

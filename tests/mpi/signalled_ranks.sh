@@ -29,7 +29,7 @@ for rank in $ranks; do
   [ -n "$pid" ] || { echo "rank $rank not found"; kill "$launcher"; exit 1; }
   pids="$pids $pid"
 done
-sleep 2.5  # inside the first realizations (each takes 2-6 s of a core; 4 a rank)
+sleep 2.5  # inside the first realizations (long.toml: 4 a rank, a few seconds each)
 kill -s "$signal" $pids
 wait "$launcher"
 status=$?

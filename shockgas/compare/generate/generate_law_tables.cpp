@@ -1,9 +1,9 @@
 // generate_law_tables OUT: computes the white-noise laws' tables
 // (law_tables.hpp) and writes them to OUT as C++ constants with hexadecimal
 // floating-point literals (printf's %a: exact), for stored_law_tables.cpp.
-// Here the instance functions compute, as the library's did before the build
-// stored their results; the code they run is the library's own sources,
-// compiled with the same options (shockgas/compare/CMakeLists.txt).
+// Here the instance functions compute: airy_zeros by airy_ai_zero, the table
+// and the law by their computing constructors, the moment by quadrature
+// (shockgas/compare/CMakeLists.txt lists the sources this links).
 #include <cstdio>
 #include <exception>
 #include <stdexcept>
@@ -37,11 +37,11 @@ double cluster_law_second_moment() { return compute_cluster_law_second_moment(cl
 namespace {
 
 void write_number(std::FILE* out, const char* name, double value) {
-  std::fprintf(out, "inline constexpr double %s = %a;\n", name, value);
+  std::fprintf(out, "constexpr double %s = %a;\n", name, value);
 }
 
 void write_array(std::FILE* out, const char* name, const std::vector<double>& values) {
-  std::fprintf(out, "inline constexpr double %s[%zu] = {\n", name, values.size());
+  std::fprintf(out, "constexpr double %s[%zu] = {\n", name, values.size());
   for (std::size_t k = 0; k < values.size(); ++k)
     std::fprintf(out, "%a,%s", values[k], (k + 1) % 4 == 0 || k + 1 == values.size() ? "\n" : " ");
   std::fprintf(out, "};\n");
