@@ -36,7 +36,7 @@ class ChernoffLogGTable {
   std::vector<double> coefficients_;  // Chebyshev coefficients, kTerms per panel
 };
 
-// One table on the default range shared by the laws: the build's (law_tables.hpp).
+// One table on the default range shared by the laws: the build's (stored_law_tables.cpp).
 const ChernoffLogGTable& chernoff_log_g_table();
 
 }  // namespace shockgas::compare

@@ -68,7 +68,7 @@ namespace shockgas::compare {
 double airy_zero_exponential_sum(double s);
 
 // The zeros a_1 > a_2 > ... > a_1000 of Ai that sum takes: computed
-// (airy_ai_zero, airy.hpp), and the build's (law_tables.hpp).
+// (airy_ai_zero, airy.hpp), and the build's (stored_law_tables.cpp).
 std::vector<double> compute_airy_zeros();
 const std::vector<double>& airy_zeros();
 
@@ -101,11 +101,11 @@ class ClusterVelocityLaw {
   Nodes n_;
 };
 
-// One law shared by the functions below: the build's (law_tables.hpp).
+// One law shared by the functions below: the build's (stored_law_tables.cpp).
 const ClusterVelocityLaw& cluster_velocity_law();
 
 // E_mass u^2 of the law, by quadrature of its density (0.1757064): computed,
-// and the build's (law_tables.hpp).
+// and the build's (stored_law_tables.cpp).
 double compute_cluster_law_second_moment(const ClusterVelocityLaw& law);
 double cluster_law_second_moment();
 

@@ -1,10 +1,26 @@
-// The instances of the white-noise laws' tables, from the build's computation
-// (law_tables.hpp): law_tables.inc, written by generate_law_tables.
+// The white-noise laws' tables that depend on no scene: the zeros of Ai
+// (airy_zeros, cluster_velocity_law.hpp), ln g on Chebyshev panels
+// (chernoff_log_g_table, chernoff_table.hpp), the cluster velocity law's
+// quadrature and CDF table (cluster_velocity_law) and its second moment
+// (cluster_law_second_moment). Computing them costs about 0.23 s of a core.
+//
+// The build computes them once: generate_law_tables (generate/) runs the
+// library's sources that compute them, compiled with the build's global
+// options (those that decide floating-point results: -ffp-contract=off, the
+// target's -march; not the library's position-independent code, which does
+// not), and writes them as hexadecimal floating-point literals, which are
+// exact, into law_tables.inc in the build tree; this file compiles them in,
+// and the instance functions below hand them out. The numbers are those a run-time computation gives on the
+// build machine, bit for bit (tests/compare/test_law_tables.cpp computes them
+// afresh and compares): the C library's exp, log and sin may pick other code
+// on another processor (glibc chooses by its features at start-up), so a
+// package built elsewhere carries its build machine's last bits, as its other
+// constants do.
 #include <iterator>
+#include <vector>
 
 #include "shockgas/compare/chernoff_table.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
-#include "shockgas/compare/law_tables.hpp"
 #include "shockgas/compare/law_tables.inc"
 
 namespace shockgas::compare {
@@ -36,15 +52,5 @@ const ClusterVelocityLaw& cluster_velocity_law() {
 }
 
 double cluster_law_second_moment() { return stored::kClusterLawSecondMoment; }
-
-LawTables stored_law_tables() {
-  const ChernoffLogGTable& g = chernoff_log_g_table();
-  return {airy_zeros(),
-          g.lo(),
-          g.hi(),
-          g.coefficients(),
-          cluster_velocity_law().nodes(),
-          cluster_law_second_moment()};
-}
 
 }  // namespace shockgas::compare

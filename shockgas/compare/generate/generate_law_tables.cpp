@@ -1,5 +1,5 @@
 // generate_law_tables OUT: computes the white-noise laws' tables
-// (law_tables.hpp) and writes them to OUT as C++ constants with hexadecimal
+// (stored_law_tables.cpp) and writes them to OUT as C++ constants with hexadecimal
 // floating-point literals (printf's %a: exact), for stored_law_tables.cpp.
 // Here the instance functions compute: airy_zeros by airy_ai_zero, the table
 // and the law by their computing constructors, the moment by quadrature
@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
     const std::string path = argv[1], partial = path + ".part";
     std::FILE* out = std::fopen(partial.c_str(), "w");
     if (!out) throw std::runtime_error("cannot write " + partial);
-    std::fprintf(out, "// Written by generate_law_tables (shockgas/compare/law_tables.hpp): do not edit.\n");
+    std::fprintf(
+        out, "// Written by generate_law_tables (shockgas/compare/stored_law_tables.cpp): do not edit.\n");
     std::fprintf(out, "#pragma once\n\nnamespace shockgas::compare::stored {\n\n");
     write_array(out, "kAiryZeros", c::airy_zeros());
     const c::ChernoffLogGTable& g = c::chernoff_log_g_table();
