@@ -74,8 +74,13 @@ int main(int argc, char** argv) {
     write_number(out, "kClusterLawShocks", law.shocks);
     write_number(out, "kClusterLawSecondMoment", c::cluster_law_second_moment());
     std::fprintf(out, "\n}  // namespace shockgas::compare::stored\n");
-    if (std::fclose(out) != 0 || std::rename(partial.c_str(), path.c_str()) != 0)
+    // A write that failed midway (a full disk) leaves the stream's error set
+    // even where the last flush succeeds: the file is not moved into place.
+    const bool written = std::ferror(out) == 0;
+    if (std::fclose(out) != 0 || !written || std::rename(partial.c_str(), path.c_str()) != 0) {
+      std::remove(partial.c_str());
       throw std::runtime_error("cannot write " + path);
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "generate_law_tables: %s\n", e.what());
     return 1;
