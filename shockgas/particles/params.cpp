@@ -55,9 +55,8 @@ ParameterTable<ParticleParams> declare() {
   t.add(&P::clusters, "clusters", "", "count clusters (default criteria) at the sample times");
   t.add(&P::final_clusters, "final_clusters", "",
         "record each realization's clusters of at least two particles at its end (x, v, m; default "
-        "criteria) for `shockgas stats`: always, never, or auto (when N x realizations <= 8.3 x 10^7: at "
-        "most 1 "
-        "GB in the worst case of 12 bytes per particle and realization)");
+        "criteria) for `shockgas stats`: always, never, or auto (when " +
+            final_clusters_auto_rule() + ")");
   t.add(&P::max_collisions, "max_collisions", "1",
         "stop a realization at its first safe point with at least this many collisions (the end of a time "
         "window, or every " +
@@ -85,8 +84,15 @@ double final_clusters_bound(const ParticleParams& p, std::size_t n) {
 }
 
 bool records_final_clusters(const ParticleParams& p, std::size_t n) {
-  return p.final_clusters == ClusterRecord::always || (p.final_clusters == ClusterRecord::automatic &&
-                                                       final_clusters_bound(p, n) <= kRecordedClustersBytes);
+  return p.final_clusters == ClusterRecord::always ||
+         (p.final_clusters == ClusterRecord::automatic && n <= kRecordedClustersAutoBodies &&
+          final_clusters_bound(p, n) <= kRecordedClustersBytes);
+}
+
+std::string final_clusters_auto_rule() {
+  return "N <= " + to_text(kRecordedClustersAutoBodies) +
+         " and N x realizations <= " + to_text(kRecordedClustersAutoParticles, 2) +
+         ": at most 1 GB in the worst case of 12 bytes per particle and realization";
 }
 
 void validate(const ParticleParams& p) {

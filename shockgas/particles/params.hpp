@@ -45,7 +45,8 @@ constexpr std::array<EnumName<Schedule>, 3> enum_names(Schedule) {
 
 // Whether each realization records its clusters of at least two particles at
 // its end (RunResult::final_clusters, for `shockgas stats`): always, never, or
-// (auto) when they cannot take more than kRecordedClustersBytes together.
+// (auto) when the realization is small enough and they cannot take more than
+// kRecordedClustersBytes together (final_clusters_auto_rule()).
 enum class ClusterRecord { automatic, always, never };
 constexpr std::array<EnumName<ClusterRecord>, 3> enum_names(ClusterRecord) {
   return {{{ClusterRecord::automatic, "auto"},
@@ -56,12 +57,19 @@ constexpr std::array<EnumName<ClusterRecord>, 3> enum_names(ClusterRecord) {
 // each (x, v, m): 12 bytes per particle and realization in the worst case (a
 // young gas of pairs; a late one holds a few hundred: about 1.9 N t^(-2/3) for
 // white noise). auto records them when that bound, over every realization, is
-// at most 1 GB (N x realizations <= 8.3 x 10^7).
+// at most 1 GB (N x realizations <= 8.3 x 10^7), and when one realization has
+// at most 10^6 particles, as result.h5 keeps a state (its clusters are then at
+// most 12 MB; above it they are the file's bulk and their visit and deflate
+// its largest cost after the engine: at N = 10^7 to t = 10, 1.1 x 10^6
+// clusters took about 0.9 s of a 2.9 s command, docs/performance/command.md).
 inline constexpr double kRecordedClusterBytesPerParticle = 12;
 inline constexpr double kRecordedClustersBytes = 1e9;
+inline constexpr std::size_t kRecordedClustersAutoBodies = 1000000;
 // auto's bound on N x realizations (8.3 x 10^7).
 inline constexpr double kRecordedClustersAutoParticles =
     kRecordedClustersBytes / kRecordedClusterBytesPerParticle;
+// The words for auto's rule, for the key's description, the layout and messages.
+std::string final_clusters_auto_rule();
 
 // Collisions between two safe points of the global queue, where the limits
 // (max_collisions, max_wall_seconds), the saves and inelastic collapse are

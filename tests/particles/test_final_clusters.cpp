@@ -58,13 +58,20 @@ TEST(FinalClusters, AreRecordedAsTheKeySays) {
   const Case hull{0.0, ParticleSolver::hull};
   EXPECT_FALSE(run(hull, ClusterRecord::never).final_clusters.has_value());
   EXPECT_TRUE(run(hull, ClusterRecord::always).final_clusters.has_value());
-  // auto: while 12 bytes per particle and realization stay within 1 GB.
+  // auto: while 12 bytes per particle and realization stay within 1 GB ...
   ParticleParams p;
   p.realizations = 100;
   EXPECT_TRUE(records_final_clusters(p, 833333));
   EXPECT_FALSE(records_final_clusters(p, 833334));
   p.final_clusters = ClusterRecord::always;
   EXPECT_TRUE(records_final_clusters(p, 833334));
+  // ... and one realization has at most 10^6 particles.
+  p.final_clusters = ClusterRecord::automatic;
+  p.realizations = 1;
+  EXPECT_TRUE(records_final_clusters(p, 1000000));
+  EXPECT_FALSE(records_final_clusters(p, 1000001));
+  p.final_clusters = ClusterRecord::always;
+  EXPECT_TRUE(records_final_clusters(p, 10000000));
 }
 
 }  // namespace

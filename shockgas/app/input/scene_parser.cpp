@@ -207,11 +207,10 @@ void validate_statistics(const Scene& scene) {
   require(scene.has_particles, "statistics", std::string("(table)"),
           "[statistics] only together with [particles]");
   const particles::ParticleParams& p = scene.particles;
-  const double most = particles::kRecordedClustersAutoParticles;
   require(particles::records_final_clusters(p, scene.initial.N), "particles.final_clusters",
           name_of(p.final_clusters),
-          "\"always\", or \"auto\" while initial.N x particles.realizations <= " + to_text(most, 2) +
-              " (here " +
+          "\"always\", or \"auto\" while " + particles::final_clusters_auto_rule() +
+              " (here N = " + to_text(static_cast<double>(scene.initial.N), 3) + ", N x realizations = " +
               to_text(static_cast<double>(scene.initial.N) * static_cast<double>(p.realizations), 3) +
               "), when [statistics] is present: it reduces each realization's final clusters");
 }

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "shockgas/app/output/layout_declarations.hpp"
+#include "shockgas/particles/params.hpp"
 
 namespace shockgas::app::layout {
 
@@ -13,8 +14,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-const char* const kClustersWhen =
-    "when particles.final_clusters records them (auto: N x realizations <= 8.3 x 10^7)";
+std::string clusters_when() {
+  return "when particles.final_clusters records them (auto: " + particles::final_clusters_auto_rule() + ")";
+}
 
 // Rows of different lengths as one matrix, NaN where a row ends early.
 void ragged_matrix(const std::vector<std::vector<double>>& rows, Emitter& out) {
@@ -83,7 +85,7 @@ std::vector<Declaration> realization_datasets() {
                 dataset(p, "/particles/realizations/clusters_count", "1",
                         "how many clusters of at least two particles each realization holds at its end: "
                         "realization k's are entries sum(count[:k]) .. of clusters_x, clusters_v, clusters_m",
-                        kClustersWhen, ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+                        clusters_when(), ensemble([](const particles::EnsembleResult& e, Emitter& out) {
                           if (!all_recorded(e)) return;
                           std::vector<double> count;
                           for (const auto& c : e.final_clusters)
@@ -93,15 +95,15 @@ std::vector<Declaration> realization_datasets() {
       dataset(p, "/particles/realizations/clusters_x", "length",
               "centre of mass of each cluster of at least two particles (as /particles/n_clusters counts "
               "them, at the end; r = 0: the merged bodies), each realization's in order of x",
-              kClustersWhen, ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+              clusters_when(), ensemble([](const particles::EnsembleResult& e, Emitter& out) {
                 concatenated(e, &Bodies::x, out);
               })),
       dataset(p, "/particles/realizations/clusters_v", "length/time", "velocity of each of those clusters",
-              kClustersWhen, ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+              clusters_when(), ensemble([](const particles::EnsembleResult& e, Emitter& out) {
                 concatenated(e, &Bodies::v, out);
               })),
       dataset(p, "/particles/realizations/clusters_m", "mass", "mass of each of those clusters",
-              kClustersWhen, ensemble([](const particles::EnsembleResult& e, Emitter& out) {
+              clusters_when(), ensemble([](const particles::EnsembleResult& e, Emitter& out) {
                 concatenated(e, &Bodies::m, out);
               })),
   };
