@@ -9,6 +9,7 @@
 #include "shockgas/app/jobs/shard_file.hpp"
 #include "shockgas/app/output/result_reader.hpp"
 #include "shockgas/core/error.hpp"
+#include "shockgas/particles/params.hpp"
 
 namespace shockgas::app {
 
@@ -23,9 +24,12 @@ const std::string kClusters = "/particles/realizations/clusters_";
 const std::string kStopTime = "/particles/realizations/stop_time";
 
 std::string no_clusters_hint(const Scene& scene) {
+  if (!scene.has_particles)
+    return std::string(kAllowed) + "; this one has none: its scene has no [particles] (no gas, no clusters)";
   return std::string(kAllowed) + "; this one has none: its scene set particles.final_clusters = \"" +
-         name_of(scene.particles.final_clusters) + "\" for N = " + std::to_string(scene.initial.N) +
-         " (run it again with --set particles.final_clusters=always)";
+         name_of(scene.particles.final_clusters) + "\" for N = " + std::to_string(scene.initial.N) + " and " +
+         std::to_string(scene.particles.realizations) + " realizations (auto records them when " +
+         particles::final_clusters_auto_rule() + "; run it again with --set particles.final_clusters=always)";
 }
 
 const std::vector<double>& values_of(const ResultContents& h5, const std::string& path,
