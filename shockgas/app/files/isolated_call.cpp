@@ -66,7 +66,7 @@ std::string how_it_ended(int status) {
 
 // Reads the child's stream until it closes it; "" or why the wait ended
 // early (the child was then killed).
-std::string collect(int fd, pid_t pid, const Send& receive) {
+std::string collect(int fd, pid_t pid, const Send& receive, double silence) {
   using Clock = std::chrono::steady_clock;
   auto heard = Clock::now();
   std::string block(1 << 16, '\0');
@@ -78,9 +78,9 @@ std::string collect(int fd, pid_t pid, const Send& receive) {
     const int ready = ::poll(&p, 1, 100);
     if (ready < 0 && errno != EINTR) return std::string("poll: ") + std::strerror(errno);
     if (ready <= 0) {
-      if (std::chrono::duration<double>(Clock::now() - heard).count() > kIsolatedSilenceSeconds) {
+      if (std::chrono::duration<double>(Clock::now() - heard).count() > silence) {
         ::kill(pid, SIGKILL);
-        return "silent for " + to_text(kIsolatedSilenceSeconds) + " s";
+        return "silent for " + to_text(silence, 3) + " s";
       }
       continue;
     }
@@ -95,7 +95,7 @@ std::string collect(int fd, pid_t pid, const Send& receive) {
 }  // namespace
 
 std::string run_isolated(const std::function<void(const Send& send)>& work, const Send& receive,
-                         std::uint64_t memory, std::recursive_mutex* held) {
+                         std::uint64_t memory, double silence, std::recursive_mutex* held) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0)
     throw RunError(std::string("cannot start a reading process: ") + std::strerror(errno));
@@ -117,7 +117,7 @@ std::string run_isolated(const std::function<void(const Send& send)>& work, cons
   }
   std::string stopped;
   try {
-    stopped = collect(fds[0], pid, receive);
+    stopped = collect(fds[0], pid, receive, silence);
   } catch (...) {  // receive() refused what came: the child is not waited for
     ::kill(pid, SIGKILL);
     ::close(fds[0]);

@@ -23,14 +23,11 @@ namespace shockgas::app {
 
 using Send = std::function<void(const char* data, std::size_t size)>;
 
-// How long a child may stay silent before it is taken as hung (an endless
-// loop inside a damaged file) and killed [s].
-inline constexpr double kIsolatedSilenceSeconds = 600;
-
 // "" when the child ended normally (exit status 0), else why it did not:
 // "killed by signal 11 (Segmentation fault)", "exit status 3", "silent for
-// 600 s". RunError if the child cannot be started.
+// 10 s" (it sent nothing for `silence` seconds: taken as hung, an endless loop
+// inside a damaged file, and killed). RunError if the child cannot be started.
 std::string run_isolated(const std::function<void(const Send& send)>& work, const Send& receive,
-                         std::uint64_t memory, std::recursive_mutex* held = nullptr);
+                         std::uint64_t memory, double silence, std::recursive_mutex* held = nullptr);
 
 }  // namespace shockgas::app

@@ -219,10 +219,17 @@ void require_memory_for(const std::string& path, double declared) {
                            size_text(limit.bytes) + " available (" + limit.source + ")");
 }
 
+// How long the reading process may send nothing before it is taken as hung
+// [s]: the HDF5 library can loop without end inside a damaged file (a zeroed
+// global heap under a string attribute did), and reading a sound one, its
+// chunks inflated and checksummed, runs at hundreds of MB/s: 10 s, and a
+// second more for every 10 MB of `bytes` it may have to read.
+double silence_allowed(double bytes) { return 10 + bytes / 1e7; }
+
 // Reads one part of the file into `out`, in a reading process that may use
-// `memory` bytes more than this one holds at the fork: FileProblem where the
-// library refused the file or failed inside it.
-void read_part(ResultContents& out, Verification checked, double memory,
+// `memory` bytes more than this one holds at the fork and read about `bytes`:
+// FileProblem where the library refused the file or failed inside it.
+void read_part(ResultContents& out, Verification checked, double memory, double bytes,
                const std::function<void(const Hdf5File&, const Send&)>& part) {
   FrameReader frames(out);
   const auto read = [&](const Send& send) { read_frames(out.path, checked, part, send); };
@@ -231,7 +238,8 @@ void read_part(ResultContents& out, Verification checked, double memory,
   if (reads_in_process(checked))
     read(receive);
   else
-    ended = run_isolated(read, receive, static_cast<std::uint64_t>(std::min(memory, 1e18)), &hdf5_calls());
+    ended = run_isolated(read, receive, static_cast<std::uint64_t>(std::min(memory, 1e18)),
+                         silence_allowed(bytes), &hdf5_calls());
   if (!frames.problem().empty()) throw result_problem(out.path, frames.problem(), frames.detail());
   if (frames.ended() && ended.empty()) return;
   throw result_problem(out.path, "damaged",
@@ -251,10 +259,11 @@ ResultContents read_contents(const fs::path& file, Verification checked, const V
   std::error_code ec;
   const std::uintmax_t size = fs::file_size(file, ec);
   const double file_bytes = ec ? 0 : static_cast<double>(size);
-  read_part(out, checked, library_room(file_bytes), [every_chunk](const Hdf5File& h5, const Send& send) {
-    if (every_chunk) h5.check_every_chunk();
-    send_layout(h5, send);
-  });
+  read_part(out, checked, library_room(file_bytes), file_bytes,
+            [every_chunk](const Hdf5File& h5, const Send& send) {
+              if (every_chunk) h5.check_every_chunk();
+              send_layout(h5, send);
+            });
   std::vector<std::string> asked;
   double declared = 0;
   for (const DatasetInfo& d : out.datasets) {
@@ -265,7 +274,7 @@ ResultContents read_contents(const fs::path& file, Verification checked, const V
   }
   if (!asked.empty()) {
     require_memory_for(out.path, declared);
-    read_part(out, checked, library_room(file_bytes) + kReaderCopies * declared,
+    read_part(out, checked, library_room(file_bytes) + kReaderCopies * declared, file_bytes + declared,
               [&asked](const Hdf5File& h5, const Send& send) { send_values(h5, asked, send); });
   }
   if (out.verified()) require_manifest_scene(out);
