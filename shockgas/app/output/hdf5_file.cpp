@@ -3,6 +3,7 @@
 #include "shockgas/app/output/hdf5_file.hpp"
 
 #include <mutex>
+#include <optional>
 #include <utility>
 
 #include "shockgas/app/files/own_checksum.hpp"
@@ -122,7 +123,7 @@ std::string type_name(hid_t type) {
 }
 
 std::string read_string_attribute(hid_t object, const char* name) {
-  if (H5Aexists(object, name) <= 0) return "";
+  if (check(H5Aexists(object, name), "H5Aexists", name) == 0) return "";  // < 0: unreadable (checksum)
   H5Handle attr(check(H5Aopen(object, name, H5P_DEFAULT), "H5Aopen", name), close_attr);
   H5Handle type(check(H5Aget_type(attr.get()), "H5Aget_type", name), close_type);
   if (H5Tget_class(type.get()) == H5T_FLOAT) {
@@ -236,7 +237,10 @@ Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
   if (id < 0) throw result_problem(path, "unreadable", "the HDF5 library refuses it: " + reason());
   Hdf5File file(H5Handle(id, close_file), path, verified, false);
   H5Handle root(check(H5Gopen2(id, "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
-  check_layout_version(path, read_string_attribute(root.get(), "layout_version"));
+  std::optional<std::string> version;
+  if (check(H5Aexists(root.get(), "layout_version"), "H5Aexists", "layout_version") > 0)
+    version = read_string_attribute(root.get(), "layout_version");
+  check_layout_version(path, version);
   return file;
 }
 
@@ -329,7 +333,8 @@ std::vector<std::pair<std::string, std::string>> Hdf5File::attributes(const std:
   check(H5Oget_info2(obj.get(), &info, H5O_INFO_NUM_ATTRS), "H5Oget_info2", object);
   for (hsize_t i = 0; i < info.num_attrs; ++i) {
     char name[256];
-    H5Aget_name_by_idx(obj.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT);
+    check(H5Aget_name_by_idx(obj.get(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT),
+          "H5Aget_name_by_idx", object);
     out.emplace_back(name, read_string_attribute(obj.get(), name));
   }
   return out;

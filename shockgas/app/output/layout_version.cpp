@@ -23,8 +23,9 @@ std::string layout_version_text(LayoutVersion v) {
   return std::to_string(v.major) + "." + std::to_string(v.minor);
 }
 
-LayoutVersion parse_layout_version(const std::string& file, const std::string& text) {
-  if (text.empty()) return {1, 0};
+LayoutVersion parse_layout_version(const std::string& file, const std::optional<std::string>& stated) {
+  if (!stated) return {1, 0};
+  const std::string& text = *stated;
   std::string_view rest = text;
   const int major = leading_number(rest);
   const bool dot = !rest.empty() && rest.front() == '.';
@@ -35,7 +36,7 @@ LayoutVersion parse_layout_version(const std::string& file, const std::string& t
   return {major, minor};
 }
 
-void check_layout_version(const std::string& file, const std::string& text) {
+void check_layout_version(const std::string& file, const std::optional<std::string>& text) {
   const LayoutVersion v = parse_layout_version(file, text);
   if (v.major > kLayoutVersion.major)
     throw result_problem(file, "of a newer layout",

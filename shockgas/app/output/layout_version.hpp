@@ -7,6 +7,7 @@
 // without the attribute is of layout 1.0 (written before it was versioned).
 // Every reader (Hdf5File::open: info, merge, animate, the report, the Python
 // load) reads every layout of its major and below, and refuses a newer major.
+#include <optional>
 #include <string>
 
 namespace shockgas::app {
@@ -21,12 +22,12 @@ inline constexpr LayoutVersion kLayoutVersion{3, 0};
 // "3.0".
 std::string layout_version_text(LayoutVersion v = kLayoutVersion);
 
-// The version an attribute's text names ("" = 1.0, before versioning);
-// FileProblem for a text that is not major.minor.
-LayoutVersion parse_layout_version(const std::string& file, const std::string& text);
+// The version an attribute's text names (no attribute = 1.0, before
+// versioning); FileProblem for a text that is not major.minor ("" included).
+LayoutVersion parse_layout_version(const std::string& file, const std::optional<std::string>& text);
 
 // FileProblem (exit 2) "written in layout 4.0; this shockgas reads layouts
 // 1.0 to 3.x" when the file's major is newer than kLayoutVersion's.
-void check_layout_version(const std::string& file, const std::string& text);
+void check_layout_version(const std::string& file, const std::optional<std::string>& text);
 
 }  // namespace shockgas::app
