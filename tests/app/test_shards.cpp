@@ -12,6 +12,7 @@
 #include "run_comparison.hpp"
 #include "shockgas/app/files/manifest.hpp"
 #include "shockgas/app/output/hdf5_file.hpp"
+#include "shockgas/app/output/layout_version.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -153,6 +154,24 @@ TEST_F(Shards, ShardsOfAnotherBuildAreRefused) {
   write_manifest(dir_ / "b", "scene");
   EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
   EXPECT_NE(said_.find("shards written by one build"), std::string::npos) << said_;
+  EXPECT_FALSE(fs::exists(dir_ / "merged"));
+}
+
+// A shard of an older major layout holds other quantities under the same
+// paths (3.0: /particles/n_clusters): refused, not averaged with this build's.
+TEST_F(Shards, AShardOfAnotherMajorLayoutIsRefused) {
+  ASSERT_EQ(shard("scene.toml", "--realizations", "0:5", "a"), 0);
+  ASSERT_EQ(shard("scene.toml", "--realizations", "5:10", "b"), 0);
+  Hdf5File older = Hdf5File::update(path("b/result.h5"));
+  older.set_attribute("/", "layout_version", std::to_string(kLayoutVersion.major - 1) + ".1");
+  older.close();
+  write_manifest(dir_ / "b", "scene");
+  EXPECT_EQ(merge({"a", "b"}, "merged"), 2);
+  EXPECT_NE(said_.find("of layout " + std::to_string(kLayoutVersion.major) + ".x"), std::string::npos)
+      << said_;
+  EXPECT_NE(said_.find("this one is of layout " + std::to_string(kLayoutVersion.major - 1) + ".1"),
+            std::string::npos)
+      << said_;
   EXPECT_FALSE(fs::exists(dir_ / "merged"));
 }
 

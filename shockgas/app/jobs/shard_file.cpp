@@ -7,6 +7,7 @@
 
 #include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/output/layout_version.hpp"
 #include "shockgas/app/output/output_layout.hpp"
 #include "shockgas/app/output/result_reader.hpp"
 #include "shockgas/app/records/checkpoint.hpp"
@@ -106,6 +107,16 @@ ShardHeader read_shard_header(const std::string& dir) {
   bool is_shard = false;
   for (const auto& d : h5.datasets) is_shard = is_shard || d.path.rfind("/shard/", 0) == 0;
   if (!is_shard) throw InputError("shard", to_text(dir), allowed + " (this one holds a whole run)");
+  // A shard of another major holds other quantities under the same paths
+  // (layout_version.hpp): merged with this build's, they would be averaged.
+  const std::string stated = h5.attribute("/", "layout_version");
+  const LayoutVersion layout =
+      parse_layout_version(h5.path, stated.empty() ? std::nullopt : std::optional<std::string>(stated));
+  if (layout.major != kLayoutVersion.major)
+    throw InputError("shard", to_text(dir),
+                     allowed + " of layout " + std::to_string(kLayoutVersion.major) +
+                         ".x, as this shockgas writes (this one is of layout " + layout_version_text(layout) +
+                         ": run its realizations again with this shockgas)");
   h.provenance =
       required(h5, "/", {"shockgas_version", "git_commit", "resolved_parameters", "scene_text", "scene_path"},
                dir, allowed);
