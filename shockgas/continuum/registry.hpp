@@ -33,6 +33,9 @@ struct SolverInfo {
   // Memory at work per cell, bytes (the run's resource preflight); 0 = not
   // measured, taken as the largest of the registered solvers'.
   double bytes_per_cell = 0;
+  // Memory at work per initial body, bytes, when it solves from point masses
+  // (InitialField::from_bodies); 0 for a solver that uses the cell averages alone.
+  double bytes_per_body = 0;
   // Evaluates its fields at any t directly (closed form in t, no marching): the
   // fields at several times are one evaluation each. A solver without it marches,
   // and continues from its own cell averages at each output time (series.hpp).

@@ -107,12 +107,22 @@ double solver_cell_bytes(const std::string& solver) {
 
 void continuum_memory(const Scene& s, std::vector<ResourceItem>& items) {
   const double cells = d(s.continuum.cells), solvers = d(s.continuum.solvers.size());
-  double at_work = 0;  // the solvers run one after the other
-  for (const auto& solver : s.continuum.solvers) at_work = std::max(at_work, solver_cell_bytes(solver));
+  // Point masses unless the velocities are an expression of x (InitialCondition::from_bodies).
+  const double bodies = s.initial.velocities == Velocities::expression ? 0 : d(s.initial.N);
+  double at_work = 0, body_work = 0;  // the solvers run one after the other
+  for (const auto& solver : s.continuum.solvers) {
+    at_work = std::max(at_work, solver_cell_bytes(solver));
+    body_work = std::max(body_work, continuum::solver_info(solver).bytes_per_body);
+  }
   items.push_back({"continuum.cells",
                    "the continuum solvers: one at work, the fields of each kept",
                    cells * (at_work + solvers * kCellResultBytes),
                    {"continuum.solvers"}});
+  if (bodies * body_work > 0)
+    items.push_back({"initial.N",
+                     "a continuum solver at work on the bodies themselves",
+                     bodies * body_work,
+                     {"continuum.solvers"}});
 }
 
 // The frames of an animation (shockgas/app/output/frames.hpp): the particles (at most N
@@ -128,6 +138,9 @@ double frame_bytes(const Scene& s) {
 std::vector<ResourceItem> single_memory(const Scene& s) {
   std::vector<ResourceItem> items;
   if (s.has_particles) particle_memory(s, items);
+  if (s.has_continuum && !s.has_particles)  // the gas's memory counts them otherwise
+    items.push_back({"initial.N", "the initial condition's bodies, put on the continuum's grid",
+                     d(s.initial.N) * kBodyBytes});
   if (s.has_continuum) continuum_memory(s, items);
   if (s.output.animation)
     items.push_back({"output.animation_frames",
