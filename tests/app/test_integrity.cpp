@@ -185,7 +185,7 @@ TEST(Integrity, InfoChecksEveryFileTheManifestLists) {
 // hostile pass): a file of a name a run writes that its manifest leaves out
 // fails info, whichever file it is.
 TEST(Integrity, AManifestThatLeavesAFileOutIsRefused) {
-  for (const std::string file : {"report.html", "report.md", "result.h5", "summary.json"}) {
+  for (const std::string file : {"report.html", "report.md", "result.h5", "result.xdmf", "summary.json"}) {
     const fs::path run = copy_of_run("left-out-" + file);
     const fs::path aside = run.parent_path() / file;
     fs::rename(run / file, aside);
@@ -195,6 +195,18 @@ TEST(Integrity, AManifestThatLeavesAFileOutIsRefused) {
     EXPECT_EQ(code, 2) << file << "\n" << err;
     EXPECT_NE(err.find(file), std::string::npos) << err;
   }
+}
+
+// A run directory whose manifest was removed was described as if whole, its
+// other files unchecked and nothing said (finding of a hostile pass).
+TEST(Integrity, ARunDirectoryWithoutItsManifestIsSaidToBeUnchecked) {
+  const fs::path run = copy_of_run("no-manifest");
+  fs::remove(run / "manifest.json");
+  const auto [code, err] = run_child({"info", run.string()});
+  EXPECT_EQ(code, 0) << err;  // result.h5 is checked by its own checksum
+  EXPECT_NE(err.find("has no manifest.json: its files besides result.h5 cannot be checked"),
+            std::string::npos)
+      << err;
 }
 
 // A manifest naming another scene than its result.h5 holds passed info

@@ -147,6 +147,14 @@ RunFilesCheck check_run_files(const std::string& path, bool result_checked) {
       last.empty() || last == "." || last == ".." ? fs::absolute(dir, ec).lexically_normal() : dir;
   if (!shown.has_filename() && shown != shown.root_path()) shown = shown.parent_path();
   const auto manifest = read_manifest(dir);
+  if (!manifest && fs::is_directory(path, ec) && fs::exists(file, ec)) {
+    // Every run directory of layout 1.0 on has one: it was removed, and the
+    // directory's other files (summary.json, report.md, ...) vouch for nothing.
+    std::cerr << "shockgas: warning: " << shown.string() << " has no " << kManifestFile
+              << ": its files besides result.h5 cannot be checked\n";
+    return {"\nfiles of " + shown.string() + ": no " + kManifestFile + ", none checked but result.h5\n", "",
+            shown.string()};
+  }
   if (!manifest) return {};
   // The result file itself was checked before it was described, if listed.
   const fs::path checked =

@@ -102,9 +102,9 @@ std::string read_text(const fs::path& file, std::uintmax_t limit) {
 
 bool run_output_name(const fs::path& relative) {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> n = {"result.h5",     "summary.json",  "report.md",
-                                  "report.html",   kManifestFile,   "plots.log",
-                                  "animation.log", "statistics.h5", "statistics.md"};
+    std::vector<std::string> n = {"result.h5",     "result.xdmf",  "summary.json", "report.md",
+                                  "report.html",   kManifestFile,  "plots.log",    "animation.log",
+                                  "statistics.h5", "statistics.md"};
     n.insert(n.end(), studies::kTailFiles.begin(), studies::kTailFiles.end());  // also .csv, below
     return n;
   }();
