@@ -104,7 +104,8 @@ std::string damaged_parts(const fs::path& file) {
     const bool chunks = e.problem() == "damaged" && e.detail().rfind("dataset ", 0) == 0;
     return chunks ? e.detail() : "its HDF5 structure: " + e.detail();
   }
-  return "every dataset reads back whole: the damage lies in its metadata, attributes or unused bytes";
+  return "every dataset and attribute reads back whole: the damage lies in its own checksum block, in bytes "
+         "no read uses, or in metadata the library passes over";
 }
 
 // check_result_file(file), a damage named where it lies (damaged_parts).
