@@ -49,7 +49,8 @@ def _fields(result, coords, data):
     for s in solvers[1:]:
         if not np.array_equal(np.asarray(d[f"/continuum/{s}/x"], dtype=np.float64), x):
             raise ValueError(f"solver {s!r} has a grid other than {solvers[0]!r}'s: no common coordinate x")
-    coords["solver"] = ("solver", np.array(solvers), {"description": "continuum solver (/continuum/{solver})"})
+    coords["solver"] = ("solver", np.array(solvers),
+                        {"unit": "1", "description": "continuum solver (/continuum/{solver})"})
     coords["x"] = ("x", x, _attrs(result, x_path))
     for field in ("v", "rho"):
         rows = [d.get(f"/continuum/{s}/{field}") for s in solvers]

@@ -59,6 +59,8 @@ def test_the_dataset_holds_the_raw_arrays_on_their_coordinates(run_dir):
         assert ds["T"].attrs["unit"] == text(f["particles/T"].attrs["unit"]) == "length^2/time^2"
         assert ds["v"].attrs["unit"] == "length/time" and ds["x"].attrs["unit"] == "length"
         assert ds["t"].attrs["unit"] == "time"
+        for name in ds.variables:  # every coordinate and variable, as the module's docstring says
+            assert "unit" in ds[name].attrs, name
 
 
 def test_the_scene_and_layout_are_in_the_attributes(run_dir):
