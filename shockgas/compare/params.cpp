@@ -23,7 +23,9 @@ ParameterTable<CompareParams> declare() {
         "largest relative velocity inside a cluster; 0 = derived from delta", allowed(at_least(0)));
   t.add(&P::distribution_t_min, "distribution_t_min", "time",
         "scaled velocity distributions are compared at sample times >= this", allowed(at_least(0)));
-  t.add(&P::fit_window, "fit_window", "1", "the T(t) exponent is fitted on [t_end / fit_window, t_end]",
+  t.add(&P::fit_window, "fit_window", "1",
+        "the T(t) exponent is fitted on [t_end / fit_window, t_end] (where the sticky-gas law does not "
+        "choose its own window), from a decade after any crossover inside it",
         allowed(above(1)));
   return t;
 }

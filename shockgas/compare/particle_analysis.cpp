@@ -5,15 +5,18 @@
 namespace shockgas::compare {
 
 CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r,
-                                double t_min, double t_max) {
+                                double t_min, double t_max, const std::string& no_window) {
   CoolingAnalysis a;
   std::size_t in_window = 0;
   for (double ti : t) in_window += ti >= t_min && ti <= t_max;
-  if (in_window < 3) return a;
+  if (no_window.empty() && in_window < 3) return a;
   try {
-    a.fit = fit_power_law(t, T, t_min, t_max);
     a.local_exponent = local_exponents(t, T);
     a.crossovers = find_crossovers(t, T, r);
+    if (no_window.empty())
+      a.fit = fit_power_law(t, T, t_min, t_max);
+    else
+      a.not_determined = "no fit window: " + no_window;
   } catch (const InputError& e) {
     a.fit.reset();
     a.not_determined = e.what();

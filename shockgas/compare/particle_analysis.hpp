@@ -16,17 +16,18 @@ namespace shockgas::compare {
 
 struct CoolingAnalysis {
   std::optional<PowerLawFit> fit;      // T = A t^a on [t_min, t_max], if >= 3 samples there
-  std::vector<double> local_exponent;  // d ln T / d ln t at the sample times (with the fit)
+  std::vector<double> local_exponent;  // d ln T / d ln t at the sample times
   Crossovers crossovers;               // t_dissip, t_stick read off the curve, and their theory
   std::string not_determined;          // why the data could not be analysed; empty if they could
 };
 
 // t, T: the sample times and the (ensemble-mean) temperature; r: restitution
-// (for the crossover theory); the fit window [t_min, t_max] is the scope of
-// the sticky-gas law where it holds (theory_scope.hpp), else
-// [t_end / fit_window, t_end].
+// (for the crossover theory); the fit window [t_min, t_max] is
+// cooling_fit_scope's (theory_scope.hpp). With `no_window` (why that scope
+// has none) nothing is fitted and not_determined says why; the local exponents
+// and the crossovers are read off the curve either way.
 CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r,
-                                double t_min, double t_max);
+                                double t_min, double t_max, const std::string& no_window = {});
 
 // A histogram of z = (v - <v>) t^(1/3) on `bins` equal bins of [-zmax, zmax] at
 // each sample time: density[k * bins + b] (particles::ScaledHistogram's layout).

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "shockgas/compare/theory.hpp"
 #include "shockgas/core/error.hpp"
@@ -79,6 +82,17 @@ Scope ramp_slope(const SceneShape& s, double t_last) {
   return in_the_sticky_regime(s, t_last);
 }
 
+// The crossovers a T(t) curve of this scene passes, by name.
+std::vector<std::pair<std::string, double>> crossovers_of(const SceneShape& s) {
+  std::vector<std::pair<std::string, double>> out;
+  if (smooth_wave(s)) out.emplace_back("the breaking time t*", s.breaking_time);
+  if (not_a_gas(s).empty() && s.r > 0) {
+    out.emplace_back("t_dissip ~ 1/eps", dissipation_time(s.r));
+    out.emplace_back("t_stick ~ eps^(-3/2)", sticking_time(s.r));
+  }
+  return out;
+}
+
 Scope breaking(const SceneShape& s, double t_last) {
   if (const auto why = not_a_smooth_wave(s); !why.empty()) return fails(why);
   return {true, "before the first shock", 0, std::min(t_last, s.breaking_time)};
@@ -141,6 +155,21 @@ const TheoryDeclaration& declaration(Law law) {
 }
 
 Scope scope(Law law, const SceneShape& shape, double t_last) { return declaration(law).scope(shape, t_last); }
+
+Scope cooling_fit_scope(const SceneShape& s, double t_end) {
+  if (const Scope law = sticky_cooling(s, t_end); law.holds) return law;
+  const std::string rule = "[t_end / fit_window, t_end], from a decade after any crossover in it";
+  double t_min = t_end / s.fit_window;
+  for (const auto& [name, t] : crossovers_of(s)) {
+    if (!(t_min < t && t < t_end)) continue;
+    if (kDecade * t >= t_end)
+      return fails("the window [" + text(t_min) + ", " + text(t_end) + "] holds the crossover " + name +
+                   " = " + text(t) + ", and a decade after it (" + text(kDecade * t) +
+                   ") is past t_end: " + "a fit would span two regimes");
+    t_min = kDecade * t;
+  }
+  return window(t_min, t_end, rule);
+}
 
 std::string theory_note(Law law, const SceneShape& shape, double t_last) {
   const TheoryDeclaration& d = declaration(law);

@@ -72,6 +72,39 @@ TEST(TheoryScope, ASineBreaksButIsNoSawtoothBeforeTenTimesItsBreakingTime) {
             "theory `sawtooth_decay` (Whitham ch. 2): exponent -1");
 }
 
+// T(t) is never fitted across a crossover: the sticky law's window where it
+// holds; else [t_end / fit_window, t_end] from a decade after a crossover in
+// it; none where that decade is past t_end (the sine to t = 0.5, t* = 0.159;
+// r = 0.9 to t = 600, t_stick = 89.4), with the reason.
+TEST(TheoryScope, TheCoolingFitNeverSpansACrossover) {
+  const Scope sticky = cooling_fit_scope(gas(0.5), 1e4);
+  EXPECT_TRUE(sticky.holds);
+  EXPECT_EQ(sticky.t_min, 1e3);  // t_end / fit_window = 10^3 > 10 t_stick = 80
+  const double t_star = 1 / (2 * std::numbers::pi);
+  const Scope sine = cooling_fit_scope(wave(t_star, 1.0, true), 0.5);
+  EXPECT_FALSE(sine.holds);
+  EXPECT_NE(sine.reason.find("holds the crossover the breaking time t* = 0.159"), std::string::npos)
+      << sine.reason;
+  const Scope later = cooling_fit_scope(wave(t_star, 1.0, true), 20);
+  ASSERT_TRUE(later.holds) << later.reason;
+  EXPECT_EQ(later.t_min, 2.0);  // t_end / fit_window, past t* already
+  const Scope short_gas = cooling_fit_scope(gas(0.9), 600);
+  EXPECT_FALSE(short_gas.holds);
+  EXPECT_NE(short_gas.reason.find("t_stick ~ eps^(-3/2) = 89.4"), std::string::npos) << short_gas.reason;
+  SceneShape wide = gas(0.9);
+  wide.fit_window = 100;  // [3, 300] holds t_dissip = 20 and t_stick = 89.4: from a decade after the
+  const Scope moved = cooling_fit_scope(wide, 300);  // first, 200, which holds neither
+  ASSERT_TRUE(moved.holds) << moved.reason;
+  EXPECT_DOUBLE_EQ(moved.t_min, 10 * dissipation_time(0.9));
+  wide.fit_window = 2;  // [150, 300]: past both
+  const Scope past = cooling_fit_scope(wide, 300);
+  ASSERT_TRUE(past.holds) << past.reason;
+  EXPECT_EQ(past.t_min, 150);
+  const Scope one_early = cooling_fit_scope(wide, 800);  // [400, 800]: t_stick lies before it
+  ASSERT_TRUE(one_early.holds) << one_early.reason;
+  EXPECT_EQ(one_early.t_min, 400);
+}
+
 // An isolated pulse keeps its lobes and decays as t^(-1/2); a jump (a Riemann
 // problem, t* = 0) has no breaking and no decay law.
 TEST(TheoryScope, AnIsolatedPulseIsAnNWaveAndAJumpNoWaveAtAll) {

@@ -48,9 +48,10 @@ std::vector<Declaration> analysis() {
                             f.prefactor * std::pow(f.t_max, f.exponent)});
               })),
       dataset(p, "/particles/analysis/T_local_exponent", "1", "d ln T / d ln t at /particles/t", "",
-              fitted([](const compare::CoolingAnalysis& a, const auto&, Emitter& out) {
-                out.values(a.local_exponent);
-              })),
+              [](const RunResults& r, Emitter& out) {  // fitted or not (no window across a crossover)
+                if (r.particles && !r.particles->cooling.local_exponent.empty())
+                  out.values(r.particles->cooling.local_exponent);
+              }),
       attribute(
           p, "/particles/analysis@T_exponent", "1", "the fitted exponent of T(t)", "",
           fitted([](const auto&, const compare::PowerLawFit& f, Emitter& out) { out.number(f.exponent); })),

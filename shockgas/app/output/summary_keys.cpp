@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "shockgas/app/output/layout_declarations.hpp"
+#include "shockgas/app/output/theory_scopes.hpp"
 #include "shockgas/app/scene/scene_schema.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/initial_stream.hpp"
@@ -173,6 +174,22 @@ std::vector<Declaration> analysis() {
       if (a.collapse_distance && a.not_determined.empty()) f(a, out);
     };
   };
+  // Read off the T(t) curve, fitted or not.
+  auto curve = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      if (r.particles && !r.particles->cooling.local_exponent.empty()) out.json(f(r.particles->cooling));
+    };
+  };
+  // A crossover's theory value, null where that theory does not hold for the scene.
+  auto crossover_theory = [](auto f) {
+    return [f](const RunResults& r, Emitter& out) {
+      if (!r.particles || r.particles->cooling.local_exponent.empty()) return;
+      if (law_scope(r, compare::Law::crossovers).holds)
+        out.json(f(r.particles->cooling));
+      else
+        out.json(nullptr);
+    };
+  };
   using Cooling = compare::CoolingAnalysis;
   using Fit = compare::PowerLawFit;
   using Dist = compare::DistributionAnalysis;
@@ -193,21 +210,23 @@ std::vector<Declaration> analysis() {
           fit([](const Cooling&, const Fit& f) {
             return Json{f.t_min, f.t_max};
           })),
-      with_theory(
-          key(p, "analysis.t_dissip", "time",
-              "end of the elastic regime read off d ln T / d ln t (null: not crossed)", "",
-              fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_dissip); })),
-          compare::Law::crossovers, "~ {analysis.t_dissip_theory}"),
+      with_theory(key(p, "analysis.t_dissip", "time",
+                      "end of the elastic regime read off d ln T / d ln t (null: not crossed)", "",
+                      curve([](const Cooling& a) { return finite_or_null(a.crossovers.t_dissip); })),
+                  compare::Law::crossovers, "~ {analysis.t_dissip_theory}"),
       with_theory(key(p, "analysis.t_stick", "time",
                       "end of homogeneous cooling read off d ln T / d ln t (null: not crossed)", "",
-                      fit([](const Cooling& a, const Fit&) { return finite_or_null(a.crossovers.t_stick); })),
+                      curve([](const Cooling& a) { return finite_or_null(a.crossovers.t_stick); })),
                   compare::Law::crossovers, "~ {analysis.t_stick_theory}"),
       with_theory(key(p, "analysis.t_dissip_theory", "time",
-                      "theory: end of the elastic regime, 1/eps, eps = (1 - r)/2", "",
-                      fit([](const Cooling& a, const Fit&) { return a.crossovers.t_dissip_theory; })),
+                      "theory: end of the elastic regime, 1/eps, eps = (1 - r)/2 (null where that theory "
+                      "does not hold, theory.crossovers)",
+                      "", crossover_theory([](const Cooling& a) { return a.crossovers.t_dissip_theory; })),
                   compare::Law::crossovers, "1/eps"),
-      with_theory(key(p, "analysis.t_stick_theory", "time", "theory: end of homogeneous cooling, eps^(-3/2)",
-                      "", fit([](const Cooling& a, const Fit&) { return a.crossovers.t_stick_theory; })),
+      with_theory(key(p, "analysis.t_stick_theory", "time",
+                      "theory: end of homogeneous cooling, eps^(-3/2) (null where that theory does not hold, "
+                      "theory.crossovers)",
+                      "", crossover_theory([](const Cooling& a) { return a.crossovers.t_stick_theory; })),
                   compare::Law::crossovers, "eps^(-3/2)"),
       key(p, "analysis.cooling_law_not_determined", "", "why the cooling law could not be fitted",
           "when the data refuse it",

@@ -86,10 +86,9 @@ std::string law_note(const RunResults& r, Law law) {
 }
 
 TimeWindow cooling_fit_window(const Scene& scene, const compare::SceneShape& shape) {
-  const double t_end = scene.particles.t_end;
-  const compare::Scope s = compare::scope(Law::sticky_cooling, shape, t_end);
-  if (s.holds) return {s.t_min, s.t_max};
-  return {t_end / scene.compare.fit_window, t_end};
+  const compare::Scope s = compare::cooling_fit_scope(shape, scene.particles.t_end);
+  if (s.holds) return {s.t_min, s.t_max, ""};
+  return {0, 0, s.reason};
 }
 
 namespace layout {

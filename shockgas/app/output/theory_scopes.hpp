@@ -30,6 +30,7 @@ std::string law_note(const RunResults& r, compare::Law law);
 // [t_end / fit_window, t_end].
 struct TimeWindow {
   double t_min = 0, t_max = 0;  // [time]
+  std::string none;             // why there is no window (then t_min, t_max mean nothing)
 };
 TimeWindow cooling_fit_window(const Scene& scene, const compare::SceneShape& shape);
 

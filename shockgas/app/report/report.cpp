@@ -57,15 +57,10 @@ std::string error_text(const std::optional<compare::JackknifeEstimate>& e) {
   return "(no error estimate from one realization)";
 }
 
-void cooling_part(std::ostream& out, const RunResults& r) {
-  const compare::CoolingAnalysis& a = r.particles->cooling;
-  if (!a.not_determined.empty()) out << "- cooling_law: not determined (" << a.not_determined << ").\n\n";
-  if (!a.fit) return;
-  const auto& fit = *a.fit;
-  const auto& c = a.crossovers;
+// The fit's line, and where the sticky-gas law holds, the departure from it in words.
+void fit_lines(std::ostream& out, const RunResults& r, const compare::PowerLawFit& fit) {
   const auto& errors = r.particles->errors;
   const auto jackknife = errors ? std::optional(errors->T_exponent) : std::nullopt;
-  out << "## Cooling law\n\n";
   out << "- T ~ t^a with a = " << brief(fit.exponent) << " " << error_text(jackknife) << " on ["
       << brief(fit.t_min) << ", " << brief(fit.t_max) << "]; " << law_note(r, compare::Law::sticky_cooling)
       << ".\n";
@@ -78,8 +73,22 @@ void cooling_part(std::ostream& out, const RunResults& r) {
                                            fit.t_max)
         << "\n";
   }
+}
+
+void cooling_part(std::ostream& out, const RunResults& r) {
+  const compare::CoolingAnalysis& a = r.particles->cooling;
+  if (a.local_exponent.empty()) {  // too few samples: not even the crossovers
+    if (!a.not_determined.empty()) out << "- cooling_law: not determined (" << a.not_determined << ").\n\n";
+    return;
+  }
+  const auto& c = a.crossovers;
+  out << "## Cooling law\n\n";
+  if (!a.fit) out << "- T ~ t^a: not fitted (" << a.not_determined << ").\n";
+  if (a.fit) fit_lines(out, r, *a.fit);
+  const bool crossed = std::isfinite(c.t_dissip) && std::isfinite(c.t_stick);
   out << "- Crossovers read off d ln T / d ln t: t_dissip = " << brief(c.t_dissip)
-      << ", t_stick = " << brief(c.t_stick) << " (nan: not crossed in the sampled window); ";
+      << ", t_stick = " << brief(c.t_stick) << (crossed ? "" : " (nan: not crossed in the sampled window)")
+      << "; ";
   if (law_scope(r, compare::Law::crossovers).holds)
     out << law_note(r, compare::Law::crossovers) << " = " << brief(c.t_dissip_theory) << ", "
         << brief(c.t_stick_theory) << ".\n\n";

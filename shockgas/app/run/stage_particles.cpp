@@ -91,8 +91,8 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
   const TimeWindow fit = cooling_fit_window(scene, shape);
-  r.cooling =
-      compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r, fit.t_min, fit.t_max);
+  r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r, fit.t_min,
+                                       fit.t_max, fit.none);
   r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
   r.exact = compare::white_noise_references(scene.initial);
   if (r.exact && r.histogram.bins > 0)
