@@ -11,7 +11,8 @@ EXACT = {"color": "black", "ls": "--", "lw": 1.4, "zorder": 5}
 # Guides (a theory exponent with a fitted amplitude) and theory levels: grey.
 GUIDE = {"color": "0.45", "lw": 1.1, "zorder": 4}
 # Data of the particles, distinct from every solver's line.
-PARTICLES = {"color": "0.25", "marker": ".", "ls": "none", "ms": 2.5, "zorder": 3}
+# (tab:cyan: no solver registers it, and it is no grey beside the black exact solution)
+PARTICLES = {"color": "tab:cyan", "marker": ".", "ls": "none", "ms": 2.5, "zorder": 3}
 # The initial condition (t = 0): a wide pale band behind every line.
 INITIAL = {"color": "0.55", "ls": "-", "lw": 3.5, "alpha": 0.35, "zorder": 0}
 CLUSTER = {"marker": "v", "color": "tab:red", "ls": "none", "ms": 7}
