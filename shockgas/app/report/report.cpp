@@ -102,7 +102,10 @@ void distribution_part(std::ostream& out, const RunResults& r) {
   if (a.collapse_distance)
     out << "## Velocity distribution\n\n- Collapse of P(v,t) t^(-1/3) against z = (v - <v>) t^(1/3) over "
         << a.late.size() << " times in [" << brief(a.late.front().t) << ", " << brief(a.late.back().t)
-        << "]: mean L1 distance " << brief(*a.collapse_distance) << " (0 = perfect collapse, 2 = disjoint); "
+        << "]: mean L1 distance " << brief(*a.collapse_distance) << " "
+        << error_text(r.particles->errors ? std::optional(r.particles->errors->distribution.collapse_distance)
+                                          : std::nullopt)
+        << " (0 = perfect collapse, 2 = disjoint; a finite sample's histograms differ by their noise); "
         << theory << ".\n";
   if (!a.not_determined.empty()) {
     out << "- velocity_distribution: not determined (" << a.not_determined << ").\n\n";
@@ -158,7 +161,8 @@ void comparison_part(std::ostream& out, const RunResults& r) {
   const double expected = compare::expected_shock_count(static_cast<double>(r.scene->initial.N), c.t);
   out << "| shocks (mass >= " << brief(c.min_mass) << ") | " << c.n_shocks << " | "
       << ideal(r, Law::shock_count,
-               "N t^(-2/3) = " + brief(std::round(expected)) + ", ratio " + brief(c.shock_count_ratio));
+               "N t^(-2/3) = " + brief(std::round(expected)) + " up to a factor of order 1, ratio " +
+                   brief(c.shock_count_ratio));
   if (cmp.n_shocks_exact) out << "; exact for this white noise: " << brief(*cmp.n_shocks_exact);
   out << " |\n";
   out << "| clusters (mass >= " << brief(c.min_mass) << ") | " << c.n_clusters << " | "
