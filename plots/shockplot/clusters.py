@@ -7,7 +7,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.ticker import LogFormatterSciNotation
 
-from .common import CLUSTER, EXACT, GUIDE, SHOCK, attr, draw_guide, finish, is_gas, label, theory, unit
+from .common import (CLUSTER, EXACT, GUIDE, SHOCK, attr, draw_guide, finish, is_gas, label, sticky_regime_start,
+                     theory, unit)
 
 DATA = {"color": "tab:blue", "marker": "o", "ms": 3, "lw": 1, "zorder": 3}
 
@@ -34,8 +35,8 @@ def _count_in_time(ax, f, summary):
     N = summary.get("initial", {}).get("N")
     an = p["analysis"] if "analysis" in p else None
     coefficient = attr(an, "n_shocks_exact_coefficient") if an is not None else None
-    t_stick = summary.get("analysis", {}).get("t_stick_theory")
-    start = max(t[0], t_stick) if t_stick else t[0]
+    sticky = sticky_regime_start(summary)
+    start = max(t[0], sticky) if sticky else t[0]
     # The laws are statistical (none over a few bodies) and hold from 10 t_stick (theory.shock_count).
     gas = is_gas(summary) and theory(summary, "shock_count") is not None
     exact_count = an["n_clusters_exact"][:][ok] if an is not None and "n_clusters_exact" in an else None

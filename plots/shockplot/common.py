@@ -138,6 +138,14 @@ def theory(summary, law):
     return scope if scope and scope.get("holds") else None
 
 
+def sticky_regime_start(summary):
+    """Where the sticky-gas regime's laws start to hold for the run (from 10 t_stick: the window
+    of theory.shock_count), or None where they do not hold: an exact late-time law is drawn from
+    there, not over the times before it."""
+    scope = theory(summary, "shock_count")
+    return scope["window"][0] if scope and scope.get("window") else None
+
+
 def no_theory_text(summary, law):
     """"no theory for this scene (why)" for a law that does not hold."""
     scope = summary.get("theory", {}).get(law, {})

@@ -6,16 +6,17 @@ exponent d ln T / d ln t against the plateaus 0, -2 and -2/3 with the
 measured crossovers."""
 import matplotlib.pyplot as plt
 
-from .common import GUIDE, attr, finish, fraction, is_gas, label, unit
+from .common import GUIDE, attr, exponent_error_text, finish, fraction, is_gas, label, theory, unit
 from .temperature import ALPHA_NAME, DATA, FIT, T_NAME, TIME_NAME, exponent_ticks
 
 BANDS = [("elastic", "#eeeeee"), ("homogeneous cooling", "#dde8f5"), ("sticky gas (clusters)", "#f5e6d6")]
 
 
 def shows_regimes(f, summary):
-    """A gas (common.is_gas) whose local exponent crossed into the sticky regime."""
+    """A gas (common.is_gas) whose local exponent crossed into the sticky regime, where the
+    crossovers' theory holds (its bands are drawn at its t_dissip and t_stick)."""
     return is_gas(summary) and summary.get("analysis", {}).get("t_stick") is not None and \
-        "particles/analysis/T_local_exponent" in f
+        theory(summary, "crossovers") is not None and "particles/analysis/T_local_exponent" in f
 
 
 def _homogeneous_cooling(summary, t):
@@ -45,10 +46,15 @@ def _temperature(ax, p, summary, t, T, t_stick):
     an = p["analysis"]
     if "T_fit_t" in an:
         window = an["T_fit_t"][:]
+        error = exponent_error_text(a.get("T_exponent_jackknife_error"), a.get("jackknife_realizations"))
         ax.loglog(window, an["T_fit_T"][:], "-", **FIT,
-                  label=rf"fit on [{window[0]:.3g}, {window[1]:.3g}]: $T \propto t^{{{a.get('T_exponent', float('nan')):.3f}}}$")
+                  label=rf"fit on [{window[0]:.3g}, {window[1]:.3g}]: $T \propto t^{{{a.get('T_exponent', float('nan')):.3f}}}$, "
+                  + error)
     ax.set_ylabel(label(T_NAME, unit(p["T"])))
-    ax.set_title("the three regimes of a cooling gas: $T \\sim 1$, $t^{-2}$, $t^{-2/3}$", fontsize=10)
+    # Haff's law bends towards t^-2 between t_dissip and t_stick; it reaches it only where they lie
+    # far apart (the local exponent below says how close this gas came).
+    ax.set_title("the three regimes of a cooling gas: $T \\sim 1$, $T(0)(1 + \\epsilon t)^{-2}$ (towards $t^{-2}$), "
+                 "$t^{-2/3}$", fontsize=10)
 
 
 def _exponent(ax, p, summary, ok):
@@ -63,8 +69,10 @@ def _exponent(ax, p, summary, ok):
     for key, colour in [("t_dissip", "tab:green"), ("t_stick", "tab:purple")]:
         if a.get(key) is None:
             continue
+        theory = a.get(key + "_theory")  # null where the crossovers' theory does not hold
         ax.axvline(a[key], color=colour, lw=1.2,
-                   label=f"measured {key} = {a[key]:.3g} (theory {a[key + '_theory']:.3g})")
+                   label=f"measured {key} = {a[key]:.3g} " +
+                   (f"(theory {theory:.3g})" if theory is not None else "(no theory for this scene)"))
     ax.set_ylim(-2.4, 0.4)
     ax.set_xlabel(label(TIME_NAME, unit(p["t"])))
     ax.set_ylabel(label(ALPHA_NAME, "1"))

@@ -5,7 +5,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .common import (EXACT, GUIDE, attr, draw_guide, exponent_error_text, finish, fraction, label, no_theory_text,
-                     power_law, theory, unit)
+                     power_law, sticky_regime_start, theory, unit)
 
 FIT = {"color": "tab:red", "lw": 2.2, "alpha": 0.75, "zorder": 4}
 DATA = {"color": "tab:blue", "marker": "o", "ms": 3, "lw": 1, "zorder": 3}
@@ -37,10 +37,11 @@ def draw_fit(ax_T, ax_a, an, summary):
     return window
 
 
-def draw_late_law(ax, t, T, an, window, t_stick):
-    """The sticky-gas law: exact for a white-noise start, else a guide fitted on the fit window."""
+def draw_late_law(ax, t, T, an, window, sticky_start):
+    """The sticky-gas law: exact for a white-noise start (from where the sticky regime starts), else a
+    guide fitted on the fit window."""
     power = attr(an, "T_exponent_theory", -2 / 3)
-    start = max(t[0], t_stick) if t_stick else t[0]
+    start = max(t[0], sticky_start) if sticky_start else t[0]
     amplitude = attr(an, "T_amplitude_exact")
     if amplitude is not None and start < t[-1]:
         tt = np.geomspace(start, t[-1], 50)
@@ -117,7 +118,7 @@ def figure_temperature(f, summary):
     if len(an):
         window = draw_fit(ax_T, ax_a, an, summary)
         if theory(summary, "sticky_cooling"):
-            draw_late_law(ax_T, t, T, an, window, t_stick)
+            draw_late_law(ax_T, t, T, an, window, sticky_regime_start(summary))
         if theory(summary, "crossovers"):
             draw_early_law(ax_T, t, T, an, t_dissip, t_stick)
         draw_levels(ax_a, an, summary)
