@@ -23,7 +23,7 @@ assert shockgas.__file__.startswith(os.path.join(work, "venv")), shockgas.__file
 r = shockgas.run({"initial": {"N": 300, "seed": 5}, "particles": {"r": 0.5, "t_end": 30.0}},
                  out=os.path.join(work, "run"), plots=True)
 pictures = [p for p in os.listdir(os.path.join(work, "run")) if p.endswith(".png")]
-assert len(pictures) >= 3, pictures
+assert {"temperature.png", "clusters.png"} <= set(pictures), pictures  # (no regimes: r = 0.5 has none)
 print("shockgas", shockgas.__version__, "imported from", os.path.dirname(shockgas.__file__), ":",
       len(pictures), "pictures")
 PY
