@@ -157,7 +157,7 @@ const TheoryDeclaration& declaration(Law law) {
 Scope scope(Law law, const SceneShape& shape, double t_last) { return declaration(law).scope(shape, t_last); }
 
 Scope cooling_fit_scope(const SceneShape& s, double t_end) {
-  if (const Scope law = sticky_cooling(s, t_end); law.holds) return law;
+  if (Scope law = sticky_cooling(s, t_end); law.holds) return law;
   const std::string rule = "[t_end / fit_window, t_end], from a decade after any crossover in it";
   double t_min = t_end / s.fit_window;
   for (const auto& [name, t] : crossovers_of(s)) {
