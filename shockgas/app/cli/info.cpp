@@ -33,6 +33,7 @@ std::string intact_text(Verification v) {
     case Verification::own_checksum:
       return "  (intact: size and SHA-256 as its first 512 bytes record)";
     case Verification::no_manifest:
+    case Verification::damaged:
       break;
   }
   return "";
@@ -99,7 +100,7 @@ std::string describe_checkpoint(const fs::path& dir) {
 // file's structure.
 std::string damaged_parts(const fs::path& file) {
   try {
-    read_every_chunk(file, Verification::no_manifest);
+    read_every_chunk(file, Verification::damaged);
   } catch (const FileProblem& e) {
     const bool chunks = e.problem() == "damaged" && e.detail().rfind("dataset ", 0) == 0;
     return chunks ? e.detail() : "its HDF5 structure: " + e.detail();

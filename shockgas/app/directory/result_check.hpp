@@ -26,6 +26,7 @@ enum class Verification {
   manifest,      // size and SHA-256 equal to the manifest's record (a file without its own checksum)
   own_checksum,  // its own checksum verified (and the manifest's record, where one lists it)
   no_manifest,   // neither: no own checksum (layout 1.0), and no manifest.json beside it that lists it
+  damaged,       // it failed a checksum: read only to name where the damage lies (info)
 };
 
 // The result file a path names: the path itself, or the result.h5 inside a run

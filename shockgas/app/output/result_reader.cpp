@@ -172,6 +172,8 @@ std::string damage_note(Verification checked) {
     case Verification::own_checksum:
       return "though it is as its own checksum records: it was written damaged, or its checksum written "
              "again";
+    case Verification::damaged:
+      return "";  // its checksum said so already
     case Verification::no_manifest:
       break;
   }
@@ -242,9 +244,11 @@ void read_part(ResultContents& out, Verification checked, double memory, double 
                          silence_allowed(bytes), &hdf5_calls());
   if (!frames.problem().empty()) throw result_problem(out.path, frames.problem(), frames.detail());
   if (frames.ended() && ended.empty()) return;
+  const std::string note = damage_note(checked);
   throw result_problem(out.path, "damaged",
                        "the HDF5 library failed inside it (" +
-                           (ended.empty() ? std::string("no answer") : ended) + "), " + damage_note(checked));
+                           (ended.empty() ? std::string("no answer") : ended) + ")" +
+                           (note.empty() ? "" : ", " + note));
 }
 
 // The layout first (with every_chunk, every chunk read block by block), in a
