@@ -69,10 +69,10 @@ def _exponent(ax, p, summary, ok):
     for key, colour in [("t_dissip", "tab:green"), ("t_stick", "tab:purple")]:
         if a.get(key) is None:
             continue
-        theory = a.get(key + "_theory")  # null where the crossovers' theory does not hold
+        predicted = a.get(key + "_theory")  # null where the crossovers' theory does not hold
         ax.axvline(a[key], color=colour, lw=1.2,
                    label=f"measured {key} = {a[key]:.3g} " +
-                   (f"(theory {theory:.3g})" if theory is not None else "(no theory for this scene)"))
+                   (f"(theory {predicted:.3g})" if predicted is not None else "(no theory for this scene)"))
     ax.set_ylim(-2.4, 0.4)
     ax.set_xlabel(label(TIME_NAME, unit(p["t"])))
     ax.set_ylabel(label(ALPHA_NAME, "1"))

@@ -4,7 +4,8 @@ white-noise start where the result file holds them."""
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .common import EXACT, GUIDE, attr, draw_guide, finish, fraction, label, note_no_theory, power_law, theory, unit
+from .common import (EXACT, GUIDE, attr, draw_guide, finish, fraction, label, note_no_theory, power_law,
+                     sticky_regime_start, theory, unit)
 from .distribution import axes_labels, draw_exact
 from .temperature import ALPHA_NAME, T_NAME, TIME_NAME, exponent_ticks
 
@@ -19,9 +20,10 @@ def _local_exponent(t, T):
     return np.gradient(np.log(T), np.log(t))
 
 
-def earliest_sticking_time(summary):
-    """The smallest t_stick = eps^(-3/2) of the variants (their own summaries), if any."""
-    times = [v.get("summary", {}).get("analysis", {}).get("t_stick_theory") for v in summary.get("variants", [])]
+def earliest_sticky_start(summary):
+    """The earliest start of the sticky regime (10 t_stick) over the variants (their own summaries), if
+    any variant reaches it."""
+    times = [sticky_regime_start(v.get("summary", {})) for v in summary.get("variants", [])]
     times = [t for t in times if t is not None]
     return min(times) if times else None
 
@@ -44,12 +46,12 @@ def figure_sweep_temperature(f, summary):
         last = (t[ok], T[ok], g)
     power = attr(f["sweep"], "T_exponent_theory", -2 / 3)
     t, T, g = last
-    t_stick = earliest_sticking_time(summary)
+    start = earliest_sticky_start(summary)
     # The sticky-gas law where it holds for a variant (theory.sticky_cooling of its summary), else the words.
     if not any(theory(v.get("summary", {}), "sticky_cooling") for v in summary.get("variants", [])):
         note_no_theory(ax_a, summary.get("variants", [{}])[-1].get("summary", {}), "sticky_cooling")
-    elif exact is not None and (t_stick is None or t_stick < t[-1]):
-        tt = np.geomspace(max(t[0], t_stick or t[0]), t[-1], 50)
+    elif exact is not None and (start is None or start < t[-1]):
+        tt = np.geomspace(max(t[0], start or t[0]), t[-1], 50)
         ax_T.plot(tt, exact * tt ** power, **EXACT,
                   label=f"exact: late-time law of the sticky gas from this white noise, {power_law(exact, power)}")
     else:

@@ -24,8 +24,8 @@ ParameterTable<CompareParams> declare() {
   t.add(&P::distribution_t_min, "distribution_t_min", "time",
         "scaled velocity distributions are compared at sample times >= this", allowed(at_least(0)));
   t.add(&P::fit_window, "fit_window", "1",
-        "the T(t) exponent is fitted on [t_end / fit_window, t_end] (where the sticky-gas law does not "
-        "choose its own window), from a decade after any crossover inside it",
+        "T(t) is fitted from t_end / fit_window to t_end, and from no earlier than a decade after the "
+        "scene's last crossover (10 t_stick for a gas, 10 t* for a wave)",
         allowed(above(1)));
   return t;
 }

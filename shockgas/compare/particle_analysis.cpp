@@ -7,16 +7,19 @@ namespace shockgas::compare {
 CoolingAnalysis analyse_cooling(const std::vector<double>& t, const std::vector<double>& T, double r,
                                 double t_min, double t_max, const std::string& no_window) {
   CoolingAnalysis a;
+  if (t.size() < 3) return a;  // nothing to read off
   std::size_t in_window = 0;
   for (double ti : t) in_window += ti >= t_min && ti <= t_max;
-  if (no_window.empty() && in_window < 3) return a;
   try {
     a.local_exponent = local_exponents(t, T);
     a.crossovers = find_crossovers(t, T, r);
-    if (no_window.empty())
-      a.fit = fit_power_law(t, T, t_min, t_max);
-    else
+    if (!no_window.empty())
       a.not_determined = "no fit window: " + no_window;
+    else if (in_window < 3)
+      a.not_determined =
+          "fewer than 3 samples in the fit window [" + to_text(t_min, 3) + ", " + to_text(t_max, 3) + "]";
+    else
+      a.fit = fit_power_law(t, T, t_min, t_max);
   } catch (const InputError& e) {
     a.fit.reset();
     a.not_determined = e.what();

@@ -114,8 +114,9 @@ std::optional<AnalysisErrors> jackknife_analysis(const std::vector<double>& t,
                                                  double t_min) {
   if (T_rows.size() < 2) return std::nullopt;
   AnalysisErrors e;
+  e.T_exponent = {kNaN, kNaN, kNaN, T_rows.size(), 0};  // no window (fit_t_min >= fit_t_max): no exponent
   try {
-    e.T_exponent = jackknife_T_exponent(t, T_rows, fit_t_min, fit_t_max);
+    if (fit_t_min < fit_t_max) e.T_exponent = jackknife_T_exponent(t, T_rows, fit_t_min, fit_t_max);
     e.windows = jackknife_decade_windows(t, T_rows);
     e.crossovers = jackknife_crossovers(t, T_rows, r);
   } catch (const InputError&) {

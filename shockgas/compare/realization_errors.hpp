@@ -73,7 +73,8 @@ std::vector<WindowExponent> jackknife_decade_windows(const std::vector<double>& 
 // [fit_t_min, fit_t_max] (the window analyse_cooling is given) and on the decade windows, the crossovers with
 // the default params, the distribution from t_min. T_rows: one series per realization at the sample times t;
 // density_rows: their histograms (layout.bins = 0: none). Nothing (nullopt) for fewer than 2 realizations or
-// when the ensemble's own fit is refused; a part the data cannot support is NaN.
+// when the ensemble's own fit is refused; a part the data cannot support is NaN, and so is the exponent
+// where there is no fit window (fit_t_min >= fit_t_max: cooling_fit_scope refused one).
 struct AnalysisErrors {
   JackknifeEstimate T_exponent;
   std::vector<WindowExponent> windows;

@@ -82,14 +82,12 @@ Scope ramp_slope(const SceneShape& s, double t_last) {
   return in_the_sticky_regime(s, t_last);
 }
 
-// The crossovers a T(t) curve of this scene passes, by name.
+// The last crossover of a T(t) curve of this scene, by name: a wave's breaking
+// time t*; a gas's t_stick (after t_dissip, or with no cooling regime before it).
 std::vector<std::pair<std::string, double>> crossovers_of(const SceneShape& s) {
   std::vector<std::pair<std::string, double>> out;
   if (smooth_wave(s)) out.emplace_back("the breaking time t*", s.breaking_time);
-  if (not_a_gas(s).empty() && s.r > 0) {
-    out.emplace_back("t_dissip ~ 1/eps", dissipation_time(s.r));
-    out.emplace_back("t_stick ~ eps^(-3/2)", sticking_time(s.r));
-  }
+  if (not_a_gas(s).empty() && s.r > 0) out.emplace_back("t_stick ~ eps^(-3/2)", sticking_time(s.r));
   return out;
 }
 
@@ -158,15 +156,14 @@ Scope scope(Law law, const SceneShape& shape, double t_last) { return declaratio
 
 Scope cooling_fit_scope(const SceneShape& s, double t_end) {
   if (Scope law = sticky_cooling(s, t_end); law.holds) return law;
-  const std::string rule = "[t_end / fit_window, t_end], from a decade after any crossover in it";
+  const std::string rule = "[t_end / fit_window, t_end], from a decade after the scene's last crossover";
   double t_min = t_end / s.fit_window;
   for (const auto& [name, t] : crossovers_of(s)) {
-    if (!(t_min < t && t < t_end)) continue;
+    if (!(t < t_end)) continue;
     if (kDecade * t >= t_end)
-      return fails("the window [" + text(t_min) + ", " + text(t_end) + "] holds the crossover " + name +
-                   " = " + text(t) + ", and a decade after it (" + text(kDecade * t) +
-                   ") is past t_end: " + "a fit would span two regimes");
-    t_min = kDecade * t;
+      return fails("a decade after the crossover " + name + " = " + text(t) + " (" + text(kDecade * t) +
+                   ") is past t_end = " + text(t_end) + ": a fit before it would span two regimes");
+    t_min = std::max(t_min, kDecade * t);
   }
   return window(t_min, t_end, rule);
 }

@@ -91,10 +91,10 @@ const TheoryDeclaration& declaration(Law law);
 Scope scope(Law law, const SceneShape& shape, double t_last);
 
 // The window T(t) ~ t^a is fitted on: the sticky-gas law's where it holds;
-// else [t_end / fit_window, t_end], moved to start a decade after any
-// crossover inside it (a smooth wave's breaking time t*; a gas's t_dissip and
-// t_stick, r > 0), so that no fit spans two regimes. holds = false, with the
-// reason, where no decade after the crossover comes before t_end.
+// else [t_end / fit_window, t_end], starting no earlier than a decade after
+// the scene's last crossover before t_end (a smooth wave's breaking time t*;
+// a gas's t_stick, r > 0), so that no fit spans two regimes or the end of the
+// one before. holds = false, with the reason, where that decade is past t_end.
 Scope cooling_fit_scope(const SceneShape& shape, double t_end);
 
 // A law's value for report.md where it holds: "theory `id` (source): value",

@@ -85,12 +85,12 @@ double final_clusters_bound(const ParticleParams& p, std::size_t n) {
 
 bool records_final_clusters(const ParticleParams& p, std::size_t n) {
   return p.final_clusters == ClusterRecord::always ||
-         (p.final_clusters == ClusterRecord::automatic && n <= kRecordedClustersAutoBodies &&
+         (p.final_clusters == ClusterRecord::automatic && n <= kLargeStateBodies &&
           final_clusters_bound(p, n) <= kRecordedClustersBytes);
 }
 
 std::string final_clusters_auto_rule() {
-  return "N <= " + to_text(kRecordedClustersAutoBodies) +
+  return "N <= " + to_text(kLargeStateBodies) +
          " and N x realizations <= " + to_text(kRecordedClustersAutoParticles, 2) +
          ": at most 1 GB in the worst case of 12 bytes per particle and realization";
 }

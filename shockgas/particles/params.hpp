@@ -64,7 +64,11 @@ constexpr std::array<EnumName<ClusterRecord>, 3> enum_names(ClusterRecord) {
 // clusters took about 0.9 s of a 2.9 s command, docs/performance/command.md).
 inline constexpr double kRecordedClusterBytesPerParticle = 12;
 inline constexpr double kRecordedClustersBytes = 1e9;
-inline constexpr std::size_t kRecordedClustersAutoBodies = 1000000;
+// The size from which a state is the bulk of a result file, which auto leaves
+// out: a state of more bodies (result.h5's output.initial and output.final,
+// app/scene/scene.hpp) and the final clusters of a realization of more
+// particles.
+inline constexpr std::size_t kLargeStateBodies = 1000000;
 // auto's bound on N x realizations (8.3 x 10^7).
 inline constexpr double kRecordedClustersAutoParticles =
     kRecordedClustersBytes / kRecordedClusterBytesPerParticle;

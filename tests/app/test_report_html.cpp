@@ -43,8 +43,8 @@ std::string theory_cell(const std::string& page, const std::string& key) {
 }
 
 const char* kGas =
-    "[scene]\ndescription = \"a gas & its <shocks>\"\n[initial]\nN = 400\n[particles]\nr = 0.9\nt_end = 200\n"
-    "samples = 20\n[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 400\n[compare]\nfit_window = 2\n";
+    "[scene]\ndescription = \"a gas & its <shocks>\"\n[initial]\nN = 400\n[particles]\nr = 0.9\nt_end = 2000\n"
+    "samples = 60\n[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 400\n[compare]\nfit_window = 2\n";
 
 TEST(ReportHtml, ShowsEverySummaryKeyWithItsMeaningAndTheory) {
   const fs::path out = run_scene("gas", kGas);
@@ -64,8 +64,8 @@ TEST(ReportHtml, ShowsEverySummaryKeyWithItsMeaningAndTheory) {
   // = 20 at r = 0.9 >= 7/9 (theory.crossovers)
   EXPECT_NE(theory_cell(page, "analysis.t_dissip").find("data-laws=\"crossovers\">~ 20 time"),
             std::string::npos);
-  // and none where it does not: T ~ t^(-2/3) from 10 t_stick = 10 eps^(-3/2) = 894 > t_end = 200 (T
-  // is fitted on [100, 200], after t_stick = 89.4: fit_window = 4 would put the crossover in the window)
+  // and none where it does not: T ~ t^(-2/3) from 10 t_stick = 10 eps^(-3/2) = 894 to N^(3/2) / 10 = 800,
+  // no window for 400 particles (T is fitted on [1000, 2000], after 10 t_stick, with no theory)
   EXPECT_NE(theory_cell(page, "analysis.T_exponent")
                 .find("data-refused=\"sticky_cooling\">no theory for this scene"),
             std::string::npos);

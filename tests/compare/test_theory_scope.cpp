@@ -73,9 +73,10 @@ TEST(TheoryScope, ASineBreaksButIsNoSawtoothBeforeTenTimesItsBreakingTime) {
 }
 
 // T(t) is never fitted across a crossover: the sticky law's window where it
-// holds; else [t_end / fit_window, t_end] from a decade after a crossover in
-// it; none where that decade is past t_end (the sine to t = 0.5, t* = 0.159;
-// r = 0.9 to t = 600, t_stick = 89.4), with the reason.
+// holds; else [t_end / fit_window, t_end] from no earlier than a decade after
+// the last crossover, whatever fit_window says; none where that decade is past
+// t_end (the sine to t = 0.5, t* = 0.159; r = 0.9 to t = 600, t_stick = 89.4),
+// with the reason.
 TEST(TheoryScope, TheCoolingFitNeverSpansACrossover) {
   const Scope sticky = cooling_fit_scope(gas(0.5), 1e4);
   EXPECT_TRUE(sticky.holds);
@@ -83,26 +84,39 @@ TEST(TheoryScope, TheCoolingFitNeverSpansACrossover) {
   const double t_star = 1 / (2 * std::numbers::pi);
   const Scope sine = cooling_fit_scope(wave(t_star, 1.0, true), 0.5);
   EXPECT_FALSE(sine.holds);
-  EXPECT_NE(sine.reason.find("holds the crossover the breaking time t* = 0.159"), std::string::npos)
+  EXPECT_NE(sine.reason.find("the crossover the breaking time t* = 0.159 (1.59) is past t_end = 0.5"),
+            std::string::npos)
       << sine.reason;
   const Scope later = cooling_fit_scope(wave(t_star, 1.0, true), 20);
   ASSERT_TRUE(later.holds) << later.reason;
-  EXPECT_EQ(later.t_min, 2.0);  // t_end / fit_window, past t* already
-  const Scope short_gas = cooling_fit_scope(gas(0.9), 600);
-  EXPECT_FALSE(short_gas.holds);
-  EXPECT_NE(short_gas.reason.find("t_stick ~ eps^(-3/2) = 89.4"), std::string::npos) << short_gas.reason;
-  SceneShape wide = gas(0.9);
-  wide.fit_window = 100;  // [3, 300] holds t_dissip = 20 and t_stick = 89.4: from a decade after the
-  const Scope moved = cooling_fit_scope(wide, 300);  // first, 200, which holds neither
-  ASSERT_TRUE(moved.holds) << moved.reason;
-  EXPECT_DOUBLE_EQ(moved.t_min, 10 * dissipation_time(0.9));
-  wide.fit_window = 2;  // [150, 300]: past both
-  const Scope past = cooling_fit_scope(wide, 300);
-  ASSERT_TRUE(past.holds) << past.reason;
-  EXPECT_EQ(past.t_min, 150);
-  const Scope one_early = cooling_fit_scope(wide, 800);  // [400, 800]: t_stick lies before it
-  ASSERT_TRUE(one_early.holds) << one_early.reason;
-  EXPECT_EQ(one_early.t_min, 400);
+  EXPECT_EQ(later.t_min, 2.0);  // t_end / fit_window = 2 > 10 t* = 1.59
+  SceneShape wide = wave(t_star, 1.0, true);
+  wide.fit_window = 100;  // [0.2, 20] would start before 10 t*
+  const Scope from_decade = cooling_fit_scope(wide, 20);
+  ASSERT_TRUE(from_decade.holds) << from_decade.reason;
+  EXPECT_DOUBLE_EQ(from_decade.t_min, 10 * t_star);
+  for (const double fit_window : {2.0, 10.0, 100.0}) {  // r = 0.9 to t = 600 or 300: 10 t_stick = 894
+    SceneShape gas_09 = gas(0.9);
+    gas_09.fit_window = fit_window;
+    for (const double t_end : {300.0, 600.0}) {
+      const Scope short_gas = cooling_fit_scope(gas_09, t_end);
+      EXPECT_FALSE(short_gas.holds) << fit_window << " " << t_end;
+      EXPECT_NE(short_gas.reason.find("t_stick ~ eps^(-3/2) = 89.4 (894) is past t_end"), std::string::npos)
+          << short_gas.reason;
+    }
+  }
+  // 400 particles: the sticky law ends at N^(3/2) / 10 = 800 < 10 t_stick = 894, so it holds nowhere;
+  // T is still fitted, after 10 t_stick.
+  SceneShape few = gas(0.9, 400);
+  few.fit_window = 2;
+  EXPECT_FALSE(scope(Law::sticky_cooling, few, 2000).holds);
+  const Scope after = cooling_fit_scope(few, 2000);
+  ASSERT_TRUE(after.holds) << after.reason;
+  EXPECT_EQ(after.t_min, 1000);
+  few.fit_window = 10;
+  const Scope later_start = cooling_fit_scope(few, 2000);
+  ASSERT_TRUE(later_start.holds) << later_start.reason;
+  EXPECT_DOUBLE_EQ(later_start.t_min, 10 * sticking_time(0.9));
 }
 
 // An isolated pulse keeps its lobes and decays as t^(-1/2); a jump (a Riemann

@@ -125,7 +125,7 @@ std::optional<Manifest> read_manifest(const fs::path& dir) {
   if (!in) refuse(file, "unreadable");
   const ordered_json j = ordered_json::parse(text.str(), nullptr, false);
   if (j.is_discarded()) refuse(file, "not JSON");
-  if (!j.is_object()) refuse(file, "a JSON object (this is JSON of another kind)");
+  if (!j.is_object()) refuse(file, std::string("JSON, but ") + j.type_name() + ", not an object");
   if (!j.contains("format") || j["format"] != kFormat)
     refuse(file, "format \"" + std::string(kFormat) + "\"");
   if (!j.contains("scene") || !j["scene"].is_string() || !j.contains("files") || !j["files"].is_array())

@@ -66,7 +66,7 @@ std::string test_words(const BinnedStatistic& b) {
   if (b.exact.empty()) return "no exact law for this start (white noise on a lattice only)";
   if (!b.chi2) return "too few realizations or clusters for a chi-square";
   // A p that underflows is no p of 0: the chi-square's tail is below what a double holds.
-  const std::string p = *b.p_value > 0 ? "p = " + number(*b.p_value, 2) : "p < 1e-300";
+  const std::string p = *b.p_value == 0 ? "p < 1e-300" : "p = " + number(*b.p_value, 2);
   return "chi2 = " + number(*b.chi2, 3) + " on " + std::to_string(b.dof) + " degrees of freedom, " + p +
          (*b.p_value < 0.01 ? " (the law is rejected at the 1 % level)" : "");
 }

@@ -196,9 +196,9 @@ std::vector<Declaration> analysis() {
   return {
       with_theory(key(p, "analysis.T_exponent", "1",
                       "fitted exponent of T(t) on analysis.T_fit_window: theory.sticky_cooling's window "
-                      "where it holds, "
-                      "else [t_end / fit_window, t_end]",
-                      "with 3 or more samples in the window",
+                      "where it holds, else [t_end / fit_window, t_end] from no earlier than a decade after "
+                      "the scene's last crossover (compare::cooling_fit_scope)",
+                      "where that window exists and holds 3 or more samples",
                       fit([](const Cooling&, const Fit& f) { return f.exponent; })),
                   compare::Law::sticky_cooling, "-2/3 (sticky gas, t_stick << t << N^(3/2))"),
       key(p, "analysis.T_exponent_error", "1",
@@ -229,7 +229,7 @@ std::vector<Declaration> analysis() {
                       "", crossover_theory([](const Cooling& a) { return a.crossovers.t_stick_theory; })),
                   compare::Law::crossovers, "eps^(-3/2)"),
       key(p, "analysis.cooling_law_not_determined", "", "why the cooling law could not be fitted",
-          "when the data refuse it",
+          "when the scene leaves no fit window, or the data refuse it",
           [](const RunResults& r, Emitter& out) {
             if (r.particles && !r.particles->cooling.not_determined.empty())
               out.json(r.particles->cooling.not_determined);

@@ -97,8 +97,10 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   r.exact = compare::white_noise_references(scene.initial);
   if (r.exact && r.histogram.bins > 0)
     r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
+  // The exponent's error where T was fitted; every other error either way.
+  const TimeWindow fitted = r.cooling.fit ? fit : TimeWindow{};
   r.errors = compare::jackknife_analysis(
-      r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r, fit.t_min, fit.t_max, r.histogram,
+      r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r, fitted.t_min, fitted.t_max, r.histogram,
       r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
   if (r.exact && scene.particles.clusters)
     r.n_clusters_exact = exact_cluster_counts(*r.exact, r.ensemble.t, scene);

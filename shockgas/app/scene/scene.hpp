@@ -40,9 +40,10 @@ enum class KeepState { automatic, always, never };
 constexpr std::array<EnumName<KeepState>, 3> enum_names(KeepState) {
   return {{{KeepState::automatic, "auto"}, {KeepState::always, "always"}, {KeepState::never, "never"}}};
 }
-// 10^6 bodies: 24 MB of float64 before compression, a second's writing at most;
-// above it a state is the file's bulk (docs/output.md, "Layout version").
-inline constexpr std::size_t kStoredStateBodies = 1000000;
+// 10^6 bodies (particles::kLargeStateBodies): 24 MB of float64 before
+// compression, a second's writing at most; above it a state is the file's bulk
+// (docs/output.md, "Layout version").
+inline constexpr std::size_t kStoredStateBodies = particles::kLargeStateBodies;
 inline bool keeps_state(KeepState k, std::size_t bodies) {
   return k == KeepState::always || (k == KeepState::automatic && bodies <= kStoredStateBodies);
 }
