@@ -47,7 +47,8 @@ fs::path run_scene(const std::string& name, const std::string& scene, std::vecto
 // Every part a run can write: particles with records, the analysis, two solvers, the comparison
 // (t_end = 200, 40 samples: T is fitted on [80, 200], from 10 t_stick on, on 7 of them).
 const char* kFullScene =
-    "[initial]\nN = 300\n[particles]\nr = 0.5\nt_end = 200\nsamples = 40\nrealizations = 2\nsnapshots = [5.0, "
+    "[initial]\nN = 300\n[particles]\nr = 0.5\nt_end = 200\nsamples = 40\nrealizations = 2\nsnapshots = "
+    "[5.0, "
     "20.0]\n"
     "histogram_bins = 16\nspacetime = true\nspacetime_frames = 5\n"
     "[continuum]\nsolvers = [\"hopf_lax\", \"godunov\"]\ncells = 300\n[compare]\nfit_window = "

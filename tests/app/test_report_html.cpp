@@ -43,7 +43,8 @@ std::string theory_cell(const std::string& page, const std::string& key) {
 }
 
 const char* kGas =
-    "[scene]\ndescription = \"a gas & its <shocks>\"\n[initial]\nN = 400\n[particles]\nr = 0.9\nt_end = 2000\n"
+    "[scene]\ndescription = \"a gas & its <shocks>\"\n[initial]\nN = 400\n[particles]\nr = 0.9\nt_end = "
+    "2000\n"
     "samples = 60\n[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 400\n[compare]\nfit_window = 2\n";
 
 TEST(ReportHtml, ShowsEverySummaryKeyWithItsMeaningAndTheory) {
