@@ -117,6 +117,25 @@ TEST(Damage, AttributesDamagedBeforeTheFileChecksumAreADamagedFile) {
   }
 }
 
+// Bytes appended after the file's end, its own checksum taken again over them:
+// the library reads the file as before (it was read as intact, exit 0), but
+// its superblock records where the file ends.
+TEST(Damage, BytesAppendedAfterItsEndAreADamagedFile) {
+  for (const std::size_t extra : {1, 7, 4096}) {
+    const fs::path file = lone_copy("appended");
+    {
+      std::ofstream out(file, std::ios::binary | std::ios::app);
+      out << std::string(extra, 'x');
+    }
+    write_own_checksum(file);
+    const auto [code, err] = run_child({"info", file.string()});
+    EXPECT_EQ(code, 2) << extra << "\n" << err;
+    EXPECT_NE(err.find(std::to_string(extra) + " bytes after the end of file its HDF5 superblock records"),
+              std::string::npos)
+        << err;
+  }
+}
+
 // The damage of the file's own checksum block alone is a damage too.
 TEST(Damage, ADamagedChecksumBlockIsADamagedFile) {
   const fs::path file = lone_copy("block");

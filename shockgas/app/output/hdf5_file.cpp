@@ -236,6 +236,16 @@ Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
     throw result_problem(path, "truncated", "shorter than the end of file its HDF5 superblock records");
   if (id < 0) throw result_problem(path, "unreadable", "the HDF5 library refuses it: " + reason());
   Hdf5File file(H5Handle(id, close_file), path, verified, false);
+  // Bytes past the end the superblock records are none of the file's (the library reads past them).
+  haddr_t end = 0;
+  hsize_t size = 0;
+  check(H5Fget_eoa(id, &end), "H5Fget_eoa", path);
+  check(H5Fget_filesize(id, &size), "H5Fget_filesize", path);
+  if (size > end)
+    throw result_problem(path, "damaged",
+                         std::to_string(size - end) +
+                             " bytes after the end of file its HDF5 superblock records (" +
+                             std::to_string(end) + " bytes): appended since it was written");
   H5Handle root(check(H5Gopen2(id, "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
   std::optional<std::string> version;
   if (check(H5Aexists(root.get(), "layout_version"), "H5Aexists", "layout_version") > 0)
