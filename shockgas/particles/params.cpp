@@ -85,12 +85,12 @@ double final_clusters_bound(const ParticleParams& p, std::size_t n) {
 
 bool records_final_clusters(const ParticleParams& p, std::size_t n) {
   return p.final_clusters == ClusterRecord::always ||
-         (p.final_clusters == ClusterRecord::automatic && n <= kLargeStateBodies &&
+         (p.final_clusters == ClusterRecord::automatic && n <= kRecordedClustersAutoBodies &&
           final_clusters_bound(p, n) <= kRecordedClustersBytes);
 }
 
 std::string final_clusters_auto_rule() {
-  return "N <= " + to_text(kLargeStateBodies) +
+  return "N <= " + to_text(kRecordedClustersAutoBodies) +
          " and N x realizations <= " + to_text(kRecordedClustersAutoParticles, 2) +
          ": at most 1 GB in the worst case of 12 bytes per particle and realization";
 }

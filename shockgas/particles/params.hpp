@@ -58,17 +58,14 @@ constexpr std::array<EnumName<ClusterRecord>, 3> enum_names(ClusterRecord) {
 // young gas of pairs; a late one holds a few hundred: about 1.9 N t^(-2/3) for
 // white noise). auto records them when that bound, over every realization, is
 // at most 1 GB (N x realizations <= 8.3 x 10^7), and when one realization has
-// at most 10^6 particles, as result.h5 keeps a state (its clusters are then at
-// most 12 MB; above it they are the file's bulk and their visit and deflate
-// its largest cost after the engine: at N = 10^7 to t = 10, 1.1 x 10^6
-// clusters took about 0.9 s of a 2.9 s command, docs/performance/command.md).
+// at most 10^6 particles (kRecordedClustersAutoBodies: its clusters are then at
+// most 12 MB, 1.1 x 10^5 of them at N = 10^6 to t = 10, found and written in
+// about 0.1 s; above it they are the file's bulk: at N = 10^7 to t = 10,
+// 1.1 x 10^6 clusters took about 0.9 s of a 2.9 s command,
+// docs/performance/command.md).
 inline constexpr double kRecordedClusterBytesPerParticle = 12;
 inline constexpr double kRecordedClustersBytes = 1e9;
-// The size from which a state is the bulk of a result file, which auto leaves
-// out: a state of more bodies (result.h5's output.initial and output.final,
-// app/scene/scene.hpp) and the final clusters of a realization of more
-// particles.
-inline constexpr std::size_t kLargeStateBodies = 1000000;
+inline constexpr std::size_t kRecordedClustersAutoBodies = 1000000;
 // auto's bound on N x realizations (8.3 x 10^7).
 inline constexpr double kRecordedClustersAutoParticles =
     kRecordedClustersBytes / kRecordedClusterBytesPerParticle;

@@ -155,7 +155,14 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
   const auto& p = s.particles;
   const double N = d(s.initial.N), samples = d(p.samples);
   if (s.has_particles) {
-    items.push_back({"initial.N", "the initial and final states", 2 * N * kBodyBytes});
+    // The states result.h5 keeps (output.initial, output.final); the final one has at most N bodies.
+    const double final_bodies = s.output.final_state == KeepState::always ? N
+                                : s.output.final_state == KeepState::never
+                                    ? 0
+                                    : std::min(N, d(kStoredStateBodies));
+    const double initial_bodies = keeps_state(s.output.initial, s.initial.N) ? N : 0;
+    items.push_back({"initial.N", "the initial and final states result.h5 keeps",
+                     (initial_bodies + final_bodies) * kBodyBytes});
     items.push_back({"particles.samples", "the time series", samples * 2 * kSeriesColumns * 8});
     if (p.histogram_bins > 0)
       items.push_back({"particles.histogram_bins",

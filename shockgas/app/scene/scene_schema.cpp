@@ -38,14 +38,12 @@ ParameterTable<OutputParams> output_table() {
   ParameterTable<P> t("output");
   t.add(&P::plots, "plots", "", "make PNG plots (and the animation's movie when animation = true)");
   t.add(&P::fields, "fields", "", "store the continuum fields in result.h5");
-  t.add(
-      &P::initial, "initial", "",
-      "store realization 0's initial bodies (/initial/x, v, m): always, never, or auto (at most 10^6 bodies; "
-      "the scene and its seed draw them again)");
+  t.add(&P::initial, "initial", "",
+        "store realization 0's initial bodies (/initial/x, v, m): always, never, or auto (at most " +
+            to_text(kStoredStateBodies) + " bodies; the scene and its seed draw them again)");
   t.add(&P::final_state, "final", "",
-        "store realization 0's bodies at t_end (/particles/final/x, v, m): always, never, or auto (at most "
-        "10^6 "
-        "bodies)");
+        "store realization 0's bodies at t_end (/particles/final/x, v, m): always, never, or auto (at most " +
+            to_text(kStoredStateBodies) + " bodies)");
   t.add(&P::animation, "animation", "",
         "record frames (particles and every solver's fields at each frame time) and make animation.mp4 and "
         ".gif");
