@@ -82,12 +82,16 @@ Scope ramp_slope(const SceneShape& s, double t_last) {
   return in_the_sticky_regime(s, t_last);
 }
 
-// The last crossover of a T(t) curve of this scene, by name: a wave's breaking
-// time t*; a gas's t_stick (after t_dissip, or with no cooling regime before it).
+// The crossovers of a T(t) curve of this scene, by name: a wave's breaking
+// time t*; a gas's t_dissip and t_stick (the last one before t_end counts:
+// t_dissip where t_stick comes later).
 std::vector<std::pair<std::string, double>> crossovers_of(const SceneShape& s) {
   std::vector<std::pair<std::string, double>> out;
   if (smooth_wave(s)) out.emplace_back("the breaking time t*", s.breaking_time);
-  if (not_a_gas(s).empty() && s.r > 0) out.emplace_back("t_stick ~ eps^(-3/2)", sticking_time(s.r));
+  if (not_a_gas(s).empty() && s.r > 0) {
+    out.emplace_back("t_dissip ~ 1/eps", dissipation_time(s.r));
+    out.emplace_back("t_stick ~ eps^(-3/2)", sticking_time(s.r));
+  }
   return out;
 }
 

@@ -105,6 +105,17 @@ TEST(TheoryScope, TheCoolingFitNeverSpansACrossover) {
           << short_gas.reason;
     }
   }
+  // r = 0.99 to t = 1000: t_stick = 2828 is past t_end, t_dissip = 200 is not, and a decade after it
+  // (2000) is past t_end too, whatever fit_window says (a fit on [1, 1000] had averaged the elastic
+  // regime and the cooling one to -0.49)
+  for (const double fit_window : {2.0, 10.0, 1000.0}) {
+    SceneShape nearly_elastic = gas(0.99);
+    nearly_elastic.fit_window = fit_window;
+    const Scope none = cooling_fit_scope(nearly_elastic, 1000);
+    EXPECT_FALSE(none.holds) << fit_window;
+    EXPECT_NE(none.reason.find("t_dissip ~ 1/eps = 200 (2e+03) is past t_end"), std::string::npos)
+        << none.reason;
+  }
   // 400 particles: the sticky law ends at N^(3/2) / 10 = 800 < 10 t_stick = 894, so it holds nowhere;
   // T is still fitted, after 10 t_stick.
   SceneShape few = gas(0.9, 400);

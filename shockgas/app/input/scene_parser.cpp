@@ -210,8 +210,8 @@ void validate_statistics(const Scene& scene) {
   require(particles::records_final_clusters(p, scene.initial.N), "particles.final_clusters",
           name_of(p.final_clusters),
           "\"always\", or \"auto\" while " + particles::final_clusters_auto_rule() +
-              " (here N = " + to_text(static_cast<double>(scene.initial.N), 3) + ", N x realizations = " +
-              to_text(static_cast<double>(scene.initial.N) * static_cast<double>(p.realizations), 3) +
+              " (here N = " + std::to_string(scene.initial.N) + ", N x realizations = " +
+              to_text(static_cast<double>(scene.initial.N) * static_cast<double>(p.realizations), 7) +
               "), when [statistics] is present: it reduces each realization's final clusters");
 }
 

@@ -85,6 +85,12 @@ void cooling_part(std::ostream& out, const RunResults& r) {
   out << "## Cooling law\n\n";
   if (!a.fit) out << "- T ~ t^a: not fitted (" << a.not_determined << ").\n";
   if (a.fit) fit_lines(out, r, *a.fit);
+  // The window follows the theory's crossovers; one read off the curve may fall inside it.
+  for (const auto& [name, t] : {std::pair{"t_dissip", c.t_dissip}, std::pair{"t_stick", c.t_stick}})
+    if (a.fit && t > a.fit->t_min && t < a.fit->t_max)
+      out << "- The measured " << name << " = " << brief(t)
+          << " lies inside the fit window: the fit may span the "
+          << "crossover the curve shows there, and its exponent mix two regimes.\n";
   const bool crossed = std::isfinite(c.t_dissip) && std::isfinite(c.t_stick);
   out << "- Crossovers read off d ln T / d ln t: t_dissip = " << brief(c.t_dissip)
       << ", t_stick = " << brief(c.t_stick) << (crossed ? "" : " (nan: not crossed in the sampled window)")
