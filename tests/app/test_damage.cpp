@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -115,6 +116,32 @@ TEST(Damage, AttributesDamagedBeforeTheFileChecksumAreADamagedFile) {
     EXPECT_EQ(code, 2) << "seed " << seed << "\n" << err;
     EXPECT_NE(err.find(": damaged"), std::string::npos) << "seed " << seed << "\n" << err;
   }
+}
+
+// A string attribute lives in the library's global heap, which has no checksum
+// of its own: a byte changed there before the file's own checksum was taken
+// (the layout version's "3" made a "2": another meaning for n_clusters) was
+// read as intact. /@attributes_sha256 holds every attribute's SHA-256.
+TEST(Damage, AnAttributeChangedBeforeTheFileChecksumIsADamagedFile) {
+  const fs::path file = lone_copy("attribute-text");
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string version = layout_version_text() + std::string(1, '\0');
+  const std::size_t at = bytes.find(version, kOwnChecksumBytes);
+  ASSERT_NE(at, std::string::npos);
+  {
+    std::fstream out(file, std::ios::in | std::ios::out | std::ios::binary);
+    out.seekp(static_cast<std::streamoff>(at));
+    out.put('2');
+  }
+  write_own_checksum(file);
+  const auto [code, err] = run_child({"info", file.string()});
+  EXPECT_EQ(code, 2) << err;
+  EXPECT_NE(err.find("its attributes are not those whose SHA-256 its writer stored"), std::string::npos)
+      << err;
 }
 
 // Bytes appended after the file's end, its own checksum taken again over them:

@@ -251,6 +251,13 @@ Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
   if (check(H5Aexists(root.get(), "layout_version"), "H5Aexists", "layout_version") > 0)
     version = read_string_attribute(root.get(), "layout_version");
   check_layout_version(path, version);
+  // Every object header and attribute is read here, whether or not the file stores their digest.
+  const std::string digest = file.attributes_digest();
+  if (check(H5Aexists(root.get(), kAttributesDigest), "H5Aexists", kAttributesDigest) > 0 &&
+      read_string_attribute(root.get(), kAttributesDigest) != digest)
+    throw result_problem(path, "damaged",
+                         std::string("its attributes are not those whose SHA-256 its writer stored (/@") +
+                             kAttributesDigest + "): one was changed or damaged after it was written");
   return file;
 }
 
@@ -264,8 +271,9 @@ Hdf5File Hdf5File::update(const std::string& path) {
 
 void Hdf5File::close() {
   const std::lock_guard<std::recursive_mutex> calls(hdf5_calls());
+  if (file_.get() < 0) return;
+  if (writes_) set_attribute("/", kAttributesDigest, attributes_digest());
   const std::int64_t id = file_.release();
-  if (id < 0) return;
   hsize_t user_block = 0;
   if (writes_) {
     H5Handle fcpl(check(H5Fget_create_plist(id), "H5Fget_create_plist", path_), close_plist);

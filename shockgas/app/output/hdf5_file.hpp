@@ -137,6 +137,14 @@ class Hdf5File {
   void check_every_chunk() const;
   // Where every chunk of every dataset lies in the file.
   std::vector<ChunkExtent> chunk_extents() const;
+  // The SHA-256 of every attribute of the file but /@attributes_sha256 (each
+  // group and dataset in name order, "/" first, each attribute in name order:
+  // its object, name and value as attributes() reads them). close() stores it
+  // as /@attributes_sha256 and open() compares: the library keeps string
+  // attributes in its global heap, which carries no checksum of its own.
+  std::string attributes_digest() const;
+  // The root attribute that holds it.
+  static constexpr const char* kAttributesDigest = "attributes_sha256";
 
   // Closes the file (its last data flushed), then writes its own checksum
   // (own_checksum.hpp) if it was written; RunError if that fails. Without it

@@ -17,7 +17,7 @@ struct LayoutVersion {
 };
 
 // The layout this build writes.
-inline constexpr LayoutVersion kLayoutVersion{3, 0};
+inline constexpr LayoutVersion kLayoutVersion{3, 1};
 
 // "3.0".
 std::string layout_version_text(LayoutVersion v = kLayoutVersion);

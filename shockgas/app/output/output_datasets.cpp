@@ -261,6 +261,11 @@ std::vector<Declaration> provenance_datasets() {
                 "the layout of this file, major.minor: a reader reads its major and below (docs/output.md, "
                 "Layout version); absent in layout 1.0",
                 "", [](const RunResults&, Emitter& out) { out.text(layout_version_text()); }),
+      attribute(p, "/@attributes_sha256", "",
+                "SHA-256 of every other attribute of the file (each group and dataset in name order, each "
+                "attribute in name order: object, name, value), stored when the file is closed; every reader "
+                "compares it (layout 3.1 on)",
+                "", [](const RunResults&, Emitter&) {}),  // written by Hdf5File::close()
       attribute(p, "/@shockgas_version", "", "the program that wrote the file", "",
                 [](const RunResults&, Emitter& out) { out.text(kVersion); }),
       attribute(p, "/@git_commit", "", "its commit (-dirty: with uncommitted changes)", "",
