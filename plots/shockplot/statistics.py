@@ -104,7 +104,8 @@ def spacing_panel(ax, table, realizations):
 
 def figure(directory):
     """The statistics page of DIR (its statistics.csv), not yet saved."""
-    table = [{k: v if k == "quantity" else number(v) for k, v in row.items()}
+    text = ("quantity", "unit", "bin_unit")  # the columns of words; the others are numbers
+    table = [{k: v if k in text else number(v) for k, v in row.items()}
              for row in read_csv(os.path.join(directory, CSV))]
     count = one_row(table, "count")
     correlation = one_row(table, "mass_speed_correlation")

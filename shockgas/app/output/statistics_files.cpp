@@ -127,23 +127,25 @@ void write_statistics_h5(const std::filesystem::path& file, const ShockStatistic
   f.close();
 }
 
+// One row per number or bin, each with the unit of its value and of its bins.
 void write_statistics_csv(const std::filesystem::path& file, const ShockStatistics& s) {
   std::ostringstream out;
-  out << "quantity,bin_low,bin_high,value,error,exact\n";
-  out << "realizations,,," << s.realizations << ",,\n";
+  out << "quantity,bin_low,bin_high,value,error,exact,unit,bin_unit\n";
+  out << "realizations,,," << s.realizations << ",,,1,\n";
   out << "count,,," << number(s.count.value) << "," << number(s.count.error) << ","
-      << (s.count_exact ? number(*s.count_exact) : "") << "\n";
+      << (s.count_exact ? number(*s.count_exact) : "") << ",1,\n";
   out << "mass_speed_correlation,,," << number(s.mass_speed_correlation.value) << ","
-      << number(s.mass_speed_correlation.error) << ",\n";
+      << number(s.mass_speed_correlation.error) << ",,1,\n";
   for (const Distribution& d : kDistributions) {
     const BinnedStatistic& b = s.*d.field;
     if (b.chi2)
-      out << d.name << "_chi2,,," << number(*b.chi2) << ",,\n"
-          << d.name << "_dof,,," << b.dof << ",,\n"
-          << d.name << "_p_value,,," << number(*b.p_value) << ",,\n";
+      out << d.name << "_chi2,,," << number(*b.chi2) << ",,,1,\n"
+          << d.name << "_dof,,," << b.dof << ",,,1,\n"
+          << d.name << "_p_value,,," << number(*b.p_value) << ",,,1,\n";
     for (std::size_t j = 0; j < b.value.size(); ++j)
       out << d.name << "," << number(b.edges[j]) << "," << number(b.edges[j + 1]) << "," << number(b.value[j])
-          << "," << number(b.error[j]) << "," << (b.exact.empty() ? "" : number(b.exact[j])) << "\n";
+          << "," << number(b.error[j]) << "," << (b.exact.empty() ? "" : number(b.exact[j])) << "," << d.unit
+          << "," << d.bin_unit << "\n";
   }
   write_file(file, out.str());
 }
