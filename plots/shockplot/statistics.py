@@ -12,6 +12,7 @@ import os
 
 import matplotlib.pyplot as plt
 
+from .common import EXACT
 from .run_files import number, read_csv
 from .saving import save
 
@@ -56,7 +57,7 @@ def exact_steps(ax, rows, per_width, label):
         width = high - low if per_width else 1.0
         xs += [low, high]
         ys += [exact / width, exact / width]
-    ax.plot(xs, ys, color="black", lw=1.2, label=label, zorder=2)
+    ax.plot(xs, ys, **dict(EXACT, lw=1.2, zorder=2), label=label)
     return True
 
 
