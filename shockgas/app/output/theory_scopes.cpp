@@ -85,12 +85,6 @@ std::string law_note(const RunResults& r, Law law) {
   return compare::theory_note(law, r.shape, law_time(*r.scene, law));
 }
 
-TimeWindow cooling_fit_window(const Scene& scene, const compare::SceneShape& shape) {
-  const compare::Scope s = compare::cooling_fit_scope(shape, scene.particles.t_end);
-  if (s.holds) return {s.t_min, s.t_max, ""};
-  return {0, 0, s.reason};
-}
-
 namespace layout {
 
 std::vector<Declaration> theory_keys() {

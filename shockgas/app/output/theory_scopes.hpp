@@ -26,11 +26,4 @@ double law_time(const Scene& scene, compare::Law law);
 compare::Scope law_scope(const RunResults& r, compare::Law law);
 std::string law_note(const RunResults& r, compare::Law law);
 
-// The window of the T(t) fit (compare::cooling_fit_scope), or why there is none.
-struct TimeWindow {
-  double t_min = 0, t_max = 0;  // [time]
-  std::string none;             // why there is no window (then t_min, t_max mean nothing)
-};
-TimeWindow cooling_fit_window(const Scene& scene, const compare::SceneShape& shape);
-
 }  // namespace shockgas::app

@@ -90,15 +90,16 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
   r.heaviest = heaviest_cluster(r, scene, initial);
   const auto& h = r.ensemble.first.histogram;
   if (h.bins > 0) r.histogram = {h.zmax, h.bins, h.t, r.ensemble.histogram};
-  const TimeWindow fit = cooling_fit_window(scene, shape);
+  const compare::Scope fit = compare::cooling_fit_scope(shape, scene.particles.t_end);
   r.cooling = compare::analyse_cooling(r.ensemble.t, r.ensemble.T.mean, scene.particles.r, fit.t_min,
-                                       fit.t_max, fit.none);
+                                       fit.t_max, fit.holds ? "" : fit.reason);
   r.distribution = compare::analyse_velocity_distribution(r.histogram, scene.compare.distribution_t_min);
   r.exact = compare::white_noise_references(scene.initial);
   if (r.exact && r.histogram.bins > 0)
     r.histogram_exact = compare::cluster_law_on_bins(r.histogram.edges(), r.exact->D);
-  // The exponent's error where T was fitted; every other error either way.
-  const TimeWindow fitted = r.cooling.fit ? fit : TimeWindow{};
+  // The exponent's error on the fit's window where T was fitted (none: an empty one); every other
+  // error either way.
+  const compare::PowerLawFit fitted = r.cooling.fit.value_or(compare::PowerLawFit{});
   r.errors = compare::jackknife_analysis(
       r.ensemble.t, r.ensemble.T_by_realization, scene.particles.r, fitted.t_min, fitted.t_max, r.histogram,
       r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
