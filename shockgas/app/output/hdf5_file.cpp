@@ -140,6 +140,12 @@ std::string read_string_attribute(hid_t object, const char* name) {
   return value;
 }
 
+// The attribute's value where the object has it (read_string_attribute), else nothing.
+std::optional<std::string> stated_attribute(hid_t object, const char* name) {
+  if (check(H5Aexists(object, name), "H5Aexists", name) == 0) return std::nullopt;
+  return read_string_attribute(object, name);
+}
+
 // Calls visit(path, dataset id) for every dataset, in name order.
 template <class F>
 void each_dataset(hid_t file, F&& visit) {
@@ -247,14 +253,10 @@ Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
                              " bytes after the end of file its HDF5 superblock records (" +
                              std::to_string(end) + " bytes): appended since it was written");
   H5Handle root(check(H5Gopen2(id, "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
-  std::optional<std::string> version;
-  if (check(H5Aexists(root.get(), "layout_version"), "H5Aexists", "layout_version") > 0)
-    version = read_string_attribute(root.get(), "layout_version");
-  check_layout_version(path, version);
+  check_layout_version(path, stated_attribute(root.get(), "layout_version"));
   // Every object header and attribute is read here, whether or not the file stores their digest.
   const std::string digest = file.attributes_digest();
-  if (check(H5Aexists(root.get(), kAttributesDigest), "H5Aexists", kAttributesDigest) > 0 &&
-      read_string_attribute(root.get(), kAttributesDigest) != digest)
+  if (const auto stored = stated_attribute(root.get(), kAttributesDigest); stored && *stored != digest)
     throw result_problem(path, "damaged",
                          std::string("its attributes are not those whose SHA-256 its writer stored (/@") +
                              kAttributesDigest + "): one was changed or damaged after it was written");
