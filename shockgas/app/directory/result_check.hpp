@@ -28,6 +28,10 @@ enum class Verification {
   no_manifest,   // neither: no own checksum (layout 1.0), and no manifest.json beside it that lists it
   damaged,       // it failed a checksum: read only to name where the damage lies (info)
 };
+// Checked against its manifest or its own checksum.
+inline bool verified(Verification v) {
+  return v == Verification::manifest || v == Verification::own_checksum;
+}
 
 // The result file a path names: the path itself, or the result.h5 inside a run
 // directory. FileProblem for a directory without one.

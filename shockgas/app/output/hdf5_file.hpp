@@ -84,9 +84,7 @@ class Hdf5File {
   static Hdf5File update(const std::string& path);
   // How open() checked the file; verified(): against its manifest or its own checksum.
   Verification verification() const { return verification_; }
-  bool verified() const {
-    return verification_ == Verification::manifest || verification_ == Verification::own_checksum;
-  }
+  bool verified() const { return app::verified(verification_); }
   const std::string& path() const { return path_; }
 
   // Datasets of `dims` (1 or 2) from doubles in row-major order, stored as

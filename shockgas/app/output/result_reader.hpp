@@ -40,9 +40,7 @@ struct ResultContents {
   std::map<std::string, std::vector<double>> values;  // the datasets asked for
 
   // Checked against its manifest or its own checksum.
-  bool verified() const {
-    return verification == Verification::manifest || verification == Verification::own_checksum;
-  }
+  bool verified() const { return app::verified(verification); }
   // The attributes of a group (none for a group the file does not have).
   const std::vector<std::pair<std::string, std::string>>& attributes_of(const std::string& group) const;
   // One attribute; "" where the group or the attribute is missing.
