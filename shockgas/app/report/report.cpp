@@ -57,7 +57,8 @@ std::string error_text(const std::optional<compare::JackknifeEstimate>& e) {
   return "(no error estimate from one realization)";
 }
 
-// The fit's line, and where the sticky-gas law holds, the departure from it in words.
+// The fit's line; where the sticky-gas law holds, the departure from it in words; a
+// crossover read off the curve inside the window.
 void fit_lines(std::ostream& out, const RunResults& r, const compare::PowerLawFit& fit) {
   const auto& errors = r.particles->errors;
   const auto jackknife = errors ? std::optional(errors->T_exponent) : std::nullopt;
@@ -73,6 +74,13 @@ void fit_lines(std::ostream& out, const RunResults& r, const compare::PowerLawFi
                                            fit.t_max)
         << "\n";
   }
+  // The window follows the theory's crossovers; one read off the curve may fall inside it.
+  const auto& c = r.particles->cooling.crossovers;
+  for (const auto& [name, t] : {std::pair{"t_dissip", c.t_dissip}, std::pair{"t_stick", c.t_stick}})
+    if (t > fit.t_min && t < fit.t_max)
+      out << "- The measured " << name << " = " << brief(t)
+          << " lies inside the fit window: the fit may span the "
+          << "crossover the curve shows there, and its exponent mix two regimes.\n";
 }
 
 void cooling_part(std::ostream& out, const RunResults& r) {
@@ -83,14 +91,10 @@ void cooling_part(std::ostream& out, const RunResults& r) {
   }
   const auto& c = a.crossovers;
   out << "## Cooling law\n\n";
-  if (!a.fit) out << "- T ~ t^a: not fitted (" << a.not_determined << ").\n";
-  if (a.fit) fit_lines(out, r, *a.fit);
-  // The window follows the theory's crossovers; one read off the curve may fall inside it.
-  for (const auto& [name, t] : {std::pair{"t_dissip", c.t_dissip}, std::pair{"t_stick", c.t_stick}})
-    if (a.fit && t > a.fit->t_min && t < a.fit->t_max)
-      out << "- The measured " << name << " = " << brief(t)
-          << " lies inside the fit window: the fit may span the "
-          << "crossover the curve shows there, and its exponent mix two regimes.\n";
+  if (a.fit)
+    fit_lines(out, r, *a.fit);
+  else
+    out << "- T ~ t^a: not fitted (" << a.not_determined << ").\n";
   const bool crossed = std::isfinite(c.t_dissip) && std::isfinite(c.t_stick);
   out << "- Crossovers read off d ln T / d ln t: t_dissip = " << brief(c.t_dissip)
       << ", t_stick = " << brief(c.t_stick) << (crossed ? "" : " (nan: not crossed in the sampled window)")
