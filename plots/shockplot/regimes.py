@@ -6,8 +6,8 @@ exponent d ln T / d ln t against the plateaus 0, -2 and -2/3 with the
 measured crossovers."""
 import matplotlib.pyplot as plt
 
-from .common import GUIDE, attr, exponent_error_text, finish, fraction, is_gas, label, theory, unit
-from .temperature import ALPHA_NAME, DATA, FIT, T_NAME, TIME_NAME, exponent_ticks
+from .common import GUIDE, attr, finish, fraction, is_gas, label, theory, unit
+from .temperature import ALPHA_NAME, DATA, FIT, T_NAME, TIME_NAME, exponent_ticks, fit_label
 
 BANDS = [("elastic", "#eeeeee"), ("homogeneous cooling", "#dde8f5"), ("sticky gas (clusters)", "#f5e6d6")]
 
@@ -46,10 +46,8 @@ def _temperature(ax, p, summary, t, T, t_stick):
     an = p["analysis"]
     if "T_fit_t" in an:
         window = an["T_fit_t"][:]
-        error = exponent_error_text(a.get("T_exponent_jackknife_error"), a.get("jackknife_realizations"))
         ax.loglog(window, an["T_fit_T"][:], "-", **FIT,
-                  label=rf"fit on [{window[0]:.3g}, {window[1]:.3g}]: $T \propto t^{{{a.get('T_exponent', float('nan')):.3f}}}$, "
-                  + error)
+                  label=fit_label(window, a.get("T_exponent", float("nan")), summary))
     ax.set_ylabel(label(T_NAME, unit(p["T"])))
     # Haff's law bends towards t^-2 between t_dissip and t_stick; it reaches it only where they lie
     # far apart (the local exponent below says how close this gas came).

@@ -19,6 +19,13 @@ def regime_times(summary):
     return a.get("t_dissip_theory"), a.get("t_stick_theory")
 
 
+def fit_label(window, exponent, summary):
+    """"fit on [a, b]: T ~ t^x, +- e (jackknife, n realizations)", or the words for no error."""
+    a = summary.get("analysis", {})
+    return (rf"fit on [{window[0]:.3g}, {window[1]:.3g}]: $T \propto t^{{{exponent:.3f}}}$, "
+            + exponent_error_text(a.get("T_exponent_jackknife_error"), a.get("jackknife_realizations")))
+
+
 def draw_fit(ax_T, ax_a, an, summary):
     """The power law fitted on the window the scene gives (analysis.T_fit_window), its line and its
     exponent as a level, with the jackknife error over realizations (none from one realization)."""
@@ -28,8 +35,7 @@ def draw_fit(ax_T, ax_a, an, summary):
     a = summary.get("analysis", {})
     exponent = a.get("T_exponent", attr(an, "T_exponent"))
     error = a.get("T_exponent_jackknife_error")
-    text = (rf"fit on [{window[0]:.3g}, {window[1]:.3g}]: $T \propto t^{{{exponent:.3f}}}$, "
-            + exponent_error_text(error, a.get("jackknife_realizations")))
+    text = fit_label(window, exponent, summary)
     ax_T.plot(window, ends, "-", **FIT, label=text)
     ax_a.plot(window, [exponent, exponent], "-", **FIT, label=text)
     if error is not None:
