@@ -1,5 +1,6 @@
 #include "shockgas/core/bodies.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "shockgas/core/error.hpp"
@@ -46,6 +47,23 @@ double temperature(const Bodies& b) {
     s += b.m[i] * dv * dv;
   }
   return s / m;
+}
+
+void TemperatureSums::add(const double* v, const double* m, std::size_t count) {
+  if (count == 0) return;
+  if (!shifted_) shift_ = v[0], shifted_ = true;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double dv = v[i] - shift_;
+    mass_ += m[i];
+    first_ += m[i] * dv;
+    second_ += m[i] * dv * dv;
+  }
+}
+
+double TemperatureSums::temperature() const {
+  if (mass_ <= 0) return 0;
+  const double mean = first_ / mass_;
+  return std::max(0.0, second_ / mass_ - mean * mean);
 }
 
 }  // namespace shockgas

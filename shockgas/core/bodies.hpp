@@ -50,4 +50,18 @@ double kinetic_energy(const Bodies& b);
 // Mass-weighted temperature T = <v^2> - <v>^2.
 double temperature(const Bodies& b);
 
+// The same temperature in one pass, as bodies go by in chunks (a run that
+// draws its bodies once): sums of m, m (v - K) and m (v - K)^2 about the
+// first velocity K, T = S2 / M - (S1 / M)^2. Equal to temperature() to
+// rounding (the shift keeps it where <v> >> sqrt(T)), not bit for bit.
+class TemperatureSums {
+ public:
+  void add(const double* v, const double* m, std::size_t count);
+  double temperature() const;
+
+ private:
+  bool shifted_ = false;
+  double shift_ = 0, mass_ = 0, first_ = 0, second_ = 0;
+};
+
 }  // namespace shockgas

@@ -86,26 +86,13 @@ InitialStream stream_realization(const InitialCondition& initial, std::uint64_t 
   return InitialStream(initial.params(), k, parts);
 }
 
-// Two passes, as temperature(): the mass and momentum, then m (v - mean)^2.
 double initial_temperature(const InitialCondition& initial, std::uint64_t k) {
-  double mass = 0, momentum = 0;
-  constexpr InitialStream::Parts velocities = InitialStream::Parts::velocities;
-  InitialStream first = stream_realization(initial, k, velocities);
-  read_in_chunks(first, [&](const double*, const double* v, const double* m, std::size_t count) {
-    for (std::size_t i = 0; i < count; ++i) mass += m[i];
-    for (std::size_t i = 0; i < count; ++i) momentum += m[i] * v[i];
+  TemperatureSums sums;
+  InitialStream drawn = stream_realization(initial, k, InitialStream::Parts::velocities);
+  read_in_chunks(drawn, [&](const double*, const double* v, const double* m, std::size_t count) {
+    sums.add(v, m, count);
   });
-  if (mass <= 0) return 0;
-  const double mean = momentum / mass;
-  double s = 0;
-  InitialStream second = stream_realization(initial, k, velocities);
-  read_in_chunks(second, [&](const double*, const double* v, const double* m, std::size_t count) {
-    for (std::size_t i = 0; i < count; ++i) {
-      const double dv = v[i] - mean;
-      s += m[i] * dv * dv;
-    }
-  });
-  return s / mass;
+  return sums.temperature();
 }
 
 }  // namespace shockgas

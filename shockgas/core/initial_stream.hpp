@@ -68,9 +68,10 @@ void read_in_chunks(InitialStream& stream, F&& f, std::size_t chunk = 4096) {
   }
 }
 
-// Mass-weighted temperature <v^2> - <v>^2 of realization k, as
-// temperature(make_initial_bodies(...)) bit for bit (the same sums in the same
-// order), without a whole copy.
+// Mass-weighted temperature <v^2> - <v>^2 of realization k, as a run of it
+// finds it (RunResult::initial_temperature), bit for bit: TemperatureSums over
+// its bodies in order, held or drawn in chunks, without a whole copy (equal to
+// temperature(make_initial_bodies(...)) to rounding).
 double initial_temperature(const InitialCondition& initial, std::uint64_t k);
 
 // Realization k of `initial` a chunk at a time without a whole copy: read from

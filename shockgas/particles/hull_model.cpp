@@ -65,25 +65,34 @@ RunResult simulate_hull(const Bodies& initial, double L, bool ring, const Partic
     return ring ? StickyHull::ring(initial, L, t) : StickyHull::line(initial, t);
   };
   const double mean_mass = total_mass(initial) / static_cast<double>(initial.size());
-  return run_hull(
+  RunResult out = run_hull(
       initial.size(), mean_mass, build, [energy] { return energy; }, L, ring, p, sink);
+  TemperatureSums sums;
+  sums.add(initial.v.data(), initial.m.data(), initial.size());
+  out.initial_temperature = sums.temperature();
+  return out;
 }
 
-// The kinetic energy is summed as the bodies pass, in their order (as kinetic_energy).
+// The kinetic energy is summed as the bodies pass, in their order (as
+// kinetic_energy), and their temperature (TemperatureSums).
 RunResult simulate_hull(InitialStream& initial, double L, bool ring, const ParticleParams& p,
                         const StateSink* sink) {
   double energy = 0;
+  TemperatureSums temperature;
   const StickyHull::Chunks read = [&](std::size_t count, double* x, double* v, double* m) {
     initial.next(count, x, v, m);
     for (std::size_t i = 0; i < count; ++i) energy += 0.5 * m[i] * v[i] * v[i];
+    temperature.add(v, m, count);
   };
   const std::size_t n = initial.size();
   const double mean_mass = initial.mean_mass();
   auto build = [&](double t) {
     return ring ? StickyHull::ring(n, read, L, t) : StickyHull::line(n, read, t);
   };
-  return run_hull(
+  RunResult out = run_hull(
       n, mean_mass, build, [&energy] { return energy; }, L, ring, p, sink);
+  if (out.stop.reason != StopReason::interrupted) out.initial_temperature = temperature.temperature();
+  return out;
 }
 
 }  // namespace shockgas::particles::detail

@@ -115,6 +115,10 @@ struct RunResult {
   ScaledHistogram histogram;        // empty unless params.histogram_bins > 0
   SpaceTime spacetime;              // empty unless params.spacetime
   RunStop stop;
+  // Temperature of the bodies the run started from, TemperatureSums over them
+  // in order as they were drawn or read (a resumed run draws them again), as
+  // initial_temperature() (initial_stream.hpp); nullopt in a run never started.
+  std::optional<double> initial_temperature;
   std::uint64_t collisions = 0;  // total collisions (hull solver: merges)
   double wall_seconds = 0;       // wall-clock time of the run [s]
   RunSchedule schedule;          // event solver only

@@ -218,11 +218,20 @@ RunResult run_stream(InitialStream& stream, double L, const Bodies* bodies, cons
                      const RunCheckpoints& checkpoints) {
   const bool equal = !bodies || equal_masses(*bodies);
   check_schedule(stream.size(), equal, p);
+  TemperatureSums drawn;
   auto fill = [&](std::size_t, std::size_t count, double* x, double* v, double* m) {
     stream.next(count, x, v, m);
+    drawn.add(v, m, count);
   };
-  return run_events(stream.size(), fill, L, p.geometry == Geometry::ring, equal, stream.mean_mass(), p,
-                    progress, sink, checkpoints);
+  RunResult out = run_events(stream.size(), fill, L, p.geometry == Geometry::ring, equal, stream.mean_mass(),
+                             p, progress, sink, checkpoints);
+  // A resumed run drew nothing: its bodies are drawn again for their temperature alone.
+  if (checkpoints.resume)
+    read_in_chunks(stream, [&](const double*, const double* v, const double* m, std::size_t count) {
+      drawn.add(v, m, count);
+    });
+  out.initial_temperature = drawn.temperature();
+  return out;
 }
 
 // The hull solver has no safe points inside a run (run_state.hpp).

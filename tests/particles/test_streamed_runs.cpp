@@ -10,6 +10,7 @@
 #include <new>
 
 #include "shockgas/core/initial_condition.hpp"
+#include "shockgas/core/initial_stream.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 // Live heap bytes of this test program and their peak (operator new and
@@ -87,6 +88,35 @@ TEST(StreamedRuns, EngineAndHullGiveTheHeldBodiesResults) {
       p.threads = 1;
       for (std::uint64_t k : {0u, 2u}) expect_same_run(simulate(streamed, k, p), simulate(held, k, p));
     }
+}
+
+// A run's initial temperature is that of the bodies it drew, summed as they
+// were drawn (TemperatureSums): the same bits from held bodies, and as
+// initial_temperature(). The bound against temperature()'s two passes: the
+// sums' rounding, N eps, times their cancellation (T + (<v> - v_0)^2) / T <= 13
+// for uniform velocities, N = 4000: 6e-12.
+TEST(StreamedRuns, TheInitialTemperatureIsThatOfTheBodiesDrawn) {
+  const InitialParams ip = gas(4000);
+  const InitialCondition held(ip, Keep::bodies), streamed(ip, Keep::stream);
+  for (ParticleSolver solver : {ParticleSolver::events, ParticleSolver::hull}) {
+    SCOPED_TRACE(name_of(solver));
+    ParticleParams p;
+    p.solver = solver;
+    p.r = solver == ParticleSolver::hull ? 0.0 : 0.9;
+    p.t_end = 10;
+    p.threads = 1;
+    for (std::uint64_t k : {0u, 2u}) {
+      const double exact = temperature(make_initial_bodies(ip, k));
+      const RunResult drawn = simulate(streamed, k, p);
+      ASSERT_TRUE(drawn.initial_temperature.has_value());
+      EXPECT_NEAR(*drawn.initial_temperature, exact, 6e-12 * exact);
+      EXPECT_NE(*drawn.initial_temperature, temperature(make_initial_bodies(ip, k + 1)));
+    }
+    const RunResult whole = simulate(held, 0, p);
+    ASSERT_TRUE(whole.initial_temperature.has_value());
+    EXPECT_EQ(*whole.initial_temperature, *simulate(streamed, 0, p).initial_temperature);
+    EXPECT_EQ(*whole.initial_temperature, initial_temperature(streamed, 0));
+  }
 }
 
 // The hull keeps 20 bytes per run (its arrays are sized for N runs), nothing of

@@ -69,9 +69,14 @@ std::vector<Declaration> provenance_and_initial() {
           initial([](const InitialCondition& c) { return name_of(c.params().velocities); })),
       key(i, "initial.seed", "", as_used("initial", "seed"), "",
           initial([](const InitialCondition& c) { return c.params().seed; })),
-      key(i, "initial.temperature", "length^2/time^2", "temperature of realization 0", "when particles run",
+      // Written with the particles' part: as realization 0 summed it while drawing
+      // its bodies, else (a run resumed from a saved state) drawn again.
+      key(Part::particles, "initial.temperature", "length^2/time^2", "temperature of realization 0",
+          "when particles run",
           [](const RunResults& r, Emitter& out) {
-            if (r.initial && r.scene->has_particles) out.json(initial_temperature(*r.initial, 0));
+            if (!r.initial || !r.particles) return;
+            const std::optional<double>& drawn = r.particles->ensemble.first.initial_temperature;
+            out.json(drawn ? *drawn : initial_temperature(*r.initial, 0));
           }),
   };
 }

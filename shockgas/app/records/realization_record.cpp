@@ -77,6 +77,8 @@ RecordFields to_fields(const RunResult& run) {
   f.emplace_back("collisions", std::vector<double>{static_cast<double>(run.collisions >> 32),
                                                    static_cast<double>(run.collisions & 0xFFFFFFFFu)});
   f.emplace_back("wall_seconds", std::vector<double>{run.wall_seconds});
+  if (run.initial_temperature)
+    f.emplace_back("initial_temperature", std::vector<double>{*run.initial_temperature});
   f.emplace_back("schedule/threads", std::vector<double>{static_cast<double>(run.schedule.threads)});
   f.emplace_back("schedule/order", text_codes(run.schedule.order));
   f.emplace_back("schedule/why_global", text_codes(run.schedule.why_global));
@@ -113,6 +115,7 @@ RunResult from_fields(const RecordFields& fields) {
   run.collisions =
       (static_cast<std::uint64_t>(collisions[0]) << 32) | static_cast<std::uint64_t>(collisions[1]);
   run.wall_seconds = in.numbers("wall_seconds", 1)[0];
+  if (in.has("initial_temperature")) run.initial_temperature = in.numbers("initial_temperature", 1)[0];
   run.schedule.threads = static_cast<std::size_t>(in.numbers("schedule/threads", 1)[0]);
   run.schedule.order = from_codes(in.array("schedule/order"));
   run.schedule.why_global = from_codes(in.array("schedule/why_global"));
