@@ -221,6 +221,28 @@ double uncompressed_under(const fs::path& dir) {
 // factor 2 (a run that fits must not be refused; the plots' share varies with
 // the pictures' content, and realization 0's states, counted while their file
 // lies beside the results, are gone when they are written: the hull case, 1.8).
+// Realization 0's final state goes to its state file only where result.h5
+// keeps it (output.final; auto: up to kStoredStateBodies bodies): beyond, the
+// file holds its heaviest cluster alone (state_file.hpp), and the disk it
+// needs is not asked for. N = 10^7 particles alone once asked 240 MB for it.
+TEST(Resources, AFinalStateResultH5DoesNotKeepAsksNoDisk) {
+  const fs::path root = fresh_dir("resources-final-state");
+  write_text(root / "big.toml", "[initial]\nN = 10000000\n[particles]\nt_end = 10\n");
+  const auto states = [](const Scene& scene) {
+    double bytes = 0;
+    for (const auto& i : estimate_disk(scene, false).items)
+      if (i.what.find("realization 0's states") != std::string::npos) bytes += i.bytes;
+    return bytes;
+  };
+  const Scene automatic = load_scene((root / "big.toml").string(), {});
+  const Scene always = load_scene((root / "big.toml").string(), {"output.final=always"});
+  const Scene kept_small = load_scene((root / "big.toml").string(), {"initial.N=50000"});
+  // auto: a final state of at most kStoredStateBodies (merged bodies, r = 0), and the heaviest cluster.
+  EXPECT_LE(states(automatic), (kStoredStateBodies + 1) * kBodyBytes);
+  EXPECT_GE(states(always), 1e7 * kBodyBytes);
+  EXPECT_GE(states(kept_small), 5e4 * kBodyBytes);
+}
+
 TEST(Resources, TheDiskEstimateHoldsAgainstWrittenDirectories) {
   const fs::path root = fresh_dir("resources-disk");
   struct Case {

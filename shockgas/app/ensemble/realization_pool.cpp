@@ -68,12 +68,18 @@ struct RealizationPool::State {
     // Its states file, from where its save left it if resumed (the snapshots
     // taken before the save are there, not in the save).
     std::optional<StateFileWriter> states;
-    if (item.index == 0 && !states_dir.empty() && keeps_states_apart(plan->scene(item.ensemble))) {
+    const Scene& scene = plan->scene(item.ensemble);
+    if (item.index == 0 && !states_dir.empty() && keeps_states_apart(scene)) {
+      // The final state only where result.h5 keeps it; its heaviest cluster always.
+      FinalStateUse use{[keep = scene.output.final_state](std::size_t n) { return keeps_state(keep, n); },
+                        [&scene, length = ic.length()](double t, const particles::StateReader& state) {
+                          return heaviest_final_cluster(scene, length, t, state);
+                        }};
       const std::optional<std::string> resumed = saves ? saves->resumed_sink() : std::nullopt;
       if (resumed)  // beside the checkpoint it was saved with
-        states.emplace(state_file_path(checkpoints->dir(), item.ensemble), *resumed);
+        states.emplace(state_file_path(checkpoints->dir(), item.ensemble), *resumed, std::move(use));
       else
-        states.emplace(state_file_path(states_dir, item.ensemble));
+        states.emplace(state_file_path(states_dir, item.ensemble), std::move(use));
       if (saves)
         saves->attach_sink([&states, dir = checkpoints->dir()] {
           states->move_to(dir);  // a checkpoint refers to it from now on

@@ -148,8 +148,9 @@ std::vector<Declaration> records() {
                      if (!r.particles) return;
                      const KeepState keep = r.scene->output.final_state;
                      if (const auto& stored = r.particles->states) {
-                       if (keeps_state(keep, stored->final_state().size()))
-                         put(StoredColumns(stored->final_state()), {});
+                       const auto* final_state = stored->final_state();
+                       if (final_state && keeps_state(keep, final_state->size()))
+                         put(StoredColumns(*final_state), {});
                      } else if (keeps_state(keep, r.particles->ensemble.first.final_state.size())) {
                        put(HeldColumns(r.particles->ensemble.first.final_state), {});
                      }

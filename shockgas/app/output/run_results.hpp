@@ -13,6 +13,7 @@
 
 #include "shockgas/app/output/frames.hpp"
 #include "shockgas/app/output/statistics_files.hpp"
+#include "shockgas/app/records/final_cluster.hpp"
 #include "shockgas/app/records/realization_record.hpp"
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/compare/field_distance.hpp"
@@ -46,7 +47,7 @@ struct ParticleResults {
   std::shared_ptr<const StoredStates> states;
   // Realization 0's heaviest cluster at the end, by the comparison's cluster
   // criteria (summary: analysis.heaviest_cluster_*); none without an initial condition.
-  std::optional<particles::Cluster> heaviest;
+  std::optional<HeaviestCluster> heaviest;
   std::vector<particles::Snapshot> frames;  // realization 0 at the animation's frame times (frames.hpp)
   compare::ZHistogram histogram;            // the ensemble-mean scaled histogram (empty: bins = 0)
   compare::CoolingAnalysis cooling;

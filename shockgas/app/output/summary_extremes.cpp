@@ -10,7 +10,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Emit cluster(double particles::Cluster::*field) {
+Emit cluster(double HeaviestCluster::*field) {
   return [field](const RunResults& r, Emitter& out) {
     if (r.particles && r.particles->heaviest) out.json((*r.particles->heaviest).*field);
   };
@@ -39,10 +39,10 @@ std::vector<Declaration> extreme_keys() {
               }),
           compare::Law::crossovers, "-2 (homogeneous cooling, as eps -> 0)"),
       key(a, "analysis.heaviest_cluster_x", "length", "position of the heaviest cluster at the end", "",
-          cluster(&particles::Cluster::x)),
-      key(a, "analysis.heaviest_cluster_m", "mass", "its mass", "", cluster(&particles::Cluster::m)),
+          cluster(&HeaviestCluster::x)),
+      key(a, "analysis.heaviest_cluster_m", "mass", "its mass", "", cluster(&HeaviestCluster::m)),
       key(a, "analysis.heaviest_cluster_v", "length/time", "its velocity (momentum / mass)", "",
-          cluster(&particles::Cluster::v)),
+          cluster(&HeaviestCluster::v)),
       key(c, "continuum.{solver}.heaviest_shock_x", "length", "position of the shock holding the most mass",
           heavy, shock(&continuum::Shock::x)),
       key(c, "continuum.{solver}.heaviest_shock_mass", "mass",

@@ -93,16 +93,18 @@ void remove_state_files(const fs::path& dir) {
 
 // ---- Writing ----
 
-StateFileWriter::StateFileWriter(fs::path path)
-    : path_(std::move(path)), temporary_(path_.string() + ".tmp") {  // states_in_progress_path
+StateFileWriter::StateFileWriter(fs::path path, FinalStateUse use)
+    : path_(std::move(path)),
+      temporary_(path_.string() + ".tmp"),
+      use_(std::move(use)) {  // states_in_progress_path
   fd_ = open_new_file(temporary_);
   if (fd_ < 0) throw RunError(write_failure(temporary_, reason()));
   sink_.snapshot = [this](std::size_t k, double t, const particles::StateReader& s) { append(k, t, s); };
-  sink_.final_state = [this](double t, const particles::StateReader& s) { append(kFinalState, t, s); };
+  sink_.final_state = [this](double t, const particles::StateReader& s) { append_final(t, s); };
 }
 
-StateFileWriter::StateFileWriter(fs::path path, const std::string& saved)
-    : path_(std::move(path)), temporary_(path_.string() + ".tmp"), kept_(true) {
+StateFileWriter::StateFileWriter(fs::path path, const std::string& saved, FinalStateUse use)
+    : path_(std::move(path)), temporary_(path_.string() + ".tmp"), use_(std::move(use)), kept_(true) {
   const auto bad = [&](const std::string& why) {
     return InputError("--resume", to_text(temporary_.string()),
                       "the states file of the saved run, as it was at the save (" + why + ")");
@@ -120,7 +122,7 @@ StateFileWriter::StateFileWriter(fs::path path, const std::string& saved)
     throw bad("shorter than the save says, or not writable");
   }
   sink_.snapshot = [this](std::size_t k, double t, const particles::StateReader& s) { append(k, t, s); };
-  sink_.final_state = [this](double t, const particles::StateReader& s) { append(kFinalState, t, s); };
+  sink_.final_state = [this](double t, const particles::StateReader& s) { append_final(t, s); };
 }
 
 StateFileWriter::~StateFileWriter() {
@@ -177,6 +179,15 @@ void StateFileWriter::append(std::uint64_t k, double t, const particles::StateRe
   if (at != n) throw RunError("state of " + std::to_string(n) + " bodies read with " + std::to_string(at));
   end_ = base + 3 * n * 8;
   index_.push_back({k, t, n, base, {sum[0].value(), sum[1].value(), sum[2].value()}});
+}
+
+void StateFileWriter::append_final(double t, const particles::StateReader& state) {
+  if (use_.heaviest)
+    if (const std::optional<HeaviestCluster> h = use_.heaviest(t, state)) {
+      const Bodies one{{h->x}, {h->v}, {h->m}};
+      append(kHeaviestCluster, t, particles::BodiesReader(one));
+    }
+  if (!use_.keep || use_.keep(state.size())) append(kFinalState, t, state);
 }
 
 void StateFileWriter::commit() {
@@ -279,12 +290,15 @@ std::shared_ptr<const StoredStates> StoredStates::open(const fs::path& path) {
     if (e.offset > index || e.n > (index - e.offset) / 24) throw damaged("a state beyond its data");
     if (e.k == kFinalState)
       s->final_.push_back(State(s.get(), "the final state", e));
+    else if (e.k == kHeaviestCluster && e.n == 1)
+      s->heaviest_.push_back(State(s.get(), "the heaviest cluster", e));
     else if (e.k == s->snapshots_.size())
       s->snapshots_.push_back(State(s.get(), "snapshot " + std::to_string(e.k), e));
     else
       throw damaged("snapshot " + std::to_string(e.k) + " out of order");
   }
-  if (s->final_.size() != 1) throw damaged("no final state");
+  if (s->final_.size() > 1 || s->heaviest_.size() > 1) throw damaged("two final states");
+  if (s->final_.empty() && s->heaviest_.empty()) throw damaged("no final state");
   return s;
 }
 
@@ -295,7 +309,8 @@ std::optional<std::string> StoredStates::problem(const fs::path& path) noexcept 
       for (int c = 0; c < 3; ++c) state.read_column(c, [](const double*, std::size_t) {});
     };
     for (const State& state : file->snapshots_) read_all(state);
-    read_all(file->final_state());
+    for (const State& state : file->final_) read_all(state);
+    for (const State& state : file->heaviest_) read_all(state);
     return std::nullopt;
   } catch (const std::exception& e) {
     return std::string(e.what());
@@ -319,7 +334,10 @@ std::optional<std::string> StoredStates::saved_problem(const fs::path& temporary
       if (e.offset > save->end || e.n > (save->end - e.offset) / 24)
         return "state file " + temporary.string() + " is damaged: its save lists a state beyond its data";
       const State state(file.get(),
-                        e.k == kFinalState ? "the final state" : "snapshot " + std::to_string(e.k), e);
+                        e.k == kFinalState        ? "the final state"
+                        : e.k == kHeaviestCluster ? "the heaviest cluster"
+                                                  : "snapshot " + std::to_string(e.k),
+                        e);
       for (int c = 0; c < 3; ++c) state.read_column(c, [](const double*, std::size_t) {});
     }
     return std::nullopt;
@@ -328,6 +346,15 @@ std::optional<std::string> StoredStates::saved_problem(const fs::path& temporary
   } catch (...) {
     return "unreadable";
   }
+}
+
+std::optional<HeaviestCluster> StoredStates::heaviest_cluster() const {
+  if (heaviest_.empty()) return std::nullopt;
+  HeaviestCluster h;
+  heaviest_[0].read([&](const double* x, const double* v, const double* m, std::size_t) {
+    h = {x[0], v[0], m[0]};
+  });
+  return h;
 }
 
 StoredStates::~StoredStates() { ::close(fd_); }

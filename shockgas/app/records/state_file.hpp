@@ -17,7 +17,8 @@
 // (checkpointer.hpp): a run that ends without one does not wait for it.
 // Its contents, numbers in the machine's byte order:
 //   per state, in the order reached: x[n], v[n], m[n] (float64),
-//   the index: per state its snapshot number (kFinalState for the final state),
+//   the index: per state its snapshot number (kFinalState for the final state,
+//   kHeaviestCluster for its heaviest cluster, one body: x = centre of mass),
 //   t (float64), n and the offset of its x (u64), and a checksum of each of
 //   its three columns (StreamHash of their bytes, u64),
 //   the state count (u64), the offset of the index (u64), kStateFileMagic.
@@ -27,11 +28,13 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "shockgas/app/records/final_cluster.hpp"
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/particles/state_sink.hpp"
 
@@ -39,6 +42,7 @@ namespace shockgas::app {
 
 inline constexpr std::uint64_t kStateFileMagic = 0x3273657461747367;  // "gstates2"
 inline constexpr std::uint64_t kFinalState = ~std::uint64_t{0};       // the index's k of the final state
+inline constexpr std::uint64_t kHeaviestCluster = kFinalState - 1;    // ... and of its heaviest cluster
 
 // One state's entry in the index (7 words: k, t, n, offset, the three sums).
 struct StateFileEntry {
@@ -72,17 +76,26 @@ void remove_state_files(const std::filesystem::path& dir);
 // fsync of a committed state file; RunError naming it if that fails.
 void sync_state_file(const std::filesystem::path& path);
 
+// What a StateFileWriter keeps of the final state it is handed: the state
+// whole when keep(n) says so for its n bodies (always, without keep), and its
+// heaviest cluster, heaviest(t, state), either way (none, without heaviest).
+// A final state that result.h5 does not keep then never reaches the disk.
+struct FinalStateUse {
+  std::function<bool(std::size_t bodies)> keep;
+  std::function<std::optional<HeaviestCluster>(double t, const particles::StateReader& state)> heaviest;
+};
+
 // Writes the states handed to sink() into the file under a temporary name;
 // commit() makes it the file. Without commit() the destructor removes it.
 // RunError naming the file and the system's reason when a write fails.
 class StateFileWriter {
  public:
-  explicit StateFileWriter(std::filesystem::path path);
+  explicit StateFileWriter(std::filesystem::path path, FinalStateUse use = {});
   // Goes on with the temporary file of a run saved while it ran
   // (run_state_file.hpp): the states `saved` (what saved() returned then)
   // lists are kept, anything written after them dropped. InputError (key
   // "--resume") naming the file when it is missing or shorter than they say.
-  StateFileWriter(std::filesystem::path path, const std::string& saved);
+  StateFileWriter(std::filesystem::path path, const std::string& saved, FinalStateUse use = {});
   ~StateFileWriter();
   StateFileWriter(const StateFileWriter&) = delete;
   StateFileWriter& operator=(const StateFileWriter&) = delete;
@@ -102,12 +115,14 @@ class StateFileWriter {
 
  private:
   void append(std::uint64_t k, double t, const particles::StateReader& state);
+  void append_final(double t, const particles::StateReader& state);
   void write_at(std::uint64_t offset, const void* data, std::size_t bytes);
 
   std::filesystem::path path_, temporary_;
   int fd_ = -1;
   std::uint64_t end_ = 0;  // bytes written
   std::vector<StateFileEntry> index_;
+  FinalStateUse use_;
   particles::StateSink sink_;
   bool kept_ = false;  // a save refers to the temporary file
 };
@@ -151,7 +166,10 @@ class StoredStates {
   StoredStates(const StoredStates&) = delete;
   StoredStates& operator=(const StoredStates&) = delete;
 
-  const State& final_state() const { return final_.at(0); }
+  // The final state, where it was kept (FinalStateUse::keep); else null.
+  const State* final_state() const { return final_.empty() ? nullptr : &final_[0]; }
+  // Its heaviest cluster, where one was written (FinalStateUse::heaviest).
+  std::optional<HeaviestCluster> heaviest_cluster() const;
   const std::vector<State>& snapshots() const { return snapshots_; }  // in order of k
 
  private:
@@ -160,7 +178,7 @@ class StoredStates {
 
   std::filesystem::path path_;
   int fd_;
-  std::vector<State> final_, snapshots_;
+  std::vector<State> final_, heaviest_, snapshots_;
 };
 
 }  // namespace shockgas::app

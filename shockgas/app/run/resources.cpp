@@ -181,10 +181,10 @@ std::vector<ResourceItem> single_disk(const Scene& s, bool plots) {
                        "the final clusters of every realization (at most N / 2 each)",
                        particles::final_clusters_bound(p, s.initial.N),
                        {"initial.N", "particles.realizations"}});
-    if (keeps_states_apart(s))
+    if (keeps_states_apart(s))  // the states result.h5 keeps, and the final state's heaviest cluster
       items.push_back({"initial.N",
                        "realization 0's states in their file beside the results until they are written",
-                       (1 + d(p.snapshots.size())) * N * kBodyBytes});
+                       (final_bodies + d(p.snapshots.size()) * N + 1) * kBodyBytes});
   }
   const double cells = d(s.continuum.cells);
   if (s.has_continuum)

@@ -47,18 +47,19 @@ void split_frames(ParticleResults& r, const Scene& scene, const std::vector<doub
   snaps = std::move(own);
 }
 
-// The heaviest cluster of realization 0's final state, streamed: the clusters
-// are not collected (40 bytes each, up to one per body), and a state kept
-// apart is read from its file in chunks.
-std::optional<particles::Cluster> heaviest_cluster(const ParticleResults& r, const Scene& s,
-                                                   const InitialCondition& initial) {
+// The heaviest cluster of realization 0's final state: as its states file
+// holds it (written as the state went by), else found in the state, held or
+// read from that file in chunks.
+std::optional<HeaviestCluster> heaviest_cluster(const ParticleResults& r, const Scene& s,
+                                                const InitialCondition& initial) {
   const auto& end = r.ensemble.first;
-  const double spacing = initial.length() / static_cast<double>(s.initial.N);
-  const auto criteria =
-      compare::snapshot_params(s.compare, s.particles.r, s.particles.delta, spacing, end.stop.time).clusters;
-  const double L = s.particles.geometry == particles::Geometry::ring ? initial.length() : 0.0;
-  if (r.states) return compare::heaviest_cluster(r.states->final_state(), L, criteria);
-  return compare::heaviest_cluster(particles::BodiesReader(end.final_state), L, criteria);
+  if (r.states) {
+    if (auto h = r.states->heaviest_cluster()) return h;
+    if (const auto* kept = r.states->final_state())
+      return heaviest_final_cluster(s, initial.length(), end.stop.time, *kept);
+    return std::nullopt;
+  }
+  return heaviest_final_cluster(s, initial.length(), end.stop.time, particles::BodiesReader(end.final_state));
 }
 
 }  // namespace
