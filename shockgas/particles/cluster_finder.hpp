@@ -51,8 +51,9 @@ struct Cluster {
 std::vector<Cluster> find_clusters(const Bodies& b, double L, const ClusterCriteria& c);
 
 // The clusters of find_clusters(state, L, c), bit for bit and in the same
-// order, handed to visit one at a time from a state read in chunks (three
-// reads on a ring, one on a line), never held whole. The state must be what
+// order, handed to visit one at a time from a state read in chunks (one read
+// on a line, and on a ring where the state knows its last body; else three),
+// never held whole. The state must be what
 // find_clusters accepts (sorted; ring: in [0, L)); the criteria are checked.
 void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c,
                     const std::function<void(const Cluster&)>& visit);

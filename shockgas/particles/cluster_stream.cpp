@@ -4,10 +4,16 @@
 //
 // find_clusters starts the walk at the first body whose left neighbour is not
 // joined to it (ring), so the cluster across the wrap comes last and sums its
-// members from its first body past N - 1 round to the start. Streamed: a first
-// read finds the start; a second walks from it to N - 1; a third adds the
-// bodies before the start (unrolled by + L) to the last cluster.
+// members from its first body past N - 1 round to the start. Streamed: where
+// the state knows its last body (StateReader::last), one read: body 0 and the
+// last settle the wrap, the start is the first break, and the bodies before it
+// wait (at most kHeldBeforeStart) for the last cluster. Otherwise a first read
+// finds the start; a second walks from it to N - 1; a third adds the bodies
+// before the start (unrolled by + L) to the last cluster.
+#include <array>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "shockgas/core/error.hpp"
 #include "shockgas/particles/cluster_finder.hpp"
@@ -41,13 +47,10 @@ std::size_t ring_start(const StateReader& state, double L, const ClusterCriteria
   return c.joins(x0 + L - x_last, v0 - v_last) ? first_break : 0;
 }
 
-}  // namespace
-
-void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c,
-                    const std::function<void(const Cluster&)>& visit) {
-  detail::require_cluster_inputs(L, c);
-  if (state.size() == 0) return;
-  const std::size_t start = L > 0 ? ring_start(state, L, c) : 0;
+// The walk from `start` (ring_start), the bodies before it unrolled by + L
+// into the last cluster, read from the state once more.
+void walk_from(const StateReader& state, double L, const ClusterCriteria& c, std::size_t start,
+               const std::function<void(const Cluster&)>& visit) {
   detail::ClusterSums sums;
   double x_last = 0, v_last = 0;
   each_body(state, [&](std::size_t i, double x, double v, double m) {
@@ -66,6 +69,65 @@ void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c
       if (i < start) sums.add(x + L, v, m);
     });
   visit(sums.done(L));
+}
+
+// Bodies before the start that one read holds back for the cluster across the
+// wrap (24 bytes each: 1.5 MiB); past them the walk reads again.
+constexpr std::size_t kHeldBeforeStart = std::size_t{1} << 16;
+
+// The same walk in one read where the state knows its last body: on a ring
+// that body settles the wrap first (whether body 0 joins it), so the start is
+// known at the first break, and the bodies before it wait in a buffer.
+bool walk_once(const StateReader& state, double L, const ClusterCriteria& c,
+               const std::function<void(const Cluster&)>& visit) {
+  const std::optional<std::array<double, 3>> last = state.last();
+  if (L > 0 && !last) return false;
+  bool wraps = false;  // body 0 joins the last across the wrap: start at the first break
+  bool started = false, overflow = false;
+  std::vector<std::array<double, 3>> before;
+  detail::ClusterSums sums;
+  double x_last = 0, v_last = 0;
+  each_body(state, [&](std::size_t i, double x, double v, double m) {
+    if (i == 0) wraps = L > 0 && state.size() > 1 && c.joins(x + L - (*last)[0], v - (*last)[1]);
+    if (!wraps || started) {
+      if (!started) {
+        sums.start(i, x, v), started = true;
+      } else if (!c.joins(x - x_last, v - v_last)) {
+        visit(sums.done(L));
+        sums.start(i, x, v);
+      }
+      sums.add(x, v, m);
+    } else if (i > 0 && !c.joins(x - x_last, v - v_last)) {  // the first break: the start
+      sums.start(i, x, v), started = true;
+      sums.add(x, v, m);
+    } else if (before.size() < kHeldBeforeStart) {
+      before.push_back({x, v, m});
+    } else {
+      overflow = true;
+    }
+    x_last = x, v_last = v;
+  });
+  if (overflow) return false;
+  if (!started) {  // a ring joined all round: one cluster from body 0
+    sums.start(0, before[0][0], before[0][1]);
+    for (const auto& [x, v, m] : before) sums.add(x, v, m);
+  } else {
+    for (const auto& [x, v, m] : before) sums.add(x + L, v, m);
+  }
+  visit(sums.done(L));
+  return true;
+}
+
+}  // namespace
+
+void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c,
+                    const std::function<void(const Cluster&)>& visit) {
+  detail::require_cluster_inputs(L, c);
+  if (state.size() == 0) return;
+  // A walk cut short by too many bodies before the start visited nothing yet:
+  // it visits only once the whole state has been read.
+  if (walk_once(state, L, c, visit)) return;
+  walk_from(state, L, c, L > 0 ? ring_start(state, L, c) : 0, visit);
 }
 
 }  // namespace shockgas::particles

@@ -159,12 +159,23 @@ Bodies sorted_bodies(const ChainView& s, double L, bool ring) {
   return stable_sorted(out);
 }
 
+// The last body from the seam is the one before it (at the seam's largest
+// drop), or the chain's last where the seam is the chain's start.
 SortedState::SortedState(const ChainView& view, double L, bool ring) : view_(view), L_(L), ring_(ring) {
   SeamSearch seam(ring);
-  for_each_wrapped(view, L, ring, [&](std::size_t, double x, double, double) { seam.add(x); });
+  std::array<double, 3> previous{}, before_drop{};
+  for_each_wrapped(view, L, ring, [&](std::size_t, double x, double v, double m) {
+    const std::size_t drop = seam.largest_drop_at();
+    seam.add(x);
+    if (seam.largest_drop_at() != drop) before_drop = previous;
+    previous = {x, v, m};
+  });
   seam_ = seam.seam();
   sorted_ = seam.sorted();
-  if (sorted_) return;
+  if (sorted_) {
+    if (view.size() > 0) last_ = seam_ > 0 ? before_drop : previous;
+    return;
+  }
   WindowedOrder trial;
   from_seam(view, L, ring, seam_,
             [&](double x, double v, double m) { trial.push(x, v, m, [](double, double, double) {}); });

@@ -8,7 +8,9 @@
 // at the wrap can leave equal neighbours misordered; then (rarely) the state is
 // sorted through a copy by a stable sort of the order from the seam. On a line
 // the order is the chain's, stably sorted where rounding left it out of order.
+#include <array>
 #include <cstddef>
+#include <optional>
 
 #include "shockgas/core/bodies.hpp"
 #include "shockgas/particles/chain_view.hpp"
@@ -37,6 +39,7 @@ class SeamSearch {
     ++k_;
   }
   std::size_t seam() const { return ring_ && drops_ > 0 && last_ <= first_ ? largest_at_ : 0; }
+  std::size_t largest_drop_at() const { return largest_at_; }
   bool sorted() const { return drops_ == 0 || (ring_ && drops_ == 1 && last_ <= first_); }
 
  private:
@@ -63,6 +66,8 @@ class SortedState final : public StateReader {
   SortedState(const ChainView& view, double L, bool ring);
   std::size_t size() const override { return view_.size(); }
   void read(const Chunk& chunk) const override;
+  // Known from the construction's pass where the order from the seam is sorted.
+  std::optional<std::array<double, 3>> last() const override { return last_; }
   // Whether read() orders the state through a sorted copy (bodies far out of
   // place: about 56 bytes per body more), not in one or two passes.
   bool through_copy() const { return !sorted_ && !windowed_; }
@@ -73,7 +78,8 @@ class SortedState final : public StateReader {
   bool ring_;
   std::size_t seam_ = 0;
   bool sorted_ = true;
-  bool windowed_ = false;  // not sorted, but WindowedOrder orders it
+  bool windowed_ = false;                      // not sorted, but WindowedOrder orders it
+  std::optional<std::array<double, 3>> last_;  // the last body read() hands out, where sorted_
 };
 
 }  // namespace shockgas::particles::detail

@@ -3,8 +3,10 @@
 // reached, in chunks, instead of as whole copies in RunResult: a file writer
 // streams them (simulate.hpp).
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <functional>
+#include <optional>
 
 #include "shockgas/core/bodies.hpp"
 
@@ -18,6 +20,9 @@ class StateReader {
   using Chunk = std::function<void(const double* x, const double* v, const double* m, std::size_t count)>;
   virtual std::size_t size() const = 0;  // bodies
   virtual void read(const Chunk& chunk) const = 0;
+  // The last body read() hands out, {x, v, m}, where the reader knows it
+  // without a read; else nullopt (then a walk that needs it reads twice).
+  virtual std::optional<std::array<double, 3>> last() const { return std::nullopt; }
 
  protected:
   ~StateReader() = default;
@@ -31,6 +36,10 @@ class BodiesReader final : public StateReader {
   void read(const Chunk& chunk) const override {
     for (std::size_t i = 0; i < b_.size(); i += 4096)
       chunk(b_.x.data() + i, b_.v.data() + i, b_.m.data() + i, std::min<std::size_t>(4096, b_.size() - i));
+  }
+  std::optional<std::array<double, 3>> last() const override {
+    if (b_.size() == 0) return std::nullopt;
+    return std::array<double, 3>{b_.x.back(), b_.v.back(), b_.m.back()};
   }
 
  private:

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -216,12 +217,20 @@ TEST(ChainObservables, MisorderedChainsFallBackToTheSortedCopy) {
   }
 }
 
-// The state read in chunks (what a StateSink gets) as the bodies of a read.
+// The state read in chunks (what a StateSink gets) as the bodies of a read;
+// the last body it tells without a read (StateReader::last), where it does,
+// is the read's last, bit for bit.
 Bodies read_whole(const StateReader& state) {
   Bodies b;
   state.read([&](const double* x, const double* v, const double* m, std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) b.push_back(x[i], v[i], m[i]);
   });
+  if (const auto last = state.last()) {
+    EXPECT_FALSE(b.size() == 0);
+    if (b.size() > 0) {
+      EXPECT_EQ(*last, (std::array<double, 3>{b.x.back(), b.v.back(), b.m.back()}));
+    }
+  }
   return b;
 }
 
@@ -290,7 +299,10 @@ TEST(SortedState, ManyOrFewBodiesBeforeTheSeamReadAsTheSortedCopy) {
       SCOPED_TRACE("start " + std::to_string(start) + (misordered ? ", misordered" : ""));
       Chain c = ring_chain_from(rng, 200000, start);
       if (misordered) c.x[150000] = std::nextafter(c.x[149999], 0.0);  // a rounding-sized drop
-      expect_bodies_equal(read_whole(SortedState(view_of(c), c.L, true)), ref_sorted(c, true));
+      const auto view = view_of(c);                                    // outlives the state, which reads it
+      const SortedState state(view, c.L, true);
+      EXPECT_EQ(state.last().has_value(), !misordered);  // known where the order from the seam is sorted
+      expect_bodies_equal(read_whole(state), ref_sorted(c, true));
     }
   }
 }

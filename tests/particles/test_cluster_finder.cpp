@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <optional>
 
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/random.hpp"
@@ -140,23 +142,35 @@ TEST(ClusterFinder, RejectsBadInput) {
   EXPECT_THROW(find_clusters(Bodies{}, -1.0, ClusterCriteria{}), InputError);
 }
 
-// A whole state read in chunks of 7, as a sink reads a model's state.
+// A whole state read in chunks of 7, as a sink reads a model's state; with
+// knows_last, telling its last body (StateReader::last: the walk in one read),
+// else not (three reads). Counts its reads.
 class ChunkedBodies final : public StateReader {
  public:
-  explicit ChunkedBodies(const Bodies& b) : b_(b) {}
+  ChunkedBodies(const Bodies& b, bool knows_last) : b_(b), knows_last_(knows_last) {}
   std::size_t size() const override { return b_.size(); }
   void read(const Chunk& chunk) const override {
+    ++reads;
     for (std::size_t i = 0; i < b_.size(); i += 7)
       chunk(&b_.x[i], &b_.v[i], &b_.m[i], std::min<std::size_t>(7, b_.size() - i));
   }
+  std::optional<std::array<double, 3>> last() const override {
+    if (!knows_last_ || b_.size() == 0) return std::nullopt;
+    return std::array<double, 3>{b_.x.back(), b_.v.back(), b_.m.back()};
+  }
+  mutable int reads = 0;
 
  private:
   const Bodies& b_;
+  bool knows_last_;
 };
 
-std::vector<Cluster> streamed(const Bodies& b, double L, const ClusterCriteria& c) {
+std::vector<Cluster> streamed(const Bodies& b, double L, const ClusterCriteria& c, bool knows_last = false,
+                              int* reads = nullptr) {
   std::vector<Cluster> out;
-  visit_clusters(ChunkedBodies(b), L, c, [&](const Cluster& k) { out.push_back(k); });
+  const ChunkedBodies state(b, knows_last);
+  visit_clusters(state, L, c, [&](const Cluster& k) { out.push_back(k); });
+  if (reads) *reads = state.reads;
   return out;
 }
 
@@ -186,18 +200,33 @@ Bodies clumpy_state(std::uint64_t seed, bool across_wrap) {
   return b;
 }
 
+// Both walks: in one read where the state tells its last body, in three where
+// it does not, and where more bodies than the one read holds back lie before
+// the ring's start (a ring joined all round: every body before it).
 TEST(ClusterFinder, StreamedClustersAreFindClustersToTheBit) {
   const ClusterCriteria c{0.5, 0.02};
-  for (std::uint64_t seed = 1; seed <= 20; ++seed)
-    for (bool wrap : {false, true}) {
-      const Bodies b = clumpy_state(seed, wrap);
-      expect_same_clusters(streamed(b, 100.0, c), find_clusters(b, 100.0, c));
-      expect_same_clusters(streamed(b, 0.0, c), find_clusters(b, 0.0, c));
-    }
-  Bodies linked;  // a fully linked ring is one cluster from body 0
-  for (int i = 0; i < 10; ++i) linked.push_back(0.1 * i, 0.0, 1.0);
-  expect_same_clusters(streamed(linked, 1.0, c), find_clusters(linked, 1.0, c));
-  EXPECT_TRUE(streamed(Bodies{}, 1.0, c).empty());
+  for (bool knows_last : {false, true}) {
+    SCOPED_TRACE(knows_last ? "one read" : "three reads");
+    for (std::uint64_t seed = 1; seed <= 20; ++seed)
+      for (bool wrap : {false, true}) {
+        const Bodies b = clumpy_state(seed, wrap);
+        int reads = 0;
+        expect_same_clusters(streamed(b, 100.0, c, knows_last, &reads), find_clusters(b, 100.0, c));
+        EXPECT_EQ(reads, knows_last ? 1 : wrap ? 3 : 2);  // a start past body 0 needs the third
+        expect_same_clusters(streamed(b, 0.0, c, knows_last, &reads), find_clusters(b, 0.0, c));
+        EXPECT_EQ(reads, 1);  // a line: no wrap to settle
+      }
+    Bodies linked;  // a fully linked ring is one cluster from body 0
+    for (int i = 0; i < 10; ++i) linked.push_back(0.1 * i, 0.0, 1.0);
+    expect_same_clusters(streamed(linked, 1.0, c, knows_last), find_clusters(linked, 1.0, c));
+    Bodies long_ring;  // 70 000 bodies all joined: more than one read holds back
+    for (int i = 0; i < 70000; ++i) long_ring.push_back(0.1 * i, 1e-3 * (i % 3), 1.0);
+    int reads = 0;
+    expect_same_clusters(streamed(long_ring, 7000.0, c, knows_last, &reads),
+                         find_clusters(long_ring, 7000.0, c));
+    EXPECT_EQ(reads, knows_last ? 1 + 2 : 2);  // the one read gives up; then a start at body 0: two
+    EXPECT_TRUE(streamed(Bodies{}, 1.0, c, knows_last).empty());
+  }
 }
 
 }  // namespace
