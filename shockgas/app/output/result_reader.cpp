@@ -291,6 +291,20 @@ ResultContents read_result(const fs::path& file, Verification checked, const Val
   return read_contents(file, checked, values, false);
 }
 
+ResultContents written_contents(const Hdf5File& writing, const ValueFilter& values) {
+  ResultContents out;
+  out.path = writing.path();
+  out.verification = writing.verification();
+  FrameReader frames(out);
+  const Send receive = [&](const char* data, std::size_t size) { frames.add(data, size); };
+  send_layout(writing, receive);
+  std::vector<std::string> asked;
+  for (const DatasetInfo& d : out.datasets)
+    if (values && values(d.path)) asked.push_back(d.path);
+  send_values(writing, asked, receive);
+  return out;
+}
+
 ResultContents read_every_chunk(const fs::path& file, Verification checked) {
   return read_contents(file, checked, {}, true);
 }

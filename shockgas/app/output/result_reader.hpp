@@ -58,6 +58,13 @@ ResultContents read_result(const std::filesystem::path& file, const ValueFilter&
 ResultContents read_result(const std::filesystem::path& file, Verification checked,
                            const ValueFilter& values = {});
 
+// The contents of the result file this process is writing, from its open
+// handle (no reading process and no check: it holds what this process wrote),
+// as read_result will read them once it is closed, but for the attribute
+// close() adds (/@attributes_sha256). For what the run writes beside it
+// (result.xdmf, report.html), so that it never reads back the file it wrote.
+ResultContents written_contents(const Hdf5File& writing, const ValueFilter& values = {});
+
 // The same, every chunk of every dataset read first in the child process, its
 // Fletcher32 checked (Hdf5File::check_every_chunk): FileProblem "damaged"
 // naming the datasets that do not read back whole. What `info` reads.

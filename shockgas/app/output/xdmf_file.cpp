@@ -177,12 +177,8 @@ std::string xdmf_text(const ResultContents& h5, const std::string& h5_name) {
   return Writer(h5, h5_name).text();
 }
 
-void write_xdmf(const std::string& dir) {
-  const fs::path h5 = fs::path(dir) / "result.h5";
-  // Read as every result file is (result_reader.hpp), the times of the frames with it.
-  const ResultContents contents =
-      read_result(h5, [](const std::string& path) { return path == "/animation/t"; });
-  write_file(fs::path(dir) / "result.xdmf", xdmf_text(contents, "result.h5"));
+void write_xdmf(const std::string& dir, const ResultContents& h5) {
+  write_file(fs::path(dir) / "result.xdmf", xdmf_text(h5, "result.h5"));
 }
 
 }  // namespace shockgas::app

@@ -22,7 +22,8 @@ namespace shockgas::app {
 // data named by `h5_name` (the file's name beside the .xdmf, "result.h5").
 std::string xdmf_text(const ResultContents& h5, const std::string& h5_name);
 
-// Writes <dir>/result.xdmf for <dir>/result.h5 (written and closed).
-void write_xdmf(const std::string& dir);
+// Writes <dir>/result.xdmf for <dir>/result.h5, whose contents are `h5`
+// (written_contents, with the values of /animation/t).
+void write_xdmf(const std::string& dir, const ResultContents& h5);
 
 }  // namespace shockgas::app

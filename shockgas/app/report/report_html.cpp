@@ -143,9 +143,8 @@ std::string figures_table(const Json& summary) {
   return out.str();
 }
 
-std::map<std::string, std::string> provenance(const fs::path& dir) {
+std::map<std::string, std::string> provenance(const ResultContents& file) {
   std::map<std::string, std::string> attrs;
-  const ResultContents file = read_result(dir / "result.h5");
   for (const auto& [name, value] : file.attributes_of("/")) attrs[name] = value;
   return attrs;
 }
@@ -279,9 +278,8 @@ Json read_summary(const fs::path& dir) {
   return summary;
 }
 
-void write_report_html_of(const fs::path& dir) {
-  const Json summary = read_summary(dir);
-  const auto p = provenance(dir);
+void write_report_html_of(const fs::path& dir, const Json& summary, const ResultContents& h5) {
+  const auto p = provenance(h5);
   const toml::table scene = resolved(p);
   const std::string name = p.count("scene_name") ? p.at("scene_name") : summary.value("scene", "");
   std::string body = "<header>\n<h1>" + html::escape(name) + "</h1>\n";
@@ -306,10 +304,15 @@ void write_report_html_of(const fs::path& dir) {
 
 void write_report_html(const fs::path& dir) {
   try {
-    write_report_html_of(dir);
+    write_report_html_of(dir, read_summary(dir), read_result(dir / "result.h5"));
   } catch (const nlohmann::json::exception&) {  // a value of another kind than a run writes
     throw damaged_summary(dir, "a value is not of the kind a run writes");
   }
+}
+
+void write_report_html(const fs::path& dir, const Json& summary, const ResultContents& h5) {
+  // As summary.json holds it: JSON has no infinity or NaN, which it writes as null.
+  write_report_html_of(dir, Json::parse(summary.dump()), h5);
 }
 
 }  // namespace shockgas::app

@@ -189,6 +189,7 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
   const auto variant = scene.name.find('/');  // a sweep's variant: "<scene>/<label>"
   if (variant != std::string::npos) progress.name_phases(scene.name.substr(variant + 1));
   RunResults r;
+  ResultContents written;  // what result.h5 holds, for result.xdmf and report.html
   {
     Hdf5File h5 = Hdf5File::create((dir / "result.h5").string());
     r = compute_parts(
@@ -202,9 +203,10 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
         source);
     progress.phase(r.statistics ? "writing result.h5, summary.json, statistics.h5, .csv, .md"
                                 : "writing result.h5, summary.json");
+    written = written_contents(h5, [](const std::string& path) { return path == "/animation/t"; });
     h5.close();
   }
-  write_xdmf(dir.string());
+  write_xdmf(dir.string(), written);
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   if (r.statistics) write_statistics(dir, *r.statistics);
   if (options.plots && scene.output.plots)
@@ -217,7 +219,7 @@ VariantResult run_single(const Scene& scene, const InitialCondition& initial, co
   const std::string report = report_text(r) + phase_times_text(phases);
   progress.phase("writing report.md, report.html, manifest.json");
   write_file(dir / "report.md", report);
-  write_report_html(dir);
+  write_report_html(dir, summary, written);
   write_manifest(dir, scene.name);
   return reduce(r, std::move(summary));
 }

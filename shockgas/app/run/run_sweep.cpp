@@ -105,12 +105,13 @@ void run_sweep(const Scene& scene, SweepPlan& plan, const fs::path& dir, const R
     write_part(h5, r, part);
     summarize_part(summary, r, part);
   }
+  const ResultContents written = written_contents(h5);  // for report.html: not read back
   h5.close();
   write_file(dir / "summary.json", summary.dump(2) + "\n");
   write_file(dir / "report.md", report(scene, r.variants));
   if (options.plots && scene.output.plots) draw_plots(dir, false, progress);
   progress.phase("writing report.html, manifest.json");
-  write_report_html(dir);
+  write_report_html(dir, summary, written);
   write_manifest(dir, scene.name);
 }
 
