@@ -50,20 +50,34 @@ double temperature(const Bodies& b) {
 }
 
 void TemperatureSums::add(const double* v, const double* m, std::size_t count) {
-  if (count == 0) return;
-  if (!shifted_) shift_ = v[0], shifted_ = true;
-  for (std::size_t i = 0; i < count; ++i) {
-    const double dv = v[i] - shift_;
-    mass_ += m[i];
-    first_ += m[i] * dv;
-    second_ += m[i] * dv * dv;
+  while (count > 0) {
+    if (v_.empty()) v_.reserve(kBlock), m_.reserve(kBlock);
+    const std::size_t take = std::min(count, kBlock - v_.size());
+    v_.insert(v_.end(), v, v + take), m_.insert(m_.end(), m, m + take);
+    v += take, m += take, count -= take;
+    if (v_.size() == kBlock) take_block();
   }
 }
 
+void TemperatureSums::take_block() {
+  double mass = 0, momentum = 0;
+  for (std::size_t i = 0; i < v_.size(); ++i) mass += m_[i], momentum += m_[i] * v_[i];
+  if (mass > 0) {
+    const double mean = momentum / mass;
+    double squares = 0;
+    for (std::size_t i = 0; i < v_.size(); ++i) squares += m_[i] * (v_[i] - mean) * (v_[i] - mean);
+    const double total = mass_ + mass, d = mean - mean_;
+    squares_ += squares + d * d * (mass_ * mass / total);
+    mean_ += d * (mass / total);
+    mass_ = total;
+  }
+  v_.clear(), m_.clear();
+}
+
 double TemperatureSums::temperature() const {
-  if (mass_ <= 0) return 0;
-  const double mean = first_ / mass_;
-  return std::max(0.0, second_ / mass_ - mean * mean);
+  TemperatureSums all = *this;
+  if (!all.v_.empty()) all.take_block();
+  return all.mass_ > 0 ? all.squares_ / all.mass_ : 0.0;
 }
 
 }  // namespace shockgas

@@ -51,17 +51,22 @@ double kinetic_energy(const Bodies& b);
 double temperature(const Bodies& b);
 
 // The same temperature in one pass, as bodies go by in chunks (a run that
-// draws its bodies once): sums of m, m (v - K) and m (v - K)^2 about the
-// first velocity K, T = S2 / M - (S1 / M)^2. Equal to temperature() to
-// rounding (the shift keeps it where <v> >> sqrt(T)), not bit for bit.
+// draws its bodies once): in blocks of kBlock bodies, whatever the chunks,
+// each summed in two passes about its own mean (M_b, mean_b, C_b = sum m (v -
+// mean_b)^2) and combined in order by Chan, Golub & LeVeque's update
+// (C += C_b + d^2 M M_b / (M + M_b), d = mean_b - mean). Equal to temperature()
+// to rounding (about N eps relative, no cancellation), not bit for bit; the
+// same bits for the same bodies in the same order however they are chunked.
 class TemperatureSums {
  public:
+  static constexpr std::size_t kBlock = 4096;
   void add(const double* v, const double* m, std::size_t count);
   double temperature() const;
 
  private:
-  bool shifted_ = false;
-  double shift_ = 0, mass_ = 0, first_ = 0, second_ = 0;
+  void take_block();
+  std::vector<double> v_, m_;  // the block being filled
+  double mass_ = 0, mean_ = 0, squares_ = 0;
 };
 
 }  // namespace shockgas

@@ -52,8 +52,9 @@ std::vector<Cluster> find_clusters(const Bodies& b, double L, const ClusterCrite
 
 // The clusters of find_clusters(state, L, c), bit for bit and in the same
 // order, handed to visit one at a time from a state read in chunks (one read
-// on a line, and on a ring where the state knows its last body; else three),
-// never held whole. The state must be what
+// on a line, and on a ring where the state knows its last body and at most
+// 2^16 bodies lie before the walk's start; else two, or three when the start
+// is past body 0), never held whole. The state must be what
 // find_clusters accepts (sorted; ring: in [0, L)); the criteria are checked.
 void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c,
                     const std::function<void(const Cluster&)>& visit);

@@ -88,6 +88,7 @@ bool walk_once(const StateReader& state, double L, const ClusterCriteria& c,
   detail::ClusterSums sums;
   double x_last = 0, v_last = 0;
   each_body(state, [&](std::size_t i, double x, double v, double m) {
+    if (overflow) return;  // given up before the start: nothing visited, the three-read walk follows
     if (i == 0) wraps = L > 0 && state.size() > 1 && c.joins(x + L - (*last)[0], v - (*last)[1]);
     if (!wraps || started) {
       if (!started) {
@@ -124,8 +125,8 @@ void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c
                     const std::function<void(const Cluster&)>& visit) {
   detail::require_cluster_inputs(L, c);
   if (state.size() == 0) return;
-  // A walk cut short by too many bodies before the start visited nothing yet:
-  // it visits only once the whole state has been read.
+  // A walk that gives up (too many bodies before the start) does so before its
+  // first visit, and visits nothing after it.
   if (walk_once(state, L, c, visit)) return;
   walk_from(state, L, c, L > 0 ? ring_start(state, L, c) : 0, visit);
 }

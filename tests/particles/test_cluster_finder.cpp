@@ -225,6 +225,15 @@ TEST(ClusterFinder, StreamedClustersAreFindClustersToTheBit) {
     expect_same_clusters(streamed(long_ring, 7000.0, c, knows_last, &reads),
                          find_clusters(long_ring, 7000.0, c));
     EXPECT_EQ(reads, knows_last ? 1 + 2 : 2);  // the one read gives up; then a start at body 0: two
+    // 70 000 joined bodies from body 0, then clusters of two, the last body joined to body 0 across
+    // the wrap: the one read gives up before the start, and visits each cluster once, later.
+    Bodies long_head = long_ring;
+    for (int k = 0; k < 20; ++k)
+      long_head.push_back(7000.0 + 2.0 * k, 5.0, 1.0), long_head.push_back(7000.2 + 2.0 * k, 5.0, 1.0);
+    long_head.push_back(7099.95, long_head.v.front(), 1.0);
+    expect_same_clusters(streamed(long_head, 7100.0, c, knows_last, &reads),
+                         find_clusters(long_head, 7100.0, c));
+    EXPECT_EQ(reads, knows_last ? 1 + 3 : 3);
     EXPECT_TRUE(streamed(Bodies{}, 1.0, c, knows_last).empty());
   }
 }

@@ -92,9 +92,8 @@ TEST(StreamedRuns, EngineAndHullGiveTheHeldBodiesResults) {
 
 // A run's initial temperature is that of the bodies it drew, summed as they
 // were drawn (TemperatureSums): the same bits from held bodies, and as
-// initial_temperature(). The bound against temperature()'s two passes: the
-// sums' rounding, N eps, times their cancellation (T + (<v> - v_0)^2) / T <= 13
-// for uniform velocities, N = 4000: 6e-12.
+// initial_temperature(). The bound against temperature()'s two passes: both
+// sums' rounding, about N eps each, N = 4000: 2e-12.
 TEST(StreamedRuns, TheInitialTemperatureIsThatOfTheBodiesDrawn) {
   const InitialParams ip = gas(4000);
   const InitialCondition held(ip, Keep::bodies), streamed(ip, Keep::stream);
@@ -109,7 +108,7 @@ TEST(StreamedRuns, TheInitialTemperatureIsThatOfTheBodiesDrawn) {
       const double exact = temperature(make_initial_bodies(ip, k));
       const RunResult drawn = simulate(streamed, k, p);
       ASSERT_TRUE(drawn.initial_temperature.has_value());
-      EXPECT_NEAR(*drawn.initial_temperature, exact, 6e-12 * exact);
+      EXPECT_NEAR(*drawn.initial_temperature, exact, 2e-12 * exact);
       EXPECT_NE(*drawn.initial_temperature, temperature(make_initial_bodies(ip, k + 1)));
     }
     const RunResult whole = simulate(held, 0, p);

@@ -68,7 +68,8 @@ std::vector<Declaration> shard_datasets() {
       dataset(p, "/shard/{e}/{k}/{field}", "",
               "the record of realization k of ensemble e (a sweep's variant): stop (reason code, time, "
               "position), "
-              "collisions (high and low 32 bits), wall_seconds",
+              "collisions (high and low 32 bits), wall_seconds, initial_temperature (its bodies' temperature "
+              "as it drew them)",
               "", fields_of_depth(1, 0)),
       dataset(
           p, "/shard/{e}/{k}/{group}/{field}", "",
