@@ -47,28 +47,49 @@ std::size_t ring_start(const StateReader& state, double L, const ClusterCriteria
   return c.joins(x0 + L - x_last, v0 - v_last) ? first_break : 0;
 }
 
-// The walk from `start` (ring_start), the bodies before it unrolled by + L
-// into the last cluster, read from the state once more.
+// The walk: bodies handed in order from its start; a pair that does not join
+// closes a cluster (visited) and opens the next; bodies from before the start
+// join the last cluster across the wrap, unrolled by + L.
+class ClusterWalk {
+ public:
+  ClusterWalk(double L, const ClusterCriteria& c, const std::function<void(const Cluster&)>& visit)
+      : L_(L), c_(c), visit_(visit) {}
+  void add(std::size_t i, double x, double v, double m) {
+    if (!started_) {
+      sums_.start(i, x, v), started_ = true;
+    } else if (!c_.joins(x - x_last_, v - v_last_)) {
+      visit_(sums_.done(L_));
+      sums_.start(i, x, v);
+    }
+    sums_.add(x, v, m);
+    x_last_ = x, v_last_ = v;
+  }
+  void add_across_wrap(double x, double v, double m) { sums_.add(x + L_, v, m); }
+  bool started() const { return started_; }
+  void finish() { visit_(sums_.done(L_)); }
+
+ private:
+  double L_;
+  const ClusterCriteria& c_;
+  const std::function<void(const Cluster&)>& visit_;
+  detail::ClusterSums sums_;
+  bool started_ = false;
+  double x_last_ = 0, v_last_ = 0;
+};
+
+// The walk from `start` (ring_start), the bodies before it read from the
+// state once more.
 void walk_from(const StateReader& state, double L, const ClusterCriteria& c, std::size_t start,
                const std::function<void(const Cluster&)>& visit) {
-  detail::ClusterSums sums;
-  double x_last = 0, v_last = 0;
+  ClusterWalk walk(L, c, visit);
   each_body(state, [&](std::size_t i, double x, double v, double m) {
-    if (i < start) return;
-    if (i == start) {
-      sums.start(i, x, v);
-    } else if (!c.joins(x - x_last, v - v_last)) {
-      visit(sums.done(L));
-      sums.start(i, x, v);
-    }
-    sums.add(x, v, m);
-    x_last = x, v_last = v;
+    if (i >= start) walk.add(i, x, v, m);
   });
   if (start > 0)  // the last cluster runs on across the wrap up to the start
     each_body(state, [&](std::size_t i, double x, double v, double m) {
-      if (i < start) sums.add(x + L, v, m);
+      if (i < start) walk.add_across_wrap(x, v, m);
     });
-  visit(sums.done(L));
+  walk.finish();
 }
 
 // Bodies before the start that one read holds back for the cluster across the
@@ -82,40 +103,29 @@ bool walk_once(const StateReader& state, double L, const ClusterCriteria& c,
                const std::function<void(const Cluster&)>& visit) {
   const std::optional<std::array<double, 3>> last = state.last();
   if (L > 0 && !last) return false;
+  ClusterWalk walk(L, c, visit);
   bool wraps = false;  // body 0 joins the last across the wrap: start at the first break
-  bool started = false, overflow = false;
+  bool overflow = false;
   std::vector<std::array<double, 3>> before;
-  detail::ClusterSums sums;
   double x_last = 0, v_last = 0;
   each_body(state, [&](std::size_t i, double x, double v, double m) {
     if (overflow) return;  // given up before the start: nothing visited, the three-read walk follows
     if (i == 0) wraps = L > 0 && state.size() > 1 && c.joins(x + L - (*last)[0], v - (*last)[1]);
-    if (!wraps || started) {
-      if (!started) {
-        sums.start(i, x, v), started = true;
-      } else if (!c.joins(x - x_last, v - v_last)) {
-        visit(sums.done(L));
-        sums.start(i, x, v);
-      }
-      sums.add(x, v, m);
-    } else if (i > 0 && !c.joins(x - x_last, v - v_last)) {  // the first break: the start
-      sums.start(i, x, v), started = true;
-      sums.add(x, v, m);
-    } else if (before.size() < kHeldBeforeStart) {
+    if (walk.started() || !wraps || (i > 0 && !c.joins(x - x_last, v - v_last)))
+      walk.add(i, x, v, m);
+    else if (before.size() < kHeldBeforeStart)
       before.push_back({x, v, m});
-    } else {
+    else
       overflow = true;
-    }
     x_last = x, v_last = v;
   });
   if (overflow) return false;
-  if (!started) {  // a ring joined all round: one cluster from body 0
-    sums.start(0, before[0][0], before[0][1]);
-    for (const auto& [x, v, m] : before) sums.add(x, v, m);
-  } else {
-    for (const auto& [x, v, m] : before) sums.add(x + L, v, m);
+  if (walk.started()) {
+    for (const auto& [x, v, m] : before) walk.add_across_wrap(x, v, m);
+  } else {  // a ring joined all round: one cluster from body 0
+    for (std::size_t k = 0; k < before.size(); ++k) walk.add(k, before[k][0], before[k][1], before[k][2]);
   }
-  visit(sums.done(L));
+  walk.finish();
   return true;
 }
 
