@@ -35,6 +35,13 @@ StateFileEntry entry_of(const std::uint64_t* w) {
   return {w[0], std::bit_cast<double>(w[1]), w[2], w[3], {w[4], w[5], w[6]}};
 }
 
+// The state an index entry names, as messages name it.
+std::string state_name(std::uint64_t k) {
+  if (k == kFinalState) return "the final state";
+  if (k == kHeaviestCluster) return "the heaviest cluster";
+  return "snapshot " + std::to_string(k);
+}
+
 // What StateFileWriter::saved() said: the bytes written and the index so far;
 // nullopt for bytes it cannot have written.
 struct Save {
@@ -99,8 +106,7 @@ StateFileWriter::StateFileWriter(fs::path path, FinalStateUse use)
       use_(std::move(use)) {  // states_in_progress_path
   fd_ = open_new_file(temporary_);
   if (fd_ < 0) throw RunError(write_failure(temporary_, reason()));
-  sink_.snapshot = [this](std::size_t k, double t, const particles::StateReader& s) { append(k, t, s); };
-  sink_.final_state = [this](double t, const particles::StateReader& s) { append_final(t, s); };
+  connect_sink();
 }
 
 StateFileWriter::StateFileWriter(fs::path path, const std::string& saved, FinalStateUse use)
@@ -121,6 +127,10 @@ StateFileWriter::StateFileWriter(fs::path path, const std::string& saved, FinalS
     ::close(std::exchange(fd_, -1));
     throw bad("shorter than the save says, or not writable");
   }
+  connect_sink();
+}
+
+void StateFileWriter::connect_sink() {
   sink_.snapshot = [this](std::size_t k, double t, const particles::StateReader& s) { append(k, t, s); };
   sink_.final_state = [this](double t, const particles::StateReader& s) { append_final(t, s); };
 }
@@ -289,11 +299,11 @@ std::shared_ptr<const StoredStates> StoredStates::open(const fs::path& path) {
     const StateFileEntry e = entry_of(&entries[kEntryWords * i]);
     if (e.offset > index || e.n > (index - e.offset) / 24) throw damaged("a state beyond its data");
     if (e.k == kFinalState)
-      s->final_.push_back(State(s.get(), "the final state", e));
+      s->final_.push_back(State(s.get(), state_name(e.k), e));
     else if (e.k == kHeaviestCluster && e.n == 1)
-      s->heaviest_.push_back(State(s.get(), "the heaviest cluster", e));
+      s->heaviest_.push_back(State(s.get(), state_name(e.k), e));
     else if (e.k == s->snapshots_.size())
-      s->snapshots_.push_back(State(s.get(), "snapshot " + std::to_string(e.k), e));
+      s->snapshots_.push_back(State(s.get(), state_name(e.k), e));
     else
       throw damaged("snapshot " + std::to_string(e.k) + " out of order");
   }
@@ -333,11 +343,7 @@ std::optional<std::string> StoredStates::saved_problem(const fs::path& temporary
     for (const StateFileEntry& e : save->index) {
       if (e.offset > save->end || e.n > (save->end - e.offset) / 24)
         return "state file " + temporary.string() + " is damaged: its save lists a state beyond its data";
-      const State state(file.get(),
-                        e.k == kFinalState        ? "the final state"
-                        : e.k == kHeaviestCluster ? "the heaviest cluster"
-                                                  : "snapshot " + std::to_string(e.k),
-                        e);
+      const State state(file.get(), state_name(e.k), e);
       for (int c = 0; c < 3; ++c) state.read_column(c, [](const double*, std::size_t) {});
     }
     return std::nullopt;

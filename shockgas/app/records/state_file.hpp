@@ -114,6 +114,7 @@ class StateFileWriter {
   void move_to(const std::filesystem::path& dir);
 
  private:
+  void connect_sink();  // sink_'s members call append and append_final
   void append(std::uint64_t k, double t, const particles::StateReader& state);
   void append_final(double t, const particles::StateReader& state);
   void write_at(std::uint64_t offset, const void* data, std::size_t bytes);
