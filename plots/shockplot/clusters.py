@@ -1,5 +1,5 @@
-"""clusters.png: the clusters of the gas -- the number of those of two or more
-particles in time against N t^(-2/3) (exact for a white-noise start: the shocks
+"""clusters.png: the clusters of the gas -- the number of those of k or more
+particles (particles.min_cluster_particles, 2 by default) in time against N t^(-2/3) (exact for a white-noise start: the shocks
 of Burgers turbulence),
 their masses against the exact shock-mass law, and their positions and masses
 against the shocks of the compared solver."""
@@ -19,11 +19,13 @@ def minor_labels():
 
 
 def _count_in_time(ax, f, summary):
-    """The engine's count of clusters of >= 2 particles at the sample times, with
-    the exact shock count of a white-noise start (else a fitted N t^(-2/3) guide),
-    and the comparison's count of clusters and exact shocks heavier than its
-    threshold at its time."""
+    """The engine's count of clusters of >= k particles at the sample times
+    (k = particles.min_cluster_particles), with the exact count of the shocks
+    heavier than k - 1/2 particles of a white-noise start (else a fitted
+    N t^(-2/3) guide), and the comparison's count of clusters and exact shocks
+    heavier than its threshold at its time."""
     p = f["particles"]
+    k = summary.get("particles", {}).get("min_cluster_particles", 2)
     t, n = p["t"][:], p["n_clusters"][:]
     ok = (t > 0) & (n > 0)
     t, n = t[ok], n[ok]
@@ -31,7 +33,7 @@ def _count_in_time(ax, f, summary):
     merged = summary.get("particles", {}).get("r") == 0
     criteria = ("merged bodies" if merged
                 else r"criteria at that time: gap < max($a/2$, $\sqrt{\delta t a}$), |dv| < 5$\delta$")
-    ax.errorbar(t, n, yerr=err, **DATA, label=f"particles: clusters of ≥ 2 particles at each sample ({criteria})")
+    ax.errorbar(t, n, yerr=err, **DATA, label=f"particles: clusters of ≥ {k} particles at each sample ({criteria})")
     N = summary.get("initial", {}).get("N")
     an = p["analysis"] if "analysis" in p else None
     coefficient = attr(an, "n_shocks_exact_coefficient") if an is not None else None
@@ -43,7 +45,7 @@ def _count_in_time(ax, f, summary):
     if exact_count is not None and start < t[-1] and gas:
         late = t >= start
         ax.plot(t[late], exact_count[late], **EXACT,
-                label="exact: shocks heavier than 1.5 particles of Burgers turbulence from this white noise "
+                label=f"exact: shocks heavier than {k - 0.5:g} particles of Burgers turbulence from this white noise "
                       "(shock-mass law)")
     elif coefficient is not None and N and start < t[-1] and gas:
         tt = np.geomspace(start, t[-1], 50)
@@ -58,7 +60,7 @@ def _count_in_time(ax, f, summary):
     ax.set_yscale("log")
     ax.yaxis.set_minor_formatter(minor_labels())  # a count over less than a decade still reads
     ax.set_xlabel(label("time $t$", unit(p["t"])))
-    ax.set_ylabel(label("clusters of ≥ 2 particles", unit(p["n_clusters"])))
+    ax.set_ylabel(label(f"clusters of ≥ {k} particles", unit(p["n_clusters"])))
     ax.set_title("clusters in time", fontsize=10)
 
 

@@ -63,9 +63,11 @@ class ParticleRun(Record):
 
     Time series at the log-spaced sample times (one entry per sample reached):
       t [time], T [length^2/time^2] (mass-weighted <v^2> - <v>^2), mean_v
-      [length/time], n_bodies, n_clusters (the clusters of two or more
-      particles: default criteria at the sample's time, a lone body only when
-      heavier than 1.5 M / N), collisions, inelastic, elastic, merges [1],
+      [length/time], n_bodies, n_clusters (the clusters of at least
+      min_cluster_particles particles, 2 by default: default criteria at the
+      sample's time; with 2 a lone body only when heavier than 1.5 M / N, with
+      k > 2 the clusters heavier than (k - 1/2) M / N), collisions, inelastic,
+      elastic, merges [1],
       dissipated [mass length^2/time^2].
     final: Bodies at stop.time. snapshots: list of Bodies with their time t.
     histogram: z [length/time^(2/3)], t [time], density (rows: times) of

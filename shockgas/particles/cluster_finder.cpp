@@ -90,9 +90,11 @@ ClusterCriteria gas_cluster_criteria(double r, double delta, double mean_spacing
   return r == 0.0 ? merged_bodies_criteria() : default_cluster_criteria(delta, mean_spacing, t);
 }
 
-MultiParticleRule::MultiParticleRule(double mean_particle_mass) : heavy_mass_(1.5 * mean_particle_mass) {
+MultiParticleRule::MultiParticleRule(double mean_particle_mass, std::size_t k)
+    : heavy_mass_((static_cast<double>(k) - 0.5) * mean_particle_mass), body_count_counts_(k == 2) {
   require(std::isfinite(mean_particle_mass) && mean_particle_mass > 0, "cluster.mean_particle_mass",
           mean_particle_mass, "finite, > 0");
+  require(k >= 2, "particles.min_cluster_particles", k, ">= 2");
 }
 
 }  // namespace shockgas::particles

@@ -98,34 +98,47 @@ ClusterCriteria merged_bodies_criteria();
 // else default_cluster_criteria(delta, mean_spacing, t).
 ClusterCriteria gas_cluster_criteria(double r, double delta, double mean_spacing, double t);
 
-// The clusters that hold at least two particles: what the time series counts
+// The clusters that hold at least k particles (k >= 2; 2 unless a scene asks
+// for more: particles.min_cluster_particles): what the time series counts
 // (/particles/n_clusters), the particle side of the shocks, of which a lone
-// particle is none. A cluster of two or more bodies holds two or more
-// particles; a lone body only if particles merged into it (r = 0, or a sticky
-// sub-threshold rule). With particles of equal mass M / N a merged body weighs
-// at least 2 M / N and a particle M / N: a lone body counts when heavier than
-// 1.5 M / N, between the two, far from either's rounding. With equal particle
-// masses this is "cluster mass > 1.5 M / N"; body count first rather than mass
-// alone because with unequal masses (a density rho0) a cluster of two light
-// particles is still counted (a lone heavy particle then counts too, a merged
-// pair of light ones not: the bodies carry no particle count), and because a
-// body is decided from its own mass and its two pairs, so a stream over the
-// chain needs no running sum of a cluster's mass (chain_observables.hpp,
-// stretch_observables.hpp).
+// particle is none.
+//
+// k = 2: a cluster of two or more bodies holds two or more particles; a lone
+// body only if particles merged into it (r = 0, or a sticky sub-threshold
+// rule). With particles of equal mass M / N a merged body weighs at least
+// 2 M / N and a particle M / N: a lone body counts when heavier than 1.5 M / N,
+// between the two, far from either's rounding. With equal particle masses this
+// is "cluster mass > 1.5 M / N"; body count first rather than mass alone
+// because with unequal masses (a density rho0) a cluster of two light particles
+// is still counted (a lone heavy particle then counts too, a merged pair of
+// light ones not: the bodies carry no particle count), and because a body is
+// decided from its own mass and its two pairs, so a stream over the chain needs
+// no running sum of a cluster's mass (chain_observables.hpp,
+// stretch_observables.hpp): streams().
+//
+// k > 2: a cluster counts when its mass exceeds (k - 1/2) M / N, halfway
+// between k - 1 and k particles of equal mass (the exact shock count above the
+// same mass is its expectation for a white-noise start, shock_mass_law.hpp).
+// That needs each cluster's mass: the clusters are walked (visit_clusters).
 class MultiParticleRule {
  public:
-  // mean_particle_mass: M / N of the run's initial particles [mass].
-  // Throws InputError unless it is finite and > 0.
-  explicit MultiParticleRule(double mean_particle_mass);
-  // Whether a lone body of mass m holds two or more particles.
+  // mean_particle_mass: M / N of the run's initial particles [mass]; k: the
+  // fewest particles a counted cluster holds. Throws InputError unless the mass
+  // is finite and > 0 and k >= 2.
+  explicit MultiParticleRule(double mean_particle_mass, std::size_t k = 2);
+  // Whether a lone body of mass m holds k or more particles.
   bool heavy(double m) const { return m > heavy_mass_; }
-  // Whether cluster c holds two or more particles.
-  bool counts(const Cluster& c) const { return c.count >= 2 || heavy(c.m); }
-  // 1.5 M / N [mass]: heavy(m) is m > heavy_mass() (for a stream's own comparisons).
+  // Whether cluster c holds k or more particles.
+  bool counts(const Cluster& c) const { return (body_count_counts_ && c.count >= 2) || heavy(c.m); }
+  // (k - 1/2) M / N [mass]: heavy(m) is m > heavy_mass() (for a stream's own comparisons).
   double heavy_mass() const { return heavy_mass_; }
+  // Whether a body is decided by its own mass and its two pairs (k = 2), so
+  // that a stream over the chain can count the clusters without their masses.
+  bool streams() const { return body_count_counts_; }
 
  private:
-  double heavy_mass_;  // 1.5 M / N [mass]
+  double heavy_mass_;       // (k - 1/2) M / N [mass]
+  bool body_count_counts_;  // k = 2: two bodies are two particles
 };
 
 }  // namespace shockgas::particles

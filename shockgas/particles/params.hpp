@@ -97,6 +97,7 @@ struct ParticleParams {
   std::size_t spacetime_frames = 200;
   std::size_t spacetime_particles = 2000;  // world lines recorded (run_result.hpp: spacetime_labels)
   bool clusters = true;
+  std::size_t min_cluster_particles = 2;  // what the sample-time count counts (MultiParticleRule)
   ClusterRecord final_clusters = ClusterRecord::automatic;
   std::uint64_t max_collisions = 0;  // 0 = no limit (checked at safe points: kGlobalQueueCheckEvery)
   double max_wall_seconds = 0.0;     // 0 = no limit

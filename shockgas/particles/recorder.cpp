@@ -43,7 +43,8 @@ Recorder::Recorder(const ParticleParams& p, std::size_t n, double L, bool ring, 
       ring_(ring),
       sink_(sink),
       spacing_(L / static_cast<double>(n)),
-      counted_(mean_particle_mass) {
+      counted_(mean_particle_mass),
+      series_(mean_particle_mass, p.min_cluster_particles) {
   samples_ = sample_times(p.t_end, p.samples);
   snapshots_ = sorted_copy(p.snapshots);
   if (p.spacetime) frames_ = frame_times(p.t_end, p.spacetime_frames);
@@ -76,18 +77,19 @@ void Recorder::observe(double t, const ChainView& s, const Counters& c) {
 // Every sample due at t records the same values: they are measured once.
 void Recorder::sample(double t, const ChainView& s, const Counters& c, std::size_t copies) {
   std::optional<ClusterCounter> counter;
-  if (p_.clusters) counter.emplace(L_, ring_, criteria(t), counted_);
+  if (p_.clusters && series_.streams()) counter.emplace(L_, ring_, criteria(t), series_);
   const ChainMoments moments = chain_moments(s, counter ? &*counter : nullptr);
   const HistogramSpec spec{p_.histogram_bins, p_.histogram_zmax, std::cbrt(t)};
   std::vector<double> density;
   const double T = chain_temperature(s, moments, spec, spec.bins > 0 ? &density : nullptr);
-  const double clusters = counter ? static_cast<double>(count_clusters(t, s, *counter)) : 0.0;
+  const double clusters =
+      p_.clusters ? static_cast<double>(count_clusters(t, s, counter ? &*counter : nullptr)) : 0.0;
   record(t, {T, moments.mean(), static_cast<double>(s.size()), clusters}, c, copies, density);
 }
 
 std::vector<double> Recorder::samples_in_parts() const {
   std::vector<double> t;
-  if (p_.histogram_bins > 0) return t;
+  if (p_.histogram_bins > 0 || (p_.clusters && !series_.streams())) return t;
   double other = done;
   if (next_snapshot_ < snapshots_.size()) other = snapshots_[next_snapshot_];
   if (next_frame_ < frames_.size()) other = std::min(other, frames_[next_frame_]);
@@ -137,13 +139,15 @@ void Recorder::snapshot(double t, const ChainView& s, std::size_t copies) {
   for (std::size_t k = next_snapshot_ - copies; k < next_snapshot_; ++k) sink_->snapshot(k, t, sorted);
 }
 
-// The streamed count, or (rounding left the chain out of order) the count of
-// the state read in order (SortedState), as find_clusters would count it.
-std::size_t Recorder::count_clusters(double t, const ChainView& s, ClusterCounter& counter) const {
-  if (const std::optional<std::size_t> n = counter.count()) return *n;
+// The streamed count, or (no counter: the rule needs the clusters' masses;
+// rounding left the chain out of order) the count of the state read in order
+// (SortedState), as find_clusters would count it.
+std::size_t Recorder::count_clusters(double t, const ChainView& s, ClusterCounter* counter) const {
+  if (counter)
+    if (const std::optional<std::size_t> n = counter->count()) return *n;
   std::size_t clusters = 0;
   visit_clusters(SortedState(s, L_, ring_), ring_ ? L_ : 0.0, criteria(t),
-                 [&](const Cluster& c) { clusters += counted_.counts(c); });
+                 [&](const Cluster& c) { clusters += series_.counts(c); });
   return clusters;
 }
 
@@ -182,10 +186,11 @@ void Recorder::frame(double t, const ChainView& s) {
 double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }
 
 // The clusters of at least two particles at t (RunResult::final_clusters), by
-// the criteria and the rule the time series counts with (criteria(t), counted_:
-// MultiParticleRule). Counted first, then kept: no vector grows past what it holds. They come in
-// order of x but for the cluster across a ring's wrap, which comes last and may
-// belong first (and, should rounding put a centre of mass out of order, are sorted).
+// the criteria the time series counts with (criteria(t)) and the rule of two
+// or more particles (counted_: MultiParticleRule), whatever
+// particles.min_cluster_particles: the statistics see every cluster. Counted first, then kept: no vector
+// grows past what it holds. They come in order of x but for the cluster across a ring's wrap, which comes
+// last and may belong first (and, should rounding put a centre of mass out of order, are sorted).
 Bodies Recorder::final_clusters(const ChainView& s, double t) const {
   const ClusterCriteria at_t = criteria(t);
   const SortedState sorted(s, L_, ring_);

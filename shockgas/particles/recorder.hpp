@@ -48,10 +48,11 @@ class Recorder {
   // The sample times from the next stop on that a model may measure in parts
   // (stretch_observables.hpp) and hand over by observe_sample: those before any
   // other record (snapshot, frame), without duplicates; none when a histogram is
-  // asked for (it bins about the mean of the whole state).
+  // asked for (it bins about the mean of the whole state), nor when the count
+  // needs the clusters' masses (MultiParticleRule::streams).
   std::vector<double> samples_in_parts() const;
   // What those parts measure at time t.
-  SampleSpec sample_spec(double t) const { return {p_.clusters, criteria(t), counted_, L_, ring_}; }
+  SampleSpec sample_spec(double t) const { return {p_.clusters, criteria(t), series_, L_, ring_}; }
   // Records the samples due at t from their combined parts.
   void observe_sample(double t, const SampleMoments& moments, std::size_t clusters, const Counters& c);
   // Moves the records out, with the final state at stop.time and how the run ended.
@@ -71,7 +72,7 @@ class Recorder {
               const std::vector<double>& density);
   // The cluster criteria at time t: gas_cluster_criteria(r, delta, L / n, t).
   ClusterCriteria criteria(double t) const;
-  std::size_t count_clusters(double t, const ChainView& s, ClusterCounter& counter) const;
+  std::size_t count_clusters(double t, const ChainView& s, ClusterCounter* counter) const;
   void snapshot(double t, const ChainView& s, std::size_t copies);
   void frame(double t, const ChainView& s);
   double wrap(double x) const;
@@ -82,8 +83,9 @@ class Recorder {
   double L_;
   bool ring_;
   const StateSink* sink_;
-  double spacing_;  // L / n [length]
-  MultiParticleRule counted_;
+  double spacing_;             // L / n [length]
+  MultiParticleRule counted_;  // the final clusters: those of two or more particles
+  MultiParticleRule series_;   // the sample times' count: particles.min_cluster_particles
   std::vector<double> samples_, snapshots_, frames_;
   std::size_t next_sample_ = 0, next_snapshot_ = 0, next_frame_ = 0;
   RunResult out_;

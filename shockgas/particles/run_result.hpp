@@ -19,8 +19,8 @@ struct TimeSeries {
   std::vector<double> T;           // temperature <v^2> - <v>^2, mass weighted [length^2/time^2]
   std::vector<double> mean_v;      // mass-weighted mean velocity (momentum / mass) [length/time]
   std::vector<double> n_bodies;    // live bodies (clusters after merges) [1]
-  std::vector<double> n_clusters;  // clusters of >= 2 particles (find_clusters, default criteria;
-                                   // MultiParticleRule) [1]
+  std::vector<double> n_clusters;  // clusters of >= min_cluster_particles particles (find_clusters,
+                                   // default criteria; MultiParticleRule) [1]
   std::vector<double> collisions;  // cumulative collisions, all kinds [1]
   std::vector<double> inelastic;   // cumulative inelastic collisions (g >= delta, r > 0) [1]
   std::vector<double> elastic;     // cumulative sub-threshold elastic collisions [1]

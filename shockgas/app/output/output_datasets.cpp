@@ -53,8 +53,9 @@ const Series kSeries[] = {
      "mass-weighted mean velocity (momentum check)"},
     {"n_bodies", &particles::EnsembleResult::n_bodies, "1", "bodies (clusters after merges)"},
     {"n_clusters", &particles::EnsembleResult::n_clusters, "1",
-     "clusters of >= 2 particles: the default cluster criteria at the sample's time, a lone body counted "
-     "only when heavier than 1.5 M / N (merged particles)"},
+     "clusters of at least k = particles.min_cluster_particles particles (summary.json; 2 by default): "
+     "the default cluster criteria at the sample's time; k = 2: a lone body counted only when heavier than "
+     "1.5 M / N (merged particles); k > 2: the clusters heavier than (k - 1/2) M / N"},
     {"collisions", &particles::EnsembleResult::collisions, "1", "cumulative collisions, all kinds"},
     {"inelastic", &particles::EnsembleResult::inelastic, "1", "cumulative inelastic collisions"},
     {"elastic", &particles::EnsembleResult::elastic, "1", "cumulative elastic sub-threshold collisions"},

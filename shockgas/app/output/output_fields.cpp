@@ -66,16 +66,17 @@ std::vector<Declaration> analysis() {
           white_noise, exact([](const compare::WhiteNoiseReferences& w, Emitter& out) {
             out.number(w.temperature_amplitude);
           })),
-      dataset(
-          p, "/particles/analysis/n_clusters_exact", "1",
-          "the exact expected number of shocks heavier than 1.5 M / N of Burgers turbulence from this white "
-          "noise at each /particles/t (shockgas/compare/shock_mass_law.hpp): what /particles/n_clusters "
-          "approaches once the gas is sticky and the shocks span many particles",
-          "when the start is white noise on a lattice and particles.clusters",
-          [](const RunResults& r, Emitter& out) {
-            if (r.particles && !r.particles->n_clusters_exact.empty())
-              out.values(r.particles->n_clusters_exact);
-          }),
+      dataset(p, "/particles/analysis/n_clusters_exact", "1",
+              "the exact expected number of shocks heavier than (k - 1/2) M / N (k = "
+              "particles.min_cluster_particles, "
+              "2 by default) of Burgers turbulence from this white noise at each /particles/t "
+              "(shockgas/compare/shock_mass_law.hpp): what /particles/n_clusters "
+              "approaches once the gas is sticky and the shocks span many particles",
+              "when the start is white noise on a lattice and particles.clusters",
+              [](const RunResults& r, Emitter& out) {
+                if (r.particles && !r.particles->n_clusters_exact.empty())
+                  out.values(r.particles->n_clusters_exact);
+              }),
       attribute(p, "/particles/analysis@n_shocks_exact_coefficient", "time^(2/3)",
                 "C of the exact number of shocks C t^(-2/3) of Burgers turbulence from this white noise, the "
                 "small ones included (shockgas/compare/white_noise_references.hpp)",

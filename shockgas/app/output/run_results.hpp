@@ -57,7 +57,7 @@ struct ParticleResults {
   std::optional<compare::WhiteNoiseReferences> exact;
   std::vector<double> histogram_exact;
   // With exact and particles.clusters: the exact expected number of shocks the
-  // time series counts (heavier than MultiParticleRule's 1.5 M / N) at each
+  // time series counts (heavier than MultiParticleRule's (k - 1/2) M / N) at each
   // sample time (shock_mass_law.hpp).
   std::vector<double> n_clusters_exact;
   std::optional<compare::AnalysisErrors> errors;  // jackknife over realizations (2 or more)

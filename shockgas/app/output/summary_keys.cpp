@@ -101,6 +101,8 @@ std::vector<Declaration> particles() {
           particle([](const PR&, const Scene& s) { return s.particles.delta; })),
       key(p, "particles.realizations", "1", as_used("particles", "realizations"), "",
           particle([](const PR&, const Scene& s) { return s.particles.realizations; })),
+      key(p, "particles.min_cluster_particles", "1", as_used("particles", "min_cluster_particles"), "",
+          particle([](const PR&, const Scene& s) { return s.particles.min_cluster_particles; })),
       key(p, "particles.collisions", "1", "total collisions of all realizations", "",
           particle([](const PR& pr, const Scene&) { return pr.ensemble.total_collisions; })),
       key(p, "particles.wall_seconds", "s",

@@ -24,11 +24,13 @@ namespace shockgas::app {
 namespace {
 
 // The exact expected number of shocks heavier than the lightest cluster the
-// time series counts (MultiParticleRule: 1.5 M / N), at each sample time.
+// time series counts (MultiParticleRule: (k - 1/2) M / N, k =
+// particles.min_cluster_particles), at each sample time.
 std::vector<double> exact_cluster_counts(const compare::WhiteNoiseReferences& w, const std::vector<double>& t,
                                          const Scene& scene) {
   const double mean_mass = w.density * w.length / static_cast<double>(scene.initial.N);
-  const double lightest = particles::MultiParticleRule(mean_mass).heavy_mass();
+  const double lightest =
+      particles::MultiParticleRule(mean_mass, scene.particles.min_cluster_particles).heavy_mass();
   return compare::expected_shocks_above(lightest, w.D, w.length, w.density, t);
 }
 
