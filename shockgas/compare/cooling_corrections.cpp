@@ -46,14 +46,33 @@ double student_t_95(std::size_t dof) {
   return 1.960 + 2.4 / static_cast<double>(dof);  // 2.021 at 40, 2.000 at 60, 1.980 at 120 (within 0.001)
 }
 
+namespace {
+
+// The sticky gas of the same starts, and the gas against it.
+void same_starts_text(std::ostream& out, const PairedExponents& p) {
+  out << " The exact sticky gas from the same starts (the hull at r = 0, realization by realization) gives a "
+         "= "
+      << to_text(p.sticky.value, 4) << " +- " << to_text(p.sticky.error, 2)
+      << " on this window; the gas less it: " << to_text(p.difference.value, 2) << " +- "
+      << to_text(p.difference.error, 2) << " (jackknife of the pairs).";
+}
+
+bool follows_its_starts(const PairedExponents& p) {
+  return std::isfinite(p.difference.error) && std::abs(p.difference.value) <= 2 * p.difference.error;
+}
+
+}  // namespace
+
 std::string cooling_departure_text(double a, double sigma, std::size_t realizations,
-                                   const CoolingCorrections& c, double t_min, double t_max) {
+                                   const CoolingCorrections& c, double t_min, double t_max,
+                                   const std::optional<PairedExponents>& same_starts) {
   std::ostringstream out;
   out << "Corrections expected on [" << text(t_min) << ", " << text(t_max)
       << "], measured with the exact hull (docs/paper/fig1.md): finite size (about "
       << std::lround(c.clusters_end) << " clusters per realization at t = " << text(t_max) << ") "
       << to_text(c.finite_size, 2) << ", lattice start " << to_text(c.lattice, 2)
       << ": a = " << to_text(c.expected, 4) << " expected.";
+  if (same_starts) same_starts_text(out, *same_starts);
   if (!std::isfinite(sigma) || sigma <= 0) {
     out << " Without an error estimate the departure from -2/3 (" << to_text(a - kStickyCoolingExponent, 2)
         << ") cannot be weighed.";
@@ -75,7 +94,17 @@ std::string cooling_departure_text(double a, double sigma, std::size_t realizati
     out << "the corrections account for " << to_text(c.expected - kStickyCoolingExponent, 2)
         << " of it; the rest (" << to_text(a - c.expected, 2) << ", " << to_text(from_expected, 2)
         << " sigma) ";
-    if (from_expected <= t95)
+    if (same_starts && follows_its_starts(*same_starts))
+      out << "is these starts' own: the exact sticky gas from them departs as much, so it is the spread of "
+             "the exponent from one start to another at this size, which an error from "
+          << realizations << " realizations, of " << realizations - 1
+          << " degree(s) of freedom, estimates only roughly.";
+    else if (same_starts)
+      out << "is the gas's own: it departs from the sticky gas of its starts by "
+          << to_text(same_starts->difference.value, 2) << ", "
+          << to_text(std::abs(same_starts->difference.value) / same_starts->difference.error, 2)
+          << " paired errors: the window may still hold its approach to the sticky gas.";
+    else if (from_expected <= t95)
       out << "is within the statistics of " << realizations << " realizations: their error has "
           << realizations - 1 << " degree(s) of freedom, and 95 % of Student's t lies within "
           << to_text(t95, 3) << " sigma.";

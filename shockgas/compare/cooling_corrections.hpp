@@ -12,7 +12,10 @@
 // A relative excess d(t) shifts the exponent fitted on [t_min, t_max] by
 // about (ln(1 + d(t_max)) - ln(1 + d(t_min))) / ln(t_max / t_min).
 #include <cstddef>
+#include <optional>
 #include <string>
+
+#include "shockgas/compare/realization_errors.hpp"
 
 namespace shockgas::compare {
 
@@ -34,11 +37,16 @@ CoolingCorrections cooling_corrections(std::size_t N, bool lattice, double t_min
 // The words of report.md for an exponent a with jackknife error sigma over
 // `realizations` (sigma NaN: none) on [t_min, t_max]: the corrections, and a
 // departure from -2/3 beyond 2 sigma flagged with the part of it they account
-// for and, for the rest, whether the statistics of so few realizations do: an
-// error from n realizations has n - 1 degrees of freedom, and 95 % of Student's
-// t lies within student_t_95(n - 1) of it (12.7 sigma for one).
+// for and, for the rest, its measured cause. With same_starts (the exact sticky
+// gas from the same starts, jackknife_paired_T_exponents): the rest is the
+// starts' own where the gas is within 2 paired errors of the sticky gas from
+// them, else the gas's dynamics. Without: whether the statistics of so few
+// realizations account for it: an error from n realizations has n - 1 degrees
+// of freedom, and 95 % of Student's t lies within student_t_95(n - 1) of it
+// (12.7 sigma for one).
 std::string cooling_departure_text(double a, double sigma, std::size_t realizations,
-                                   const CoolingCorrections& c, double t_min, double t_max);
+                                   const CoolingCorrections& c, double t_min, double t_max,
+                                   const std::optional<PairedExponents>& same_starts = std::nullopt);
 
 // The two-sided 95 % quantile of Student's t with `dof` degrees of freedom
 // (tables of Abramowitz & Stegun 26.7; 1.96 as dof -> infinity). dof >= 1.

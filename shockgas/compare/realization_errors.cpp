@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "shockgas/compare/velocity_distribution.hpp"
 #include "shockgas/core/error.hpp"
@@ -26,6 +27,18 @@ std::vector<ScaledDistribution> late_distributions(const ZHistogram& layout, std
   return analyse_velocity_distribution(h, t_min).late;
 }
 
+// The exponent fitted to the mean of the rows but leave_out (all: leave_out =
+// rows()); NaN where too few samples are left in the window.
+double exponent_without(const std::vector<double>& t, const LeaveOneOutMeans& T, std::size_t leave_out,
+                        double t_min, double t_max) {
+  const std::vector<double> mean = T.mean(leave_out);
+  try {
+    return fit_power_law(first(t, mean.size()), mean, t_min, t_max).exponent;
+  } catch (const InputError&) {
+    return kNaN;  // too few samples left in the window without realization leave_out
+  }
+}
+
 }  // namespace
 
 JackknifeEstimate jackknife_T_exponent(const std::vector<double>& t,
@@ -33,14 +46,22 @@ JackknifeEstimate jackknife_T_exponent(const std::vector<double>& t,
                                        double t_max) {
   const LeaveOneOutMeans T(T_rows);
   fit_power_law(first(t, T.mean(T.rows()).size()), T.mean(T.rows()), t_min, t_max);  // refuses bad input
-  return jackknife(T.rows(), [&](std::size_t i) {
-    const std::vector<double> mean = T.mean(i);
-    try {
-      return fit_power_law(first(t, mean.size()), mean, t_min, t_max).exponent;
-    } catch (const InputError&) {
-      return kNaN;  // too few samples left in the window without realization i
-    }
+  return jackknife(T.rows(), [&](std::size_t i) { return exponent_without(t, T, i, t_min, t_max); });
+}
+
+PairedExponents jackknife_paired_T_exponents(const std::vector<double>& t,
+                                             const std::vector<std::vector<double>>& T_rows,
+                                             const std::vector<std::vector<double>>& sticky_rows,
+                                             double t_min, double t_max) {
+  require(sticky_rows.size() == T_rows.size(), "jackknife.sticky_rows", sticky_rows.size(),
+          "one per realization (" + std::to_string(T_rows.size()) + ")");
+  const LeaveOneOutMeans gas(T_rows), sticky(sticky_rows);
+  PairedExponents p;
+  p.sticky = jackknife_T_exponent(t, sticky_rows, t_min, t_max);
+  p.difference = jackknife(gas.rows(), [&](std::size_t i) {
+    return exponent_without(t, gas, i, t_min, t_max) - exponent_without(t, sticky, i, t_min, t_max);
   });
+  return p;
 }
 
 std::vector<WindowExponent> jackknife_decade_windows(const std::vector<double>& t,

@@ -28,6 +28,22 @@ JackknifeEstimate jackknife_T_exponent(const std::vector<double>& t,
                                        const std::vector<std::vector<double>>& T_rows, double t_min,
                                        double t_max);
 
+// The exponent of the exact sticky gas (r = 0) from the same starts on the same
+// window, and the gas's exponent less it, each a jackknife over realizations;
+// the difference leaves realization i out of both at once (paired: what their
+// common start gives both cancels, so its error is that of the dynamics
+// alone). sticky_rows[i]: T(t) of the sticky gas from realization i's start at
+// the same sample times. Throws InputError unless there is one sticky row per
+// row and 2 or more of them, or as jackknife_T_exponent.
+struct PairedExponents {
+  JackknifeEstimate sticky;      // the sticky gas's exponent [1]
+  JackknifeEstimate difference;  // the gas's exponent less the sticky gas's [1]
+};
+PairedExponents jackknife_paired_T_exponents(const std::vector<double>& t,
+                                             const std::vector<std::vector<double>>& T_rows,
+                                             const std::vector<std::vector<double>>& sticky_rows,
+                                             double t_min, double t_max);
+
 // The crossover times (find_crossovers with the given params) of the ensemble
 // mean. r: the restitution coefficient.
 struct CrossoverErrors {

@@ -148,6 +148,33 @@ TEST(Jackknife, DecadeWindowsOfAPowerLaw) {
   }
 }
 
+TEST(Jackknife, PairedExponentsCancelWhatTheStartsShare) {
+  // Each start its own exponent (-2/3 + e_i) and amplitude; the gas from it
+  // that start's T times t^(-0.01): the difference is -0.01 whichever
+  // realization is left out (the log of a mean times t^(-0.01) is a straight
+  // line's shift), its error 0 to rounding, while the sticky gas's own
+  // exponent carries the starts' spread.
+  std::vector<double> t;
+  for (int k = 0; k <= 40; ++k) t.push_back(std::pow(10.0, k / 10.0));
+  std::vector<std::vector<double>> sticky, gas;
+  const double e[] = {0.03, -0.02, 0.01, -0.04};
+  const double amplitude[] = {0.21, 0.2, 0.23, 0.19};
+  for (std::size_t i = 0; i < 4; ++i) {
+    sticky.emplace_back(), gas.emplace_back();
+    for (const double ti : t) {
+      sticky.back().push_back(amplitude[i] * std::pow(ti, -2.0 / 3.0 + e[i]));
+      gas.back().push_back(sticky.back().back() * std::pow(ti, -0.01));
+    }
+  }
+  const PairedExponents p = jackknife_paired_T_exponents(t, gas, sticky, 100, 1e4);
+  EXPECT_NEAR(p.difference.value, -0.01, 1e-12);
+  EXPECT_NEAR(p.difference.error, 0.0, 1e-12);
+  EXPECT_EQ(p.sticky.value, jackknife_T_exponent(t, sticky, 100, 1e4).value);
+  EXPECT_GT(p.sticky.error, 0.005);  // the starts' exponents spread by 0.03
+  sticky.pop_back();
+  EXPECT_THROW(jackknife_paired_T_exponents(t, gas, sticky, 100, 1e4), InputError);
+}
+
 TEST(Jackknife, DistributionErrorsVanishForIdenticalRealizations) {
   // Identical realizations: every leave-one-out mean equals the full one, so the
   // errors are 0 and the values those of analyse_velocity_distribution.

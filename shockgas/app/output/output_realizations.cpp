@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "shockgas/app/output/layout_declarations.hpp"
+#include "shockgas/compare/sticky_same_starts.hpp"
 #include "shockgas/particles/params.hpp"
 
 namespace shockgas::app::layout {
@@ -36,6 +37,17 @@ Emit error_of(F f) {
     if (!r.particles || !r.particles->errors) return;
     const double e = f(*r.particles->errors).error;
     out.json(std::isfinite(e) ? Json(e) : Json(nullptr));
+  };
+}
+
+// f(same starts) -> JackknifeEstimate, emitted as its value or its error (null when not finite).
+template <class F>
+Emit same_starts(F f, bool error) {
+  return [f, error](const RunResults& r, Emitter& out) {
+    if (!r.particles || !r.particles->same_starts) return;
+    const compare::JackknifeEstimate e = f(*r.particles->same_starts);
+    const double x = error ? e.error : e.value;
+    out.json(std::isfinite(x) ? Json(x) : Json(nullptr));
   };
 }
 
@@ -112,7 +124,12 @@ std::vector<Declaration> realization_datasets() {
 std::vector<Declaration> realization_error_keys() {
   const Part p = Part::analysis;
   using E = compare::AnalysisErrors;
+  using P = compare::PairedExponents;
   const std::string when = "with 2 or more realizations";
+  const std::string same_starts_when =
+      "with analysis.T_exponent, particles.r > 0, 2 or more realizations and N x "
+      "realizations <= " +
+      to_text(compare::kSameStartsBodies);
   return {
       key(p, "analysis.jackknife_realizations", "1", "realizations the errors below leave out one at a time",
           when,
@@ -142,6 +159,19 @@ std::vector<Declaration> realization_error_keys() {
                                std::isfinite(w.exponent.error) ? Json(w.exponent.error) : Json(nullptr)}});
             out.json(list);
           }),
+      key(p, "analysis.T_exponent_sticky", "1",
+          "the T exponent of the exact sticky gas (the hull at r = 0) from the same starts, realization by "
+          "realization, on the window of analysis.T_exponent (shockgas/compare/sticky_same_starts.hpp)",
+          same_starts_when, same_starts([](const P& s) { return s.sticky; }, false)),
+      key(p, "analysis.T_exponent_sticky_error", "1", "jackknife error of analysis.T_exponent_sticky",
+          same_starts_when, same_starts([](const P& s) { return s.sticky; }, true)),
+      key(p, "analysis.T_exponent_minus_sticky", "1",
+          "analysis.T_exponent less analysis.T_exponent_sticky: the gas against the sticky gas of its own "
+          "starts",
+          same_starts_when, same_starts([](const P& s) { return s.difference; }, false)),
+      key(p, "analysis.T_exponent_minus_sticky_error", "1",
+          "jackknife error of analysis.T_exponent_minus_sticky, each realization left out of both (paired)",
+          same_starts_when, same_starts([](const P& s) { return s.difference; }, true)),
       key(p, "analysis.t_dissip_error", "time", "jackknife error of analysis.t_dissip (null: not crossed)",
           when, error_of([](const E& e) { return e.crossovers.t_dissip; })),
       key(p, "analysis.t_stick_error", "time", "jackknife error of analysis.t_stick (null: not crossed)",

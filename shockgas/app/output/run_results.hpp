@@ -61,6 +61,9 @@ struct ParticleResults {
   // sample time (shock_mass_law.hpp).
   std::vector<double> n_clusters_exact;
   std::optional<compare::AnalysisErrors> errors;  // jackknife over realizations (2 or more)
+  // The fitted exponent against the exact sticky gas from the same starts
+  // (sticky_same_starts.hpp: r > 0, 2 or more realizations, where it is cheap).
+  std::optional<compare::PairedExponents> same_starts;
 };
 
 struct ContinuumRun {

@@ -71,7 +71,7 @@ void fit_lines(std::ostream& out, const RunResults& r, const compare::PowerLawFi
     out << "- "
         << compare::cooling_departure_text(fit.exponent, jackknife ? jackknife->error : std::nan(""),
                                            jackknife ? jackknife->samples : 1, corrections, fit.t_min,
-                                           fit.t_max)
+                                           fit.t_max, r.particles->same_starts)
         << "\n";
   }
   // The window follows the theory's crossovers; one read off the curve may fall inside it.

@@ -14,6 +14,7 @@
 #include "shockgas/compare/heaviest.hpp"
 #include "shockgas/compare/shock_mass_law.hpp"
 #include "shockgas/compare/snapshot_comparison.hpp"
+#include "shockgas/compare/sticky_same_starts.hpp"
 #include "shockgas/compare/white_noise_references.hpp"
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/interrupt.hpp"
@@ -64,6 +65,20 @@ std::optional<HeaviestCluster> heaviest_cluster(const ParticleResults& r, const 
   return heaviest_final_cluster(s, initial.length(), end.stop.time, particles::BodiesReader(end.final_state));
 }
 
+// The fitted exponent against the exact sticky gas from the same starts, where
+// that gas is cheap (sticky_same_starts.hpp) and T was fitted.
+std::optional<compare::PairedExponents> same_starts_exponents(const ParticleResults& r, const Scene& scene,
+                                                              const InitialCondition& initial) {
+  if (!r.cooling.fit || !compare::same_starts_apply(scene.particles, scene.initial.N)) return std::nullopt;
+  try {
+    return compare::jackknife_paired_T_exponents(r.ensemble.t, r.ensemble.T_by_realization,
+                                                 compare::sticky_T_rows(initial, scene.particles),
+                                                 r.cooling.fit->t_min, r.cooling.fit->t_max);
+  } catch (const InputError&) {
+    return std::nullopt;  // the sticky gas's T cannot be fitted on the window (no finite exponent)
+  }
+}
+
 }  // namespace
 
 ParticleResults run_particles(const Scene& scene, const InitialCondition& initial,
@@ -108,6 +123,7 @@ ParticleResults run_particles(const Scene& scene, const InitialCondition& initia
       r.ensemble.histogram_by_realization, scene.compare.distribution_t_min);
   if (r.exact && scene.particles.clusters)
     r.n_clusters_exact = exact_cluster_counts(*r.exact, r.ensemble.t, scene);
+  r.same_starts = same_starts_exponents(r, scene, initial);
   return r;
 }
 
