@@ -1,7 +1,9 @@
-// The inelastic gas of data/scenes/default.toml (r = 0.5, delta = 10^-2, 2 10^4
-// particles to t = 10^4) counts in time the shocks of Burgers turbulence that
-// hold two or more particles once its clusters have gathered the sticky gas's
-// mass (cluster_count_law.hpp).
+// An inelastic gas of r = 0.5 from white noise (2 10^4 particles to t = 10^4, as
+// data/scenes/default.toml starts) counts in time the shocks of Burgers
+// turbulence that hold two or more particles once its clusters have gathered
+// the sticky gas's mass (cluster_count_law.hpp), and its heavy clusters are the
+// sticky gas's where delta keeps them narrow. (The default scene itself:
+// tests/app/test_default_scene_slow.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,7 +27,7 @@ using namespace testing;
 // apart faster than delta, and some particles are not yet in a cluster
 // (docs/validate.md) -- never above by more than 3 standard errors. A count
 // with lone particles (1.0 10^3 at t = 10^3, 1.6 10^3 at 10^4) fails both.
-TEST(ClusterCountLaw, DefaultSceneCountsTheShocksOfTwoOrMoreParticlesAtItsEnd) {
+TEST(ClusterCountLaw, GasOfDeltaOneHundredthCountsTheShocksOfTwoOrMoreParticlesAtItsEnd) {
   const InitialParams ip = white_noise(20000);
   particles::ParticleParams p;
   p.r = 0.5;
