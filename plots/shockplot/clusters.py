@@ -1,21 +1,21 @@
 """clusters.png: the clusters of the gas -- the number of those of k or more
-particles (particles.min_cluster_particles, 2 by default) in time against N t^(-2/3) (exact for a white-noise start: the shocks
-of Burgers turbulence),
+particles (particles.min_cluster_particles, 2 by default) in time against
+N t^(-2/3) (exact for a white-noise start: the shocks of Burgers turbulence),
 their masses against the exact shock-mass law, and their positions and masses
 against the shocks of the compared solver."""
 import matplotlib.pyplot as plt
 import numpy as np
-from matplotlib.ticker import LogFormatterSciNotation
 
 from .common import (CLUSTER, EXACT, GUIDE, SHOCK, attr, draw_guide, finish, is_gas, label, sticky_regime_start,
                      theory, unit)
+from .log_ticks import TextLogFormatter
 
 DATA = {"color": "tab:blue", "marker": "o", "ms": 3, "lw": 1, "zorder": 3}
 
 
 def minor_labels():
     """Labels on the minor ticks of a log axis that spans less than two decades."""
-    return LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(2, 0.4))
+    return TextLogFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.4))
 
 
 def _count_in_time(ax, f, summary):

@@ -12,9 +12,12 @@ from matplotlib.lines import Line2D
 
 from .animation_data import with_unit
 from .decimate import decimated
+from .log_ticks import install as install_log_ticks
 from .mass_dots import MassDots
 from .run_files import RESULT
 from .saving import save
+
+install_log_ticks()  # tick labels of log axes as text, not mathtext (log_ticks.py)
 
 WIDTH, HEIGHT, DPI = 1280, 720, 100  # 720p: sharp on a projector, small as a file
 FEW_BODIES = 200  # up to this many bodies, the space-time panel draws every one's path

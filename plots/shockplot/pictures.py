@@ -9,12 +9,15 @@ from .distribution import figure_distribution
 from .evolution import figure_evolution
 from .few_bodies import figure_few_bodies
 from .fields import figure_fields
+from .log_ticks import install as install_log_ticks
 from .regimes import figure_regimes
 from .run_files import RESULT, SUMMARY, open_result, read_summary
 from .saving import save
 from .spacetime import figure_spacetime
 from .sweep import figure_sweep_distribution, figure_sweep_temperature
 from .temperature import figure_temperature
+
+install_log_ticks()  # tick labels of log axes as text, not mathtext (log_ticks.py)
 
 SOURCE = f"{RESULT}, {SUMMARY}"  # what the pictures are drawn from (PNG text Source)
 
