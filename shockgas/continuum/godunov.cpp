@@ -5,6 +5,7 @@
 #include "shockgas/continuum/burgers_physics.hpp"
 #include "shockgas/continuum/godunov_scheme.hpp"
 #include "shockgas/continuum/limiters.hpp"
+#include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
 
 namespace shockgas::continuum {
@@ -80,7 +81,7 @@ ContinuumResult solve_godunov(const InitialField& f, const ContinuumParams& p, d
   const CellAverages initial = cell_averages(f, p.cells);
   check_initial_averages(initial, f.length);
 
-  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), boundary);
+  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), boundary, usable_cores());
   const TimeLoop loop{t_end, p.cfl, solver, progress};
   std::size_t steps = 0;
   if (order == 1) {

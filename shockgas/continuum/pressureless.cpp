@@ -4,6 +4,7 @@
 
 #include "shockgas/continuum/godunov_scheme.hpp"
 #include "shockgas/continuum/pressureless_physics.hpp"
+#include "shockgas/core/cores.hpp"
 
 namespace shockgas::continuum {
 
@@ -37,7 +38,7 @@ ContinuumResult solve_pressureless(const InitialField& f, const ContinuumParams&
   const CellAverages initial = cell_averages(f, p.cells);
   check_initial_averages(initial, f.length);
 
-  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), p.boundary);
+  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), p.boundary, usable_cores());
   const std::size_t steps = advance(grid, TimeLoop{t_end, p.cfl, solver, progress},
                                     [&](double dt) { return grid.step_godunov(dt); });
 

@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
+#include "shockgas/core/thread_team.hpp"
 #include "shockgas/particles/event_engine.hpp"
-#include "shockgas/particles/thread_team.hpp"
 
 namespace shockgas::particles::detail {
 

@@ -55,10 +55,10 @@
 #include <vector>
 
 #include "shockgas/core/interrupt.hpp"
+#include "shockgas/core/thread_team.hpp"
 #include "shockgas/particles/domain_prefetcher.hpp"
 #include "shockgas/particles/domain_sampler.hpp"
 #include "shockgas/particles/event_engine.hpp"
-#include "shockgas/particles/thread_team.hpp"
 #include "shockgas/particles/window_domain.hpp"
 #include "shockgas/particles/window_plan.hpp"
 
