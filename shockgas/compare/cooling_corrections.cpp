@@ -48,17 +48,41 @@ double student_t_95(std::size_t dof) {
 
 namespace {
 
+bool usable(const JackknifeEstimate& e) {
+  return std::isfinite(e.value) && std::isfinite(e.error) && e.error > 0;
+}
+
+std::string with_error(const JackknifeEstimate& e, int digits) {
+  return to_text(e.value, digits) + (usable(e) ? " +- " + to_text(e.error, 2) : " (no jackknife error)");
+}
+
 // The sticky gas of the same starts, and the gas against it.
 void same_starts_text(std::ostream& out, const PairedExponents& p) {
   out << " The exact sticky gas from the same starts (the hull at r = 0, realization by realization) gives a "
          "= "
-      << to_text(p.sticky.value, 4) << " +- " << to_text(p.sticky.error, 2)
-      << " on this window; the gas less it: " << to_text(p.difference.value, 2) << " +- "
-      << to_text(p.difference.error, 2) << " (jackknife of the pairs).";
+      << with_error(p.sticky, 4) << " on this window; the gas less it: " << with_error(p.difference, 2)
+      << " (jackknife of the pairs).";
 }
 
-bool follows_its_starts(const PairedExponents& p) {
-  return std::isfinite(p.difference.error) && std::abs(p.difference.value) <= 2 * p.difference.error;
+// What the rest of a departure beyond the corrections is, from the gas and the
+// sticky gas of its starts; false (nothing said) where their errors cannot weigh it.
+bool same_starts_cause(std::ostream& out, const PairedExponents& p, const CoolingCorrections& c,
+                       std::size_t realizations) {
+  if (!usable(p.difference) || !usable(p.sticky)) return false;
+  const double apart = std::abs(p.difference.value) / p.difference.error;
+  if (apart > 2)
+    out << "is the gas's own: it departs from the sticky gas of its starts by "
+        << to_text(p.difference.value, 2) << ", " << to_text(apart, 2)
+        << " paired errors: the window may still hold its approach to the sticky gas.";
+  else if (std::abs(p.sticky.value - c.expected) > 2 * p.sticky.error)
+    out << "is these starts' own: the exact sticky gas from them departs as much, so it is the spread of the "
+           "exponent from one start to another at this size, which an error from "
+        << realizations << " realizations, of " << realizations - 1
+        << " degree(s) of freedom, estimates only roughly.";
+  else
+    out << "is within the errors of the pairs: the gas is within 2 paired errors of the sticky gas of its "
+           "starts, and that within 2 of its own errors of the corrected value.";
+  return true;
 }
 
 }  // namespace
@@ -94,21 +118,12 @@ std::string cooling_departure_text(double a, double sigma, std::size_t realizati
     out << "the corrections account for " << to_text(c.expected - kStickyCoolingExponent, 2)
         << " of it; the rest (" << to_text(a - c.expected, 2) << ", " << to_text(from_expected, 2)
         << " sigma) ";
-    if (same_starts && follows_its_starts(*same_starts))
-      out << "is these starts' own: the exact sticky gas from them departs as much, so it is the spread of "
-             "the exponent from one start to another at this size, which an error from "
-          << realizations << " realizations, of " << realizations - 1
-          << " degree(s) of freedom, estimates only roughly.";
-    else if (same_starts)
-      out << "is the gas's own: it departs from the sticky gas of its starts by "
-          << to_text(same_starts->difference.value, 2) << ", "
-          << to_text(std::abs(same_starts->difference.value) / same_starts->difference.error, 2)
-          << " paired errors: the window may still hold its approach to the sticky gas.";
-    else if (from_expected <= t95)
+    const bool weighed = same_starts && same_starts_cause(out, *same_starts, c, realizations);
+    if (!weighed && from_expected <= t95)
       out << "is within the statistics of " << realizations << " realizations: their error has "
           << realizations - 1 << " degree(s) of freedom, and 95 % of Student's t lies within "
           << to_text(t95, 3) << " sigma.";
-    else
+    else if (!weighed)
       out << "is beyond the statistics of " << realizations << " realizations (95 % within "
           << to_text(t95, 3)
           << " sigma) and the measured corrections: the window may still hold a crossover.";

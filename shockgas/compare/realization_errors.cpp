@@ -55,9 +55,14 @@ PairedExponents jackknife_paired_T_exponents(const std::vector<double>& t,
                                              double t_min, double t_max) {
   require(sticky_rows.size() == T_rows.size(), "jackknife.sticky_rows", sticky_rows.size(),
           "one per realization (" + std::to_string(T_rows.size()) + ")");
-  const LeaveOneOutMeans gas(T_rows), sticky(sticky_rows);
+  // A realization that stopped early has a shorter row: its sticky twin is cut
+  // at the same sample, so that both means average the same starts at every time.
+  std::vector<std::vector<double>> twins = sticky_rows;
+  for (std::size_t i = 0; i < twins.size(); ++i)
+    if (twins[i].size() > T_rows[i].size()) twins[i].resize(T_rows[i].size());
+  const LeaveOneOutMeans gas(T_rows), sticky(twins);
   PairedExponents p;
-  p.sticky = jackknife_T_exponent(t, sticky_rows, t_min, t_max);
+  p.sticky = jackknife_T_exponent(t, twins, t_min, t_max);
   p.difference = jackknife(gas.rows(), [&](std::size_t i) {
     return exponent_without(t, gas, i, t_min, t_max) - exponent_without(t, sticky, i, t_min, t_max);
   });

@@ -33,7 +33,8 @@ JackknifeEstimate jackknife_T_exponent(const std::vector<double>& t,
 // the difference leaves realization i out of both at once (paired: what their
 // common start gives both cancels, so its error is that of the dynamics
 // alone). sticky_rows[i]: T(t) of the sticky gas from realization i's start at
-// the same sample times. Throws InputError unless there is one sticky row per
+// the same sample times, used as far as row i reaches (a realization that
+// stopped early: the same samples of its start). Throws InputError unless there is one sticky row per
 // row and 2 or more of them, or as jackknife_T_exponent.
 struct PairedExponents {
   JackknifeEstimate sticky;      // the sticky gas's exponent [1]

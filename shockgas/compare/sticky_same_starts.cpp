@@ -1,5 +1,6 @@
 #include "shockgas/compare/sticky_same_starts.hpp"
 
+#include "shockgas/core/interrupt.hpp"
 #include "shockgas/particles/simulate.hpp"
 
 namespace shockgas::compare {
@@ -9,7 +10,9 @@ bool same_starts_apply(const particles::ParticleParams& gas, std::size_t N) {
          static_cast<double>(N) * static_cast<double>(gas.realizations) <= kSameStartsBodies;
 }
 
-// The gas's sample times and geometry; nothing else recorded.
+// The gas's sample times and geometry; nothing else recorded. An interrupt
+// (a checkpoint request) ends a hull at a safe point: Interrupted, as the gas's
+// own runs.
 std::vector<std::vector<double>> sticky_T_rows(const InitialCondition& initial,
                                                const particles::ParticleParams& gas) {
   particles::ParticleParams sticky;
@@ -23,8 +26,11 @@ std::vector<std::vector<double>> sticky_T_rows(const InitialCondition& initial,
   sticky.final_clusters = particles::ClusterRecord::never;
   std::vector<std::vector<double>> rows;
   rows.reserve(gas.realizations);
-  for (std::size_t k = 0; k < gas.realizations; ++k)
-    rows.push_back(particles::simulate(initial, k, sticky).series.T);
+  for (std::size_t k = 0; k < gas.realizations; ++k) {
+    particles::RunResult run = particles::simulate(initial, k, sticky);
+    if (run.stop.reason == particles::StopReason::interrupted) throw Interrupted(interrupt_signal());
+    rows.push_back(std::move(run.series.T));
+  }
   return rows;
 }
 

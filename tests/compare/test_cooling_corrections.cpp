@@ -64,6 +64,18 @@ TEST(CoolingCorrections, ADepartureIsGivenItsMeasuredCause) {
   const std::string own = cooling_departure_text(a, sigma, 2, c, 100, 1e4, apart);
   EXPECT_TRUE(says(own, "is the gas's own")) << own;
   EXPECT_FALSE(says(own, "these starts' own")) << own;
+  // A sticky gas at the corrected value, the gas within 2 paired errors of it: the pairs' errors hold it all.
+  const PairedExponents wide{estimate(c.expected, 0.004), estimate(-0.015, 0.01)};
+  const std::string pairs = cooling_departure_text(a, sigma, 2, c, 100, 1e4, wide);
+  EXPECT_TRUE(says(pairs, "within the errors of the pairs")) << pairs;
+  EXPECT_FALSE(says(pairs, "these starts' own")) << pairs;
+  // Pairs without an error (a leave-one-out fit failed) weigh nothing: Student's t of 1 degree of freedom
+  // does.
+  const PairedExponents blind{estimate(-0.6974, 0.0035), estimate(0.0002, std::nan(""))};
+  const std::string none = cooling_departure_text(a, sigma, 2, c, 100, 1e4, blind);
+  EXPECT_TRUE(says(none, "0.0002 (no jackknife error)")) << none;
+  EXPECT_TRUE(says(none, "beyond the statistics of 2 realizations")) << none;
+  EXPECT_FALSE(says(none, "nan")) << none;
 }
 
 }  // namespace

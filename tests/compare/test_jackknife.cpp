@@ -171,6 +171,12 @@ TEST(Jackknife, PairedExponentsCancelWhatTheStartsShare) {
   EXPECT_NEAR(p.difference.error, 0.0, 1e-12);
   EXPECT_EQ(p.sticky.value, jackknife_T_exponent(t, sticky, 100, 1e4).value);
   EXPECT_GT(p.sticky.error, 0.005);  // the starts' exponents spread by 0.03
+  // A realization that stopped early (its row cut at 10^3): its sticky twin is
+  // cut at the same sample, and the difference is still the gas's own -0.01.
+  gas[1].resize(31);
+  const PairedExponents cut = jackknife_paired_T_exponents(t, gas, sticky, 100, 1e4);
+  EXPECT_NEAR(cut.difference.value, -0.01, 1e-12);
+  EXPECT_NEAR(cut.difference.error, 0.0, 1e-12);
   sticky.pop_back();
   EXPECT_THROW(jackknife_paired_T_exponents(t, gas, sticky, 100, 1e4), InputError);
 }
