@@ -81,7 +81,8 @@ ContinuumResult solve_godunov(const InitialField& f, const ContinuumParams& p, d
   const CellAverages initial = cell_averages(f, p.cells);
   check_initial_averages(initial, f.length);
 
-  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), boundary, usable_cores());
+  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), boundary,
+            resolved_threads(p.threads));
   const TimeLoop loop{t_end, p.cfl, solver, progress};
   std::size_t steps = 0;
   if (order == 1) {

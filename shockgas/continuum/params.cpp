@@ -32,6 +32,10 @@ ParameterTable<ContinuumParams> declare() {
       "periodic problem and refuse it");
   t.add(&P::allow_unstable, "allow_unstable", "",
         "run even outside a method's stable range (for stability studies)");
+  t.add(&P::threads, "threads", "1",
+        "threads of the finite-volume solvers (godunov, godunov2, pressureless), the grid cut into as many "
+        "segments of at least 4096 cells: the same cells for any number; 0 = all usable cores",
+        allowed(at_least(0)));
   return t;
 }
 

@@ -41,6 +41,7 @@ struct ContinuumParams {
   Limiter limiter = Limiter::mc;
   Boundary boundary = Boundary::periodic;
   bool allow_unstable = false;
+  std::size_t threads = 0;  // finite-volume solvers; 0 = all usable cores
 
   // The registered solvers that a scene runs unless it names others.
   static std::vector<std::string> default_solver_names();

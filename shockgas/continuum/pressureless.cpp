@@ -38,7 +38,8 @@ ContinuumResult solve_pressureless(const InitialField& f, const ContinuumParams&
   const CellAverages initial = cell_averages(f, p.cells);
   check_initial_averages(initial, f.length);
 
-  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), p.boundary, usable_cores());
+  Grid grid(initial_states(initial), f.length / static_cast<double>(p.cells), p.boundary,
+            resolved_threads(p.threads));
   const std::size_t steps = advance(grid, TimeLoop{t_end, p.cfl, solver, progress},
                                     [&](double dt) { return grid.step_godunov(dt); });
 

@@ -11,6 +11,7 @@
 #include "shockgas/continuum/godunov_scheme.hpp"
 #include "shockgas/continuum/limiters.hpp"
 #include "shockgas/continuum/pressureless_physics.hpp"
+#include "shockgas/continuum/solve.hpp"
 #include "shockgas/core/random.hpp"
 
 namespace shockgas::continuum {
@@ -56,6 +57,26 @@ TEST(GodunovSegments, StepTheCellsOfOnePieceToTheBit) {
     expect_same_cells_in_segments<BurgersContinuity>(
         b, [](auto& g, double dt) { return g.template step_muscl_hancock<McLimiter>(dt); });
     expect_same_cells_in_segments<PressurelessGas>(b, [](auto& g, double dt) { return g.step_godunov(dt); });
+  }
+}
+
+// continuum.threads through the registered solvers: one thread or three, the same fields.
+TEST(GodunovSegments, TheSolversGiveTheSameFieldsOnAnyNumberOfThreads) {
+  InitialField f;
+  f.length = 1.0;
+  f.v0 = [](double x) { return std::sin(2 * M_PI * x) + 0.3 * std::sin(14 * M_PI * x); };
+  f.rho0 = [](double x) { return 1.0 + 0.5 * std::cos(6 * M_PI * x); };
+  for (const char* name : {"godunov", "godunov2", "pressureless"}) {
+    SCOPED_TRACE(name);
+    ContinuumParams p;
+    p.cells = 3 * kSegmentCells + 17;
+    p.threads = 1;
+    const ContinuumResult one = solve(name, f, p, 0.05);
+    p.threads = 3;
+    const ContinuumResult three = solve(name, f, p, 0.05);
+    EXPECT_EQ(one.v, three.v);
+    EXPECT_EQ(one.rho, three.rho);
+    EXPECT_EQ(one.stats.at("steps"), three.stats.at("steps"));
   }
 }
 
