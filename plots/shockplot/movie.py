@@ -13,6 +13,7 @@ from matplotlib.lines import Line2D
 from .animation_data import with_unit
 from .decimate import decimated
 from .log_ticks import install as install_log_ticks
+from .log_ticks import label_colorbar
 from .mass_dots import MassDots
 from .run_files import RESULT
 from .saving import save
@@ -112,6 +113,7 @@ class Movie:
         self.mass_dots = MassDots(self.av, self.dots)
         if isinstance(self.norm, LogNorm):
             cb = self.fig.colorbar(self.dots, cax=self.acb)
+            label_colorbar(cb)
             cb.set_label(with_unit("cluster mass", self.rec.clusters["m_unit"]), fontsize=11)
         else:  # one mass throughout: no scale to read
             self.acb.set_visible(False)
@@ -162,7 +164,10 @@ class Movie:
             norm, cmap, what = Normalize(-vmax, vmax), "RdBu_r", with_unit(f"v ({fl['label']})", fl["v_unit"])
         mesh = self.ast.pcolormesh(xe, te, data, norm=norm, cmap=cmap, shading="flat", antialiased=False,
                                    linewidth=0, rasterized=True)
-        self.fig.colorbar(mesh, ax=self.ast, pad=0.02, fraction=0.06).set_label(what, fontsize=11)
+        cb = self.fig.colorbar(mesh, ax=self.ast, pad=0.02, fraction=0.06)
+        if isinstance(norm, LogNorm):
+            label_colorbar(cb)
+        cb.set_label(what, fontsize=11)
 
     def _time_edges(self, t):
         if self.rec.spacing_log:

@@ -46,3 +46,17 @@ def test_the_installed_scales_label_log_and_symlog_axes_in_text():
     plt.close(fig)
     assert "10⁻²" in labels and "10⁴" in labels and "−10²" in labels
     assert not [t for t in labels if "$" in t], labels
+
+
+def test_a_log_colorbar_labelled_in_text():
+    import numpy as np
+    from matplotlib.colors import LogNorm
+    fig, ax = plt.subplots()
+    mesh = ax.pcolormesh(np.array([[1.0, 10.0], [100.0, 1000.0]]), norm=LogNorm(1.0, 1000.0))
+    cb = fig.colorbar(mesh, ax=ax)
+    log_ticks.label_colorbar(cb)
+    fig.canvas.draw()
+    labels = [t.get_text() for t in cb.ax.yaxis.get_ticklabels() if t.get_text()]
+    plt.close(fig)
+    assert "10²" in labels, labels
+    assert not [t for t in labels if "$" in t], labels
