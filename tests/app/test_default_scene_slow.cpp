@@ -57,12 +57,12 @@ std::vector<double> column(const std::vector<std::vector<double>>& rows, std::si
 // 16 realizations of the scene (its 2 give the curve; more resolve it): at every
 // sample from t = 10^3 on, the gas's mean count lies within 3 standard errors
 // of the sticky gas's from the same starts (the paired difference; measured: at
-// most 2.0) and of the exact law (measured: at most 2.5, the late samples 2-4 %
+// most 1.6) and of the exact law (measured: at most 2.5, the late samples 2-4 %
 // below, where the sticky gas of these starts is 2 % below too; Student's t of 15
 // degrees of freedom exceeds 3 with probability 0.9 %). With delta = 1e-2 (the
-// scene before) the same count was 8-17 standard errors below both (0.82-0.94 of
-// the law), and with k = 2 the pairs of a few particles keep it 4-12 % short
-// (docs/validate.md).
+// scene before) the same count was 8.5-22.5 paired standard errors below the
+// sticky gas's and 8.6-18 below the law (0.82-0.93 of it), and with k = 2 the pairs of a few particles keep
+// it 4-12 % short (docs/validate.md).
 TEST(DefaultScene, ClustersInTimeFollowTheExactShockCountFromTenToTheThreeOn) {
   const Scene scene = load_scene(kDefault);
   ASSERT_GT(scene.particles.min_cluster_particles, 2u);  // the scene states its mass threshold
