@@ -56,8 +56,9 @@ ParameterTable<ParticleParams> declare() {
   t.add(&P::min_cluster_particles, "min_cluster_particles", "1",
         "the clusters counted at the sample times hold at least this many particles: 2 = every cluster of "
         "two or more (a lone body when heavier than 1.5 M / N), counted as the state streams by; above 2, "
-        "those heavier than (k - 1/2) M / N, each sample walking the clusters (the exact shock count drawn "
-        "beside them counts the shocks above the same mass)",
+        "those heavier than (k - 1/2) M / N, each sample walking the clusters of the whole state, about 16 "
+        "ns per body and sample (5 times the run of 10^6 particles to t = 10 with 40 samples); the exact "
+        "shock count drawn beside them counts the shocks above the same mass",
         allowed(at_least(2)));
   t.add(&P::final_clusters, "final_clusters", "",
         "record each realization's clusters of at least two particles at its end (x, v, m; default "
