@@ -118,12 +118,12 @@ std::string cooling_departure_text(double a, double sigma, std::size_t realizati
     out << "the corrections account for " << to_text(c.expected - kStickyCoolingExponent, 2)
         << " of it; the rest (" << to_text(a - c.expected, 2) << ", " << to_text(from_expected, 2)
         << " sigma) ";
-    const bool weighed = same_starts && same_starts_cause(out, *same_starts, c, realizations);
-    if (!weighed && from_expected <= t95)
+    if (same_starts && same_starts_cause(out, *same_starts, c, realizations)) return out.str();
+    if (from_expected <= t95)
       out << "is within the statistics of " << realizations << " realizations: their error has "
           << realizations - 1 << " degree(s) of freedom, and 95 % of Student's t lies within "
           << to_text(t95, 3) << " sigma.";
-    else if (!weighed)
+    else
       out << "is beyond the statistics of " << realizations << " realizations (95 % within "
           << to_text(t95, 3)
           << " sigma) and the measured corrections: the window may still hold a crossover.";

@@ -38,10 +38,12 @@ CoolingCorrections cooling_corrections(std::size_t N, bool lattice, double t_min
 // `realizations` (sigma NaN: none) on [t_min, t_max]: the corrections, and a
 // departure from -2/3 beyond 2 sigma flagged with the part of it they account
 // for and, for the rest, its measured cause. With same_starts (the exact sticky
-// gas from the same starts, jackknife_paired_T_exponents): the rest is the
-// starts' own where the gas is within 2 paired errors of the sticky gas from
-// them, else the gas's dynamics. Without: whether the statistics of so few
-// realizations account for it: an error from n realizations has n - 1 degrees
+// gas from the same starts, jackknife_paired_T_exponents) and finite, positive
+// errors of both: the gas's dynamics where it lies more than 2 paired errors
+// from the sticky gas of its starts; else the starts' own where that sticky gas
+// lies more than 2 of its errors from the corrected value; else within the
+// pairs' errors. Otherwise: whether the statistics of so few realizations
+// account for it: an error from n realizations has n - 1 degrees
 // of freedom, and 95 % of Student's t lies within student_t_95(n - 1) of it
 // (12.7 sigma for one).
 std::string cooling_departure_text(double a, double sigma, std::size_t realizations,

@@ -39,14 +39,20 @@ double exponent_without(const std::vector<double>& t, const LeaveOneOutMeans& T,
   }
 }
 
+// The exponent's jackknife over the rows of T; InputError where the mean of
+// them all cannot be fitted.
+JackknifeEstimate exponent_jackknife(const std::vector<double>& t, const LeaveOneOutMeans& T, double t_min,
+                                     double t_max) {
+  fit_power_law(first(t, T.mean(T.rows()).size()), T.mean(T.rows()), t_min, t_max);  // refuses bad input
+  return jackknife(T.rows(), [&](std::size_t i) { return exponent_without(t, T, i, t_min, t_max); });
+}
+
 }  // namespace
 
 JackknifeEstimate jackknife_T_exponent(const std::vector<double>& t,
                                        const std::vector<std::vector<double>>& T_rows, double t_min,
                                        double t_max) {
-  const LeaveOneOutMeans T(T_rows);
-  fit_power_law(first(t, T.mean(T.rows()).size()), T.mean(T.rows()), t_min, t_max);  // refuses bad input
-  return jackknife(T.rows(), [&](std::size_t i) { return exponent_without(t, T, i, t_min, t_max); });
+  return exponent_jackknife(t, LeaveOneOutMeans(T_rows), t_min, t_max);
 }
 
 PairedExponents jackknife_paired_T_exponents(const std::vector<double>& t,
@@ -60,9 +66,9 @@ PairedExponents jackknife_paired_T_exponents(const std::vector<double>& t,
   std::vector<std::vector<double>> twins = sticky_rows;
   for (std::size_t i = 0; i < twins.size(); ++i)
     if (twins[i].size() > T_rows[i].size()) twins[i].resize(T_rows[i].size());
-  const LeaveOneOutMeans gas(T_rows), sticky(twins);
+  const LeaveOneOutMeans gas(T_rows), sticky(std::move(twins));
   PairedExponents p;
-  p.sticky = jackknife_T_exponent(t, twins, t_min, t_max);
+  p.sticky = exponent_jackknife(t, sticky, t_min, t_max);
   p.difference = jackknife(gas.rows(), [&](std::size_t i) {
     return exponent_without(t, gas, i, t_min, t_max) - exponent_without(t, sticky, i, t_min, t_max);
   });
