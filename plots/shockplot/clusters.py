@@ -45,8 +45,8 @@ def _count_in_time(ax, f, summary):
     if exact_count is not None and start < t[-1] and gas:
         late = t >= start
         ax.plot(t[late], exact_count[late], **EXACT,
-                label=f"exact: shocks heavier than {k - 0.5:g} particles of Burgers turbulence from this white noise "
-                      "(shock-mass law)")
+                label=f"exact: shocks heavier than {k - 0.5:g} particles of Burgers turbulence from this "
+                      "white noise (shock-mass law)")
     elif coefficient is not None and N and start < t[-1] and gas:
         tt = np.geomspace(start, t[-1], 50)
         ax.plot(tt, coefficient * tt ** (-2 / 3), **EXACT,

@@ -85,7 +85,7 @@ class FiniteVolumeGrid {
   FiniteVolumeGrid(const std::vector<State>& cells, double dx, Boundary boundary, std::size_t threads = 1)
       : n_(cells.size()), dx_(dx), boundary_(boundary) {
     assert(n_ >= 2 && dx > 0);
-    const std::size_t segments = threads > 1 ? grid_threads(n_, threads) : 1;
+    const std::size_t segments = grid_threads(n_, threads);
     for (std::size_t k = 0; k <= segments; ++k) begin_.push_back(n_ * k / segments);
     for (std::size_t k = 0; k < segments; ++k) {
       segments_.emplace_back(begin_[k + 1] - begin_[k] + 2 * ghosts);

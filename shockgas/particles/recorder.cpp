@@ -188,9 +188,10 @@ double Recorder::wrap(double x) const { return ring_ ? wrap_into(x, L_) : x; }
 // The clusters of at least two particles at t (RunResult::final_clusters), by
 // the criteria the time series counts with (criteria(t)) and the rule of two
 // or more particles (counted_: MultiParticleRule), whatever
-// particles.min_cluster_particles: the statistics see every cluster. Counted first, then kept: no vector
-// grows past what it holds. They come in order of x but for the cluster across a ring's wrap, which comes
-// last and may belong first (and, should rounding put a centre of mass out of order, are sorted).
+// particles.min_cluster_particles: the statistics see every cluster. Counted
+// first, then kept: no vector grows past what it holds. They come in order of
+// x but for the cluster across a ring's wrap, which comes last and may belong
+// first (and, should rounding put a centre of mass out of order, are sorted).
 Bodies Recorder::final_clusters(const ChainView& s, double t) const {
   const ClusterCriteria at_t = criteria(t);
   const SortedState sorted(s, L_, ring_);
