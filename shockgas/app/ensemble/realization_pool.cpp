@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -42,6 +43,8 @@ struct RealizationPool::State {
   std::size_t workers = 0;
   std::vector<RealizationRecord> finished;
   std::optional<Failure> failure;
+  std::uint64_t news = 0;                // counts the realizations and workers ended
+  std::condition_variable news_changed;  // notified with each
 
   void run(std::size_t i) {
     const WorkItem item = items[i];
@@ -102,6 +105,13 @@ struct RealizationPool::State {
     active[i] = false;
     ++ended;
     finished.push_back(std::move(r));
+    tell();
+  }
+
+  // Under the mutex: wakes RealizationPool::wait.
+  void tell() {
+    ++news;
+    news_changed.notify_all();
   }
 
   void work() {
@@ -125,6 +135,7 @@ struct RealizationPool::State {
     }
     std::lock_guard lock(mutex);
     --workers;
+    tell();
   }
 
   void fail(std::size_t i, std::exception_ptr error, std::string message, bool bad_input) {
@@ -133,6 +144,7 @@ struct RealizationPool::State {
     active[i] = false;
     ++ended;
     if (!failure) failure = Failure{items[i], error, std::move(message), bad_input};
+    tell();
   }
 };
 
@@ -219,6 +231,14 @@ double RealizationPool::sim_time() const {
 bool RealizationPool::finished() const {
   std::lock_guard lock(state_->mutex);
   return state_->workers == 0;
+}
+
+bool RealizationPool::wait(std::chrono::milliseconds at_most) {
+  std::unique_lock lock(state_->mutex);
+  const bool news =
+      state_->news_changed.wait_for(lock, at_most, [this] { return state_->news != news_seen_; });
+  news_seen_ = state_->news;
+  return news;
 }
 
 }  // namespace shockgas::app

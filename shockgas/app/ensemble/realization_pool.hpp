@@ -4,6 +4,7 @@
 // progress bar). Each realization is particles::simulate on its own initial
 // bodies, exactly as particles::run_ensemble runs it, so its record does not
 // depend on where or beside what it ran.
+#include <chrono>
 #include <cstddef>
 #include <exception>
 #include <filesystem>
@@ -61,12 +62,18 @@ class RealizationPool {
   std::uint64_t events() const;
   // Every item finished, or one failed and the others stopped.
   bool finished() const;
+  // Returns once a realization ended (finished or failed) or a worker thread
+  // ended since the last call returned (true), or after `at_most` without
+  // either (false): a caller's poll that wakes as soon as there is news
+  // instead of sleeping a fixed time.
+  bool wait(std::chrono::milliseconds at_most);
 
  private:
   struct State;
   std::shared_ptr<State> state_;
   std::vector<std::thread> threads_;
   bool abandon_;
+  std::uint64_t news_seen_ = 0;  // State::news when wait last returned
 };
 
 }  // namespace shockgas::app

@@ -56,7 +56,7 @@ ComputedRecords compute_alone(std::shared_ptr<const EnsemblePlan> plan, std::siz
   while (!pool.finished()) {
     progress.update(done(), pool.sim_time(), pool.events());
     keep_finished();
-    std::this_thread::sleep_for(kPoll);
+    pool.wait(kPoll);
   }
   keep_finished();
   if (auto failure = pool.failure()) std::rethrow_exception(failure->error);
@@ -114,7 +114,7 @@ class Gatherer {
                   pack_items({pool_->fraction(), 0.0, 0.0}, pool_->running()));  // for rank 1 to name us
         beat = Clock::now();
       }
-      std::this_thread::sleep_for(kPoll);
+      pool_->wait(kPoll);
     }
     for (int j = 1; j < job_.size(); ++j) job_.send(j, kDone, {});
     if (checkpoints_) checkpoints_->save_at_end();  // as compute_alone

@@ -56,7 +56,10 @@ class Worker {
                              running()));
         beat = Clock::now();
       }
-      std::this_thread::sleep_for(kPoll);
+      if (pool_)
+        pool_->wait(kPoll);
+      else
+        std::this_thread::sleep_for(kPoll);
     }
   }
 
