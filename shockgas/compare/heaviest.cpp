@@ -23,14 +23,9 @@ std::optional<particles::Cluster> heaviest_cluster(const Bodies& state, double L
                            [](const auto& a, const auto& b) { return a.m < b.m; });
 }
 
-// The first of the heaviest in the walk's order, as max_element picks it.
 std::optional<particles::Cluster> heaviest_cluster(const particles::StateReader& state, double L,
                                                    const particles::ClusterCriteria& criteria) {
-  std::optional<particles::Cluster> heaviest;
-  particles::visit_clusters(state, L, criteria, [&](const particles::Cluster& c) {
-    if (!heaviest || heaviest->m < c.m) heaviest = c;
-  });
-  return heaviest;
+  return particles::heaviest_cluster(state, L, criteria);
 }
 
 }  // namespace shockgas::compare

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "shockgas/core/bodies.hpp"
@@ -58,6 +59,10 @@ std::vector<Cluster> find_clusters(const Bodies& b, double L, const ClusterCrite
 // find_clusters accepts (sorted; ring: in [0, L)); the criteria are checked.
 void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c,
                     const std::function<void(const Cluster&)>& visit);
+// The heaviest of those clusters, the first of the heaviest in their order (as
+// a max_element over them picks it), by the same walk without making the
+// lighter ones; none for an empty state.
+std::optional<Cluster> heaviest_cluster(const StateReader& state, double L, const ClusterCriteria& c);
 
 // Default criteria for a gas with sub-threshold velocity delta and mean initial
 // spacing a = L / N, at time t (the sticky regime, t_stick << t < t_valid ~ delta^-3):

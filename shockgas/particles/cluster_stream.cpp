@@ -13,6 +13,7 @@
 #include <array>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "shockgas/core/error.hpp"
@@ -48,17 +49,18 @@ std::size_t ring_start(const StateReader& state, double L, const ClusterCriteria
 }
 
 // The walk: bodies handed in order from its start; a pair that does not join
-// closes a cluster (visited) and opens the next; bodies from before the start
-// join the last cluster across the wrap, unrolled by + L.
+// closes a cluster (close(sums): its sums, made into a Cluster by whoever needs
+// it) and opens the next; bodies from before the start join the last cluster
+// across the wrap, unrolled by + L.
+template <class Close>
 class ClusterWalk {
  public:
-  ClusterWalk(double L, const ClusterCriteria& c, const std::function<void(const Cluster&)>& visit)
-      : L_(L), c_(c), visit_(visit) {}
+  ClusterWalk(double L, const ClusterCriteria& c, Close& close) : L_(L), c_(c), close_(close) {}
   void add(std::size_t i, double x, double v, double m) {
     if (!started_) {
       sums_.start(i, x, v), started_ = true;
     } else if (!c_.joins(x - x_last_, v - v_last_)) {
-      visit_(sums_.done(L_));
+      close_(std::as_const(sums_));
       sums_.start(i, x, v);
     }
     sums_.add(x, v, m);
@@ -66,12 +68,12 @@ class ClusterWalk {
   }
   void add_across_wrap(double x, double v, double m) { sums_.add(x + L_, v, m); }
   bool started() const { return started_; }
-  void finish() { visit_(sums_.done(L_)); }
+  void finish() { close_(std::as_const(sums_)); }
 
  private:
   double L_;
   const ClusterCriteria& c_;
-  const std::function<void(const Cluster&)>& visit_;
+  Close& close_;
   detail::ClusterSums sums_;
   bool started_ = false;
   double x_last_ = 0, v_last_ = 0;
@@ -79,9 +81,10 @@ class ClusterWalk {
 
 // The walk from `start` (ring_start), the bodies before it read from the
 // state once more.
+template <class Close>
 void walk_from(const StateReader& state, double L, const ClusterCriteria& c, std::size_t start,
-               const std::function<void(const Cluster&)>& visit) {
-  ClusterWalk walk(L, c, visit);
+               Close& close) {
+  ClusterWalk walk(L, c, close);
   each_body(state, [&](std::size_t i, double x, double v, double m) {
     if (i >= start) walk.add(i, x, v, m);
   });
@@ -99,11 +102,11 @@ constexpr std::size_t kHeldBeforeStart = std::size_t{1} << 16;
 // The same walk in one read where the state knows its last body: on a ring
 // that body settles the wrap first (whether body 0 joins it), so the start is
 // known at the first break, and the bodies before it wait in a buffer.
-bool walk_once(const StateReader& state, double L, const ClusterCriteria& c,
-               const std::function<void(const Cluster&)>& visit) {
+template <class Close>
+bool walk_once(const StateReader& state, double L, const ClusterCriteria& c, Close& close) {
   const std::optional<std::array<double, 3>> last = state.last();
   if (L > 0 && !last) return false;
-  ClusterWalk walk(L, c, visit);
+  ClusterWalk walk(L, c, close);
   bool wraps = false;  // body 0 joins the last across the wrap: start at the first break
   bool overflow = false;
   std::vector<std::array<double, 3>> before;
@@ -129,16 +132,34 @@ bool walk_once(const StateReader& state, double L, const ClusterCriteria& c,
   return true;
 }
 
+// The whole walk, each cluster's sums to close(sums) in find_clusters' order.
+// A walk that gives up (too many bodies before the start) does so before its
+// first close, and closes nothing after it.
+template <class Close>
+void walk(const StateReader& state, double L, const ClusterCriteria& c, Close& close) {
+  detail::require_cluster_inputs(L, c);
+  if (state.size() == 0) return;
+  if (walk_once(state, L, c, close)) return;
+  walk_from(state, L, c, L > 0 ? ring_start(state, L, c) : 0, close);
+}
+
 }  // namespace
 
 void visit_clusters(const StateReader& state, double L, const ClusterCriteria& c,
                     const std::function<void(const Cluster&)>& visit) {
-  detail::require_cluster_inputs(L, c);
-  if (state.size() == 0) return;
-  // A walk that gives up (too many bodies before the start) does so before its
-  // first visit, and visits nothing after it.
-  if (walk_once(state, L, c, visit)) return;
-  walk_from(state, L, c, L > 0 ? ring_start(state, L, c) : 0, visit);
+  auto close = [&](const detail::ClusterSums& sums) { visit(sums.done(L)); };
+  walk(state, L, c, close);
+}
+
+// Only a cluster heavier than the heaviest so far is made (its sums' mass is
+// the Cluster's m, bit for bit).
+std::optional<Cluster> heaviest_cluster(const StateReader& state, double L, const ClusterCriteria& c) {
+  std::optional<Cluster> heaviest;
+  auto close = [&](const detail::ClusterSums& sums) {
+    if (!heaviest || heaviest->m < sums.mass()) heaviest = sums.done(L);
+  };
+  walk(state, L, c, close);
+  return heaviest;
 }
 
 }  // namespace shockgas::particles

@@ -14,20 +14,27 @@ namespace shockgas::particles::detail {
 class ClusterSums {
  public:
   void start(std::size_t first, double x, double v) {
-    k_ = {first, 0, 0.0, 0.0, 0.0};
+    first_ = first, count_ = 0, m_ = 0;
     x_first_ = x, v_first_ = v, m_dx_ = 0, mv_ = 0;
   }
   void add(double x, double v, double m) {  // x unrolled past the wrap
-    k_.m += m;
+    m_ += m;
     m_dx_ += m * (x - x_first_);
     mv_ += m * v;
-    ++k_.count;
+    ++count_;
   }
+  double mass() const { return m_; }
+  // x = x_first + sum m (x - x_first) / M, v = sum m v / M. One body: its m_dx
+  // is +0 (m finite), so x is x_first + 0 without the division, the same bits.
   Cluster done(double L) const {
-    Cluster k = k_;
-    k.x = x_first_ + m_dx_ / k.m;
-    k.v = k.count == 1 ? v_first_ : mv_ / k.m;
-    if (L > 0) {
+    Cluster k{first_, count_, 0.0, v_first_, m_};
+    if (count_ == 1) {
+      k.x = x_first_ + 0.0;
+    } else {
+      k.x = x_first_ + m_dx_ / m_;
+      k.v = mv_ / m_;
+    }
+    if (L > 0 && !(k.x >= 0 && k.x < L)) {  // fmod gives x itself on [0, L)
       k.x = std::fmod(k.x, L);
       if (k.x < 0) k.x += L;
       if (k.x >= L) k.x = 0.0;  // rounding of fmod near L
@@ -36,8 +43,10 @@ class ClusterSums {
   }
 
  private:
-  Cluster k_{};
-  double x_first_ = 0, v_first_ = 0, m_dx_ = 0, mv_ = 0;
+  // Scalars, not a Cluster: done() reads them right after add() wrote them,
+  // and a wide copy of a struct just written one field at a time stalls.
+  std::size_t first_ = 0, count_ = 0;
+  double m_ = 0, x_first_ = 0, v_first_ = 0, m_dx_ = 0, mv_ = 0;
 };
 
 // The checks of L and of the criteria both walks make.

@@ -238,5 +238,42 @@ TEST(ClusterFinder, StreamedClustersAreFindClustersToTheBit) {
   }
 }
 
+// The heaviest cluster of the walk, made without the lighter ones: the first of
+// the heaviest of find_clusters (as max_element picks it), to the bit, on both
+// walks; ties (clusters of equal mass) go to the first in find_clusters' order.
+TEST(ClusterFinder, HeaviestClusterIsTheFirstHeaviestOfFindClustersToTheBit) {
+  const ClusterCriteria c{0.5, 0.02};
+  auto first_heaviest = [](const std::vector<Cluster>& all) {
+    return *std::max_element(all.begin(), all.end(),
+                             [](const Cluster& a, const Cluster& b) { return a.m < b.m; });
+  };
+  auto expect_heaviest = [&](const Bodies& b, double L, bool knows_last) {
+    const std::optional<Cluster> h = heaviest_cluster(ChunkedBodies(b, knows_last), L, c);
+    ASSERT_TRUE(h);
+    expect_same_clusters({*h}, {first_heaviest(find_clusters(b, L, c))});
+  };
+  Bodies equal;  // clusters of two equal bodies: every cluster is as heavy
+  for (int k = 0; k < 30; ++k)
+    equal.push_back(3.0 * k + 0.5, 0.1 * k, 1.0), equal.push_back(3.0 * k + 0.6, 0.1 * k, 1.0);
+  Bodies long_head;  // the one read gives up before the ring's start
+  for (int i = 0; i < 70000; ++i) long_head.push_back(0.1 * i, 1e-3 * (i % 3), 1.0);
+  for (int k = 0; k < 20; ++k)
+    long_head.push_back(7000.0 + 2.0 * k, 5.0, 1.0), long_head.push_back(7000.2 + 2.0 * k, 5.0, 1.0);
+  long_head.push_back(7099.95, long_head.v.front(), 1.0);
+  for (bool knows_last : {false, true}) {
+    SCOPED_TRACE(knows_last ? "one read" : "three reads");
+    for (std::uint64_t seed = 1; seed <= 20; ++seed)
+      for (bool wrap : {false, true}) {
+        const Bodies b = clumpy_state(seed, wrap);
+        expect_heaviest(b, 100.0, knows_last);
+        expect_heaviest(b, 0.0, knows_last);
+      }
+    expect_heaviest(equal, 90.0, knows_last);
+    expect_heaviest(equal, 0.0, knows_last);
+    expect_heaviest(long_head, 7100.0, knows_last);
+    EXPECT_FALSE(heaviest_cluster(ChunkedBodies(Bodies{}, knows_last), 1.0, c));
+  }
+}
+
 }  // namespace
 }  // namespace shockgas::particles
