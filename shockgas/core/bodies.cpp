@@ -51,32 +51,36 @@ double temperature(const Bodies& b) {
 
 void TemperatureSums::add(const double* v, const double* m, std::size_t count) {
   while (count > 0) {
+    if (v_.empty() && count >= kBlock) {  // a whole block where it lies: no copy
+      take_block(v, m, kBlock);
+      v += kBlock, m += kBlock, count -= kBlock;
+      continue;
+    }
     if (v_.empty()) v_.reserve(kBlock), m_.reserve(kBlock);
     const std::size_t take = std::min(count, kBlock - v_.size());
     v_.insert(v_.end(), v, v + take), m_.insert(m_.end(), m, m + take);
     v += take, m += take, count -= take;
-    if (v_.size() == kBlock) take_block();
+    if (v_.size() == kBlock) take_block(v_.data(), m_.data(), kBlock), v_.clear(), m_.clear();
   }
 }
 
-void TemperatureSums::take_block() {
+void TemperatureSums::take_block(const double* v, const double* m, std::size_t n) {
   double mass = 0, momentum = 0;
-  for (std::size_t i = 0; i < v_.size(); ++i) mass += m_[i], momentum += m_[i] * v_[i];
+  for (std::size_t i = 0; i < n; ++i) mass += m[i], momentum += m[i] * v[i];
   if (mass > 0) {
     const double mean = momentum / mass;
     double squares = 0;
-    for (std::size_t i = 0; i < v_.size(); ++i) squares += m_[i] * (v_[i] - mean) * (v_[i] - mean);
+    for (std::size_t i = 0; i < n; ++i) squares += m[i] * (v[i] - mean) * (v[i] - mean);
     const double total = mass_ + mass, d = mean - mean_;
     squares_ += squares + d * d * (mass_ * mass / total);
     mean_ += d * (mass / total);
     mass_ = total;
   }
-  v_.clear(), m_.clear();
 }
 
 double TemperatureSums::temperature() const {
   TemperatureSums all = *this;
-  if (!all.v_.empty()) all.take_block();
+  if (!all.v_.empty()) all.take_block(all.v_.data(), all.m_.data(), all.v_.size());
   return all.mass_ > 0 ? all.squares_ / all.mass_ : 0.0;
 }
 

@@ -64,7 +64,8 @@ class TemperatureSums {
   double temperature() const;
 
  private:
-  void take_block();
+  // Adds the sums of the bodies [0, n) (a whole block but at the end).
+  void take_block(const double* v, const double* m, std::size_t n);
   std::vector<double> v_, m_;  // the block being filled
   double mass_ = 0, mean_ = 0, squares_ = 0;
 };
