@@ -240,6 +240,9 @@ class SampleBatch {
            (times_[first_ + count_] < end || (inclusive && times_[first_ + count_] <= end)))
       ++count_;
     domains_ = domains;
+    // A larger batch: the smaller one's parts are freed first, so that both
+    // are never held at once (assign would make the new before freeing the old).
+    if (domains * count_ > parts_.capacity()) parts_ = std::vector<StretchPart>();
     parts_.assign(domains * count_, StretchPart{});
     sorted_.assign(members, {});
   }
