@@ -1,5 +1,10 @@
 #include "shockgas/compare/chernoff_table.hpp"
 
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -58,17 +63,66 @@ ChernoffLogGTable::ChernoffLogGTable(double lo, double hi, std::vector<double> c
 }
 
 double ChernoffLogGTable::log_g(double x) const {
-  if (!(x >= lo_ && x <= hi_)) return chernoff_log_g(x);
+  double out = 0;
+  log_g(std::span<const double>(&x, 1), std::span<double>(&out, 1));
+  return out;
+}
+
+// Clenshaw's sum_k c_k T_k(t) is a chain of dependent operations (about 240
+// cycles of latency for degree 20): up to kLanes points run side by side, each
+// with the operations of one point alone, so their chains overlap and each
+// result has the same bits as alone.
+void ChernoffLogGTable::log_g(std::span<const double> x, std::span<double> out) const {
+  require(out.size() == x.size(), "chernoff_table.out", out.size(), "as many values as arguments");
+  constexpr std::size_t kLanes = 8;
   const auto panels = static_cast<int>(coefficients_.size() / kTerms);
-  const int p = std::min(panels - 1, static_cast<int>((x - lo_) / kPanel));
-  const double t = (x - (lo_ + (p + 0.5) * kPanel)) / (0.5 * kPanel);  // in [-1, 1]
-  const double* c = coefficients_.data() + static_cast<std::size_t>(p) * kTerms;
-  double b1 = 0, b2 = 0;  // Clenshaw: sum_k c_k T_k(t)
-  for (int k = kDegree; k >= 1; --k) {
-    const double b0 = 2 * t * b1 - b2 + c[k];
-    b2 = b1, b1 = b0;
+  for (std::size_t first = 0; first < x.size(); first += kLanes) {
+    const std::size_t lanes = std::min(kLanes, x.size() - first);
+    // Every lane runs (those past the points and past the table on t = 0 and
+    // panel 0, their sums unused): loops of a fixed length, held in registers.
+    double t[kLanes] = {}, b1[kLanes] = {}, b2[kLanes] = {};
+    const double* c[kLanes];
+    bool direct[kLanes];
+    for (std::size_t j = 0; j < kLanes; ++j) {
+      c[j] = coefficients_.data();
+      direct[j] = true;
+      if (j >= lanes) continue;
+      const double xj = x[first + j];
+      if (!(xj >= lo_ && xj <= hi_)) {
+        out[first + j] = chernoff_log_g(xj);
+        continue;
+      }
+      const int p = std::min(panels - 1, static_cast<int>((xj - lo_) / kPanel));
+      t[j] = (xj - (lo_ + (p + 0.5) * kPanel)) / (0.5 * kPanel);  // in [-1, 1]
+      c[j] += static_cast<std::size_t>(p) * kTerms;
+      direct[j] = false;
+    }
+#if defined(__AVX2__)
+    // Four lanes to a vector, each lane the scalar operations below (IEEE
+    // operations lane by lane, no contraction): the same bits.
+    const __m256d two = _mm256_set1_pd(2.0);
+    __m256d tv[2], b1v[2], b2v[2];
+    for (int h = 0; h < 2; ++h)
+      tv[h] = _mm256_loadu_pd(t + 4 * h), b1v[h] = _mm256_setzero_pd(), b2v[h] = _mm256_setzero_pd();
+    for (int k = kDegree; k >= 1; --k)
+      for (int h = 0; h < 2; ++h) {
+        const double* const* ch = c + 4 * h;
+        const __m256d ck = _mm256_set_pd(ch[3][k], ch[2][k], ch[1][k], ch[0][k]);
+        const __m256d b0 =
+            _mm256_add_pd(_mm256_sub_pd(_mm256_mul_pd(_mm256_mul_pd(two, tv[h]), b1v[h]), b2v[h]), ck);
+        b2v[h] = b1v[h], b1v[h] = b0;
+      }
+    for (int h = 0; h < 2; ++h) _mm256_storeu_pd(b1 + 4 * h, b1v[h]), _mm256_storeu_pd(b2 + 4 * h, b2v[h]);
+#else
+    for (int k = kDegree; k >= 1; --k)
+      for (std::size_t j = 0; j < kLanes; ++j) {
+        const double b0 = 2 * t[j] * b1[j] - b2[j] + c[j][k];
+        b2[j] = b1[j], b1[j] = b0;
+      }
+#endif
+    for (std::size_t j = 0; j < lanes; ++j)
+      if (!direct[j]) out[first + j] = t[j] * b1[j] - b2[j] + c[j][0];
   }
-  return t * b1 - b2 + c[0];
 }
 
 double ChernoffLogGTable::g(double x) const { return std::exp(log_g(x)); }

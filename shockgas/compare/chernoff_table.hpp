@@ -13,6 +13,7 @@
 // difference is below 1e-14 max(1, |ln g|), the direct evaluation's own
 // rounding (tests/compare/test_cluster_velocity_law.cpp). Building costs 92 x 21 evaluations of ln g
 // (~0.1 s); a look-up, one Clenshaw sum.
+#include <span>
 #include <vector>
 
 namespace shockgas::compare {
@@ -26,6 +27,9 @@ class ChernoffLogGTable {
   // panels past lo) and coefficients.
   ChernoffLogGTable(double lo, double hi, std::vector<double> coefficients);
   double log_g(double x) const;
+  // log_g at each x, into out (as many): the same bits as one at a time, in
+  // less time (the points' sums run side by side).
+  void log_g(std::span<const double> x, std::span<double> out) const;
   double g(double x) const;
   double lo() const { return lo_; }
   double hi() const { return hi_; }

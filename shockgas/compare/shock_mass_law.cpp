@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "shockgas/compare/chernoff_table.hpp"
 #include "shockgas/compare/cluster_velocity_law.hpp"
@@ -35,12 +36,18 @@ double self_convolution(double mu) {
   const ChernoffLogGTable& g = chernoff_log_g_table();
   const GaussRule& r = rule8();
   const int panels = static_cast<int>(std::ceil(kUMax / kUPanel));
+  const std::size_t nodes = r.x.size();
+  std::vector<double> at(2 * nodes), log_g(2 * nodes);  // g's arguments mu/2 + u, mu/2 - u of a panel
   double sum = 0;
-  for (int p = 0; p < panels; ++p)
-    for (std::size_t i = 0; i < r.x.size(); ++i) {
+  for (int p = 0; p < panels; ++p) {
+    for (std::size_t i = 0; i < nodes; ++i) {
       const double u = kUPanel * (p + 0.5 + 0.5 * r.x[i]);
-      sum += 0.5 * kUPanel * r.w[i] * std::exp(g.log_g(0.5 * mu + u) + g.log_g(0.5 * mu - u));
+      at[2 * i] = 0.5 * mu + u, at[2 * i + 1] = 0.5 * mu - u;
     }
+    g.log_g(at, log_g);
+    for (std::size_t i = 0; i < nodes; ++i)
+      sum += 0.5 * kUPanel * r.w[i] * std::exp(log_g[2 * i] + log_g[2 * i + 1]);
+  }
   return 2 * sum;
 }
 

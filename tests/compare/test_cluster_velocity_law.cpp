@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "shockgas/compare/goodness_of_fit.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/initial_condition.hpp"
+#include "shockgas/core/random.hpp"
 
 namespace shockgas::compare {
 namespace {
@@ -39,6 +41,37 @@ TEST(ClusterVelocityLaw, TableOfLnGIsTheDirectEvaluation) {
     const double direct = chernoff_log_g(x);
     EXPECT_NEAR(table.log_g(x), direct, 1e-13 * std::max(1.0, std::abs(direct))) << x;
   }
+}
+
+// Points taken side by side (8 at a time, and the rest) give each the bits of
+// Clenshaw's sum for that point alone, written out here from the coefficients;
+// past the table's range, the direct evaluation.
+TEST(ClusterVelocityLaw, LnGOfManyPointsIsEachPointsOwnSumToTheBit) {
+  const ChernoffLogGTable& table = chernoff_log_g_table();
+  const auto& c = table.coefficients();
+  auto alone = [&](double x) {
+    if (!(x >= table.lo() && x <= table.hi())) return chernoff_log_g(x);
+    const int panels = static_cast<int>(c.size() / 21);
+    const int p = std::min(panels - 1, static_cast<int>((x - table.lo()) / 0.25));
+    const double t = (x - (table.lo() + (p + 0.5) * 0.25)) / 0.125;
+    const double* a = c.data() + 21 * p;
+    double b1 = 0, b2 = 0;
+    for (int k = 20; k >= 1; --k) {
+      const double b0 = 2 * t * b1 - b2 + a[k];
+      b2 = b1, b1 = b0;
+    }
+    return t * b1 - b2 + a[0];
+  };
+  Rng rng(7);
+  for (std::size_t n : {1, 7, 8, 9, 16, 21}) {
+    std::vector<double> x(n), out(n);
+    for (double& xi : x) xi = rng.uniform(-12.0, 13.0);  // some past either end
+    x.front() = 12.0;                                    // the last panel's right end
+    table.log_g(x, out);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(out[i], alone(x[i])) << "x = " << x[i] << ", n = " << n;
+  }
+  std::vector<double> two(2), one(1);
+  EXPECT_THROW(table.log_g(two, one), InputError);
 }
 
 // n(alpha, beta) = 2 (alpha + beta) g(alpha) g(beta) K(alpha + beta) integrated over
