@@ -51,36 +51,83 @@ double temperature(const Bodies& b) {
 
 void TemperatureSums::add(const double* v, const double* m, std::size_t count) {
   while (count > 0) {
-    if (v_.empty() && count >= kBlock) {  // a whole block where it lies: no copy
-      take_block(v, m, kBlock);
-      v += kBlock, m += kBlock, count -= kBlock;
+    if (v_.empty() && count >= kBlock) {  // whole blocks where they lie: no copy
+      const std::size_t blocks = count / kBlock;
+      take_blocks(v, m, blocks);
+      v += blocks * kBlock, m += blocks * kBlock, count -= blocks * kBlock;
       continue;
     }
     if (v_.empty()) v_.reserve(kBlock), m_.reserve(kBlock);
     const std::size_t take = std::min(count, kBlock - v_.size());
     v_.insert(v_.end(), v, v + take), m_.insert(m_.end(), m, m + take);
     v += take, m += take, count -= take;
-    if (v_.size() == kBlock) take_block(v_.data(), m_.data(), kBlock), v_.clear(), m_.clear();
+    if (v_.size() == kBlock) take_blocks(v_.data(), m_.data(), 1), v_.clear(), m_.clear();
   }
 }
 
-void TemperatureSums::take_block(const double* v, const double* m, std::size_t n) {
-  double mass = 0, momentum = 0;
-  for (std::size_t i = 0; i < n; ++i) mass += m[i], momentum += m[i] * v[i];
-  if (mass > 0) {
-    const double mean = momentum / mass;
+// A block's first pass: M_b, P_b and its mean; the energy's sum runs on from
+// the earlier blocks' (one sum in the bodies' order).
+TemperatureSums::FirstPass TemperatureSums::first_pass(const double* v, const double* m, std::size_t n) {
+  double mass = 0, momentum = 0, energy = energy_;
+  for (std::size_t i = 0; i < n; ++i)
+    mass += m[i], momentum += m[i] * v[i], energy += 0.5 * m[i] * v[i] * v[i];
+  energy_ = energy;
+  return {mass, mass > 0 ? momentum / mass : 0.0};
+}
+
+// C_b = sum m (v - mean_b)^2 of a block, folded into the totals (a block
+// without mass is left out).
+void TemperatureSums::combine(FirstPass b, double squares) {
+  if (!(b.mass > 0)) return;
+  const double total = mass_ + b.mass, d = b.mean - mean_;
+  squares_ += squares + d * d * (mass_ * b.mass / total);
+  mean_ += d * (b.mass / total);
+  mass_ = total;
+}
+
+// Blocks in a row: block k's second pass runs beside block k + 1's first, the
+// sums of each block and their order as one block at a time (the same bits;
+// each pass alone is one chain of dependent additions, two overlap).
+void TemperatureSums::take_blocks(const double* v, const double* m, std::size_t blocks) {
+  FirstPass previous = first_pass(v, m, kBlock);
+  for (std::size_t k = 1; k <= blocks; ++k) {
+    const double* pv = v + (k - 1) * kBlock;
+    const double* pm = m + (k - 1) * kBlock;
+    const double mean = previous.mean;
     double squares = 0;
-    for (std::size_t i = 0; i < n; ++i) squares += m[i] * (v[i] - mean) * (v[i] - mean);
-    const double total = mass_ + mass, d = mean - mean_;
-    squares_ += squares + d * d * (mass_ * mass / total);
-    mean_ += d * (mass / total);
-    mass_ = total;
+    if (k == blocks) {
+      for (std::size_t i = 0; i < kBlock; ++i) squares += pm[i] * (pv[i] - mean) * (pv[i] - mean);
+      combine(previous, squares);
+      break;
+    }
+    const double* nv = pv + kBlock;
+    const double* nm = pm + kBlock;
+    double mass = 0, momentum = 0, energy = energy_;
+    for (std::size_t i = 0; i < kBlock; ++i) {
+      squares += pm[i] * (pv[i] - mean) * (pv[i] - mean);
+      mass += nm[i], momentum += nm[i] * nv[i], energy += 0.5 * nm[i] * nv[i] * nv[i];
+    }
+    energy_ = energy;
+    combine(previous, squares);
+    previous = {mass, mass > 0 ? momentum / mass : 0.0};
   }
+}
+
+double TemperatureSums::kinetic_energy() const {
+  double energy = energy_;
+  for (std::size_t i = 0; i < v_.size(); ++i) energy += 0.5 * m_[i] * v_[i] * v_[i];
+  return energy;
 }
 
 double TemperatureSums::temperature() const {
   TemperatureSums all = *this;
-  if (!all.v_.empty()) all.take_block(all.v_.data(), all.m_.data(), all.v_.size());
+  if (!all.v_.empty()) {  // the block being filled, as it stands
+    const FirstPass b = all.first_pass(all.v_.data(), all.m_.data(), all.v_.size());
+    double squares = 0;
+    for (std::size_t i = 0; i < all.v_.size(); ++i)
+      squares += all.m_[i] * (all.v_[i] - b.mean) * (all.v_[i] - b.mean);
+    all.combine(b, squares);
+  }
   return all.mass_ > 0 ? all.squares_ / all.mass_ : 0.0;
 }
 

@@ -57,17 +57,25 @@ double temperature(const Bodies& b);
 // (C += C_b + d^2 M M_b / (M + M_b), d = mean_b - mean). Equal to temperature()
 // to rounding (about N eps relative, no cancellation), not bit for bit; the
 // same bits for the same bodies in the same order however they are chunked.
+// Their kinetic energy too, summed in their order as kinetic_energy() sums
+// it (the same bits), in the blocks' first pass.
 class TemperatureSums {
  public:
   static constexpr std::size_t kBlock = 4096;
   void add(const double* v, const double* m, std::size_t count);
   double temperature() const;
+  double kinetic_energy() const;
 
  private:
-  // Adds the sums of the bodies [0, n) (a whole block but at the end).
-  void take_block(const double* v, const double* m, std::size_t n);
+  struct FirstPass {
+    double mass, mean;
+  };
+  FirstPass first_pass(const double* v, const double* m, std::size_t n);
+  void combine(FirstPass block, double squares);
+  // Adds the sums of `blocks` whole blocks (>= 1) at v, m.
+  void take_blocks(const double* v, const double* m, std::size_t blocks);
   std::vector<double> v_, m_;  // the block being filled
-  double mass_ = 0, mean_ = 0, squares_ = 0;
+  double mass_ = 0, mean_ = 0, squares_ = 0, energy_ = 0;
 };
 
 }  // namespace shockgas

@@ -103,6 +103,9 @@ StickyHull::StickyHull(std::size_t n, double L, double t, bool masses)
 
 namespace {
 
+// The bodies of one step of the build's pass: room is made for them at once.
+constexpr std::size_t kBuildBlock = 4096;
+
 // Makes [from, to) elements of `base` resident in one system call, ahead of
 // their first writes: a page fault per 4 KiB costs about as much as the hull's
 // own work on the 200 runs it holds. A hint: where unsupported, pages fault in.
@@ -178,7 +181,7 @@ struct Stack {
 
 }  // namespace
 
-// One pass over the bodies, room made per block of 4096 (block(begin, count):
+// One pass over the bodies, room made per block of kBuildBlock (block(begin, count):
 // the bodies [begin, begin + count)). Validity is folded into it (branch-free)
 // and judged at the end: x_i >= x_{i-1} for all i and finite ends make every x
 // finite. Unequal masses without Masses: stops, and the caller starts again.
@@ -188,9 +191,8 @@ StickyHull::Built StickyHull::build(Block&& block) {
   bool valid = true;
   double previous = -inf, first = 0, vmax = 0;
   Stack<Masses> stack{c0_.get(), v_.get(), m_.get(), count_.get(), t_, n_};
-  constexpr std::size_t size = 4096;
-  for (std::size_t begin = 0; begin < n_; begin += size) {
-    const std::size_t end = std::min(n_, begin + size);
+  for (std::size_t begin = 0; begin < n_; begin += kBuildBlock) {
+    const std::size_t end = std::min(n_, begin + kBuildBlock);
     const BlockPointers b = block(begin, end - begin);
     if (begin == 0) {
       m0_ = b.m[0], first = b.x[0];
@@ -287,15 +289,22 @@ StickyHull StickyHull::ring(std::size_t n, const Chunks& read, double L, double 
   return make(n, read, L, t);
 }
 
-// The bodies pass once, through a buffer of one block; their masses must agree
-// (a second pass with masses would need them again).
+// The bodies pass once, read kReadBlocks blocks at a time (a reader that sums
+// them, such as TemperatureSums, then has several blocks in a row); their
+// masses must agree (a second pass with masses would need them again).
 StickyHull StickyHull::make(std::size_t n, const Chunks& read, double L, double t) {
   require_in_range("t", t, 0.0, std::numeric_limits<double>::max());
   require(n <= std::numeric_limits<std::uint32_t>::max(), "bodies", n, "at most 2^32 - 1 bodies");
-  std::vector<double> x(std::min<std::size_t>(n, 4096)), v(x.size()), m(x.size());
-  auto block = [&](std::size_t, std::size_t count) {
-    read(count, x.data(), v.data(), m.data());
-    return BlockPointers{x.data(), v.data(), m.data()};
+  constexpr std::size_t kReadBlocks = 16;  // 3 x 512 KiB
+  std::vector<double> x(std::min<std::size_t>(n, kReadBlocks * kBuildBlock)), v(x.size()), m(x.size());
+  std::size_t held_from = 0, held = 0;  // the bodies [held_from, held_from + held) are in x, v, m
+  auto block = [&](std::size_t begin, std::size_t count) {
+    if (begin + count > held_from + held) {
+      held_from = begin, held = std::min(x.size(), n - begin);
+      read(held, x.data(), v.data(), m.data());
+    }
+    const std::size_t at = begin - held_from;
+    return BlockPointers{x.data() + at, v.data() + at, m.data() + at};
   };
   StickyHull h(n, L, t, false);
   const Built built = h.build<false>(block);

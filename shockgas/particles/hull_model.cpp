@@ -73,16 +73,14 @@ RunResult simulate_hull(const Bodies& initial, double L, bool ring, const Partic
   return out;
 }
 
-// The kinetic energy is summed as the bodies pass, in their order (as
-// kinetic_energy), and their temperature (TemperatureSums).
+// The kinetic energy and the temperature are summed as the bodies pass
+// (TemperatureSums: the energy in their order, as kinetic_energy).
 RunResult simulate_hull(InitialStream& initial, double L, bool ring, const ParticleParams& p,
                         const StateSink* sink) {
-  double energy = 0;
-  TemperatureSums temperature;
+  TemperatureSums sums;
   const StickyHull::Chunks read = [&](std::size_t count, double* x, double* v, double* m) {
     initial.next(count, x, v, m);
-    for (std::size_t i = 0; i < count; ++i) energy += 0.5 * m[i] * v[i] * v[i];
-    temperature.add(v, m, count);
+    sums.add(v, m, count);
   };
   const std::size_t n = initial.size();
   const double mean_mass = initial.mean_mass();
@@ -90,8 +88,8 @@ RunResult simulate_hull(InitialStream& initial, double L, bool ring, const Parti
     return ring ? StickyHull::ring(n, read, L, t) : StickyHull::line(n, read, t);
   };
   RunResult out = run_hull(
-      n, mean_mass, build, [&energy] { return energy; }, L, ring, p, sink);
-  if (out.stop.reason != StopReason::interrupted) out.initial_temperature = temperature.temperature();
+      n, mean_mass, build, [&sums] { return sums.kinetic_energy(); }, L, ring, p, sink);
+  if (out.stop.reason != StopReason::interrupted) out.initial_temperature = sums.temperature();
   return out;
 }
 

@@ -111,6 +111,8 @@ TEST(TemperatureSums, AreTheTwoPassTemperatureWhateverTheChunksAndTheFirstBody) 
     whole.add(b.v.data(), b.m.data(), b.size());
     EXPECT_TRUE(same_bits(sums.temperature(), whole.temperature())) << "chunks of " << chunk;
     EXPECT_NEAR(sums.temperature(), exact, 2 * 1e5 * 0x1p-52 * exact) << "chunks of " << chunk;
+    // The energy: one sum in the bodies' order, as kinetic_energy's, whatever the chunks.
+    EXPECT_TRUE(same_bits(sums.kinetic_energy(), kinetic_energy(b))) << "chunks of " << chunk;
   }
 }
 
