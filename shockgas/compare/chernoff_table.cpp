@@ -102,17 +102,18 @@ void ChernoffLogGTable::log_g(std::span<const double> x, std::span<double> out) 
     // operations lane by lane, no contraction): the same bits.
     const __m256d two = _mm256_set1_pd(2.0);
     __m256d tv[2], b1v[2], b2v[2];
-    for (int h = 0; h < 2; ++h)
+    for (std::size_t h = 0; h < 2; ++h)
       tv[h] = _mm256_loadu_pd(t + 4 * h), b1v[h] = _mm256_setzero_pd(), b2v[h] = _mm256_setzero_pd();
     for (int k = kDegree; k >= 1; --k)
-      for (int h = 0; h < 2; ++h) {
+      for (std::size_t h = 0; h < 2; ++h) {
         const double* const* ch = c + 4 * h;
         const __m256d ck = _mm256_set_pd(ch[3][k], ch[2][k], ch[1][k], ch[0][k]);
         const __m256d b0 =
             _mm256_add_pd(_mm256_sub_pd(_mm256_mul_pd(_mm256_mul_pd(two, tv[h]), b1v[h]), b2v[h]), ck);
         b2v[h] = b1v[h], b1v[h] = b0;
       }
-    for (int h = 0; h < 2; ++h) _mm256_storeu_pd(b1 + 4 * h, b1v[h]), _mm256_storeu_pd(b2 + 4 * h, b2v[h]);
+    for (std::size_t h = 0; h < 2; ++h)
+      _mm256_storeu_pd(b1 + 4 * h, b1v[h]), _mm256_storeu_pd(b2 + 4 * h, b2v[h]);
 #else
     for (int k = kDegree; k >= 1; --k)
       for (std::size_t j = 0; j < kLanes; ++j) {
