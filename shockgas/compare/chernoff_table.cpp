@@ -57,15 +57,33 @@ ChernoffLogGTable::ChernoffLogGTable(double lo, double hi, std::vector<double> c
     : lo_(lo), hi_(hi), coefficients_(std::move(coefficients)) {
   require(lo < hi, "chernoff_table.range", hi, "hi > lo");
   const auto panels = static_cast<std::size_t>(std::round((hi - lo) / kPanel));
+  require(panels >= 1, "chernoff_table.range", hi,
+          "hi >= lo + " + std::to_string(kPanel / 2) + " (one panel)");
   require(coefficients_.size() == panels * kTerms, "chernoff_table.coefficients", coefficients_.size(),
           std::to_string(panels * kTerms) + " (" + std::to_string(kTerms) + " for each of the " +
               std::to_string(panels) + " panels of [lo, hi])");
 }
 
+// x's panel of the table and its place t in [-1, 1] there; false past the table.
+bool ChernoffLogGTable::panel_of(double x, double& t, const double*& c) const {
+  if (!(x >= lo_ && x <= hi_)) return false;
+  const auto panels = static_cast<int>(coefficients_.size() / kTerms);
+  const int p = std::min(panels - 1, static_cast<int>((x - lo_) / kPanel));
+  t = (x - (lo_ + (p + 0.5) * kPanel)) / (0.5 * kPanel);
+  c = coefficients_.data() + static_cast<std::size_t>(p) * kTerms;
+  return true;
+}
+
 double ChernoffLogGTable::log_g(double x) const {
-  double out = 0;
-  log_g(std::span<const double>(&x, 1), std::span<double>(&out, 1));
-  return out;
+  double t = 0;
+  const double* c = nullptr;
+  if (!panel_of(x, t, c)) return chernoff_log_g(x);
+  double b1 = 0, b2 = 0;  // Clenshaw: sum_k c_k T_k(t)
+  for (int k = kDegree; k >= 1; --k) {
+    const double b0 = 2 * t * b1 - b2 + c[k];
+    b2 = b1, b1 = b0;
+  }
+  return t * b1 - b2 + c[0];
 }
 
 // Clenshaw's sum_k c_k T_k(t) is a chain of dependent operations (about 240
@@ -73,9 +91,11 @@ double ChernoffLogGTable::log_g(double x) const {
 // with the operations of one point alone, so their chains overlap and each
 // result has the same bits as alone.
 void ChernoffLogGTable::log_g(std::span<const double> x, std::span<double> out) const {
-  require(out.size() == x.size(), "chernoff_table.out", out.size(), "as many values as arguments");
+  if (out.size() !=
+      x.size())  // the message built only when it is needed: this runs per panel of a quadrature
+    throw InputError("chernoff_table.out", std::to_string(out.size()),
+                     "as many values as arguments (" + std::to_string(x.size()) + ")");
   constexpr std::size_t kLanes = 8;
-  const auto panels = static_cast<int>(coefficients_.size() / kTerms);
   for (std::size_t first = 0; first < x.size(); first += kLanes) {
     const std::size_t lanes = std::min(kLanes, x.size() - first);
     // Every lane runs (those past the points and past the table on t = 0 and
@@ -84,18 +104,13 @@ void ChernoffLogGTable::log_g(std::span<const double> x, std::span<double> out) 
     const double* c[kLanes];
     bool direct[kLanes];
     for (std::size_t j = 0; j < kLanes; ++j) {
-      c[j] = coefficients_.data();
+      c[j] = coefficients_.data();  // a table has at least one panel
       direct[j] = true;
       if (j >= lanes) continue;
-      const double xj = x[first + j];
-      if (!(xj >= lo_ && xj <= hi_)) {
-        out[first + j] = chernoff_log_g(xj);
-        continue;
-      }
-      const int p = std::min(panels - 1, static_cast<int>((xj - lo_) / kPanel));
-      t[j] = (xj - (lo_ + (p + 0.5) * kPanel)) / (0.5 * kPanel);  // in [-1, 1]
-      c[j] += static_cast<std::size_t>(p) * kTerms;
-      direct[j] = false;
+      if (panel_of(x[first + j], t[j], c[j]))
+        direct[j] = false;
+      else
+        out[first + j] = chernoff_log_g(x[first + j]);
     }
 #if defined(__AVX2__)
     // Four lanes to a vector, each lane the scalar operations below (IEEE

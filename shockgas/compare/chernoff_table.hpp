@@ -36,6 +36,7 @@ class ChernoffLogGTable {
   const std::vector<double>& coefficients() const { return coefficients_; }
 
  private:
+  bool panel_of(double x, double& t, const double*& c) const;
   double lo_, hi_;
   std::vector<double> coefficients_;  // Chebyshev coefficients, kTerms per panel
 };

@@ -72,6 +72,7 @@ TEST(ClusterVelocityLaw, LnGOfManyPointsIsEachPointsOwnSumToTheBit) {
   }
   std::vector<double> two(2), one(1);
   EXPECT_THROW(table.log_g(two, one), InputError);
+  EXPECT_THROW(ChernoffLogGTable(0.0, 0.1, {}), InputError);  // no panel: nothing to look up
 }
 
 // n(alpha, beta) = 2 (alpha + beta) g(alpha) g(beta) K(alpha + beta) integrated over

@@ -103,7 +103,9 @@ TEST(TemperatureSums, AreTheTwoPassTemperatureWhateverTheChunksAndTheFirstBody) 
     b.push_back(k, static_cast<double>(state >> 11) * 0x1p-53 - 0.5, 1.0);
   }
   const double exact = temperature(b);
-  for (std::size_t chunk : {std::size_t{1}, std::size_t{999}, std::size_t{4096}, b.size()}) {
+  // 5000: a block part-filled, then whole blocks in place after it
+  for (std::size_t chunk :
+       {std::size_t{1}, std::size_t{999}, std::size_t{4096}, std::size_t{5000}, b.size()}) {
     TemperatureSums sums;
     for (std::size_t i = 0; i < b.size(); i += chunk)
       sums.add(b.v.data() + i, b.m.data() + i, std::min(chunk, b.size() - i));
