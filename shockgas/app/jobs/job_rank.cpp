@@ -1,6 +1,7 @@
 // The ranks other than 0 of a job (job_ensembles.hpp): each runs the share
 // rank 0 deals it and sends every record as it finishes; on a signal it saves
 // its running realizations' states and says so (kSaved).
+#include <deque>
 #include <iostream>
 #include <optional>
 #include <thread>
@@ -67,11 +68,19 @@ class Worker {
   double fraction() const { return pool_ ? pool_->fraction() : 0.0; }
   std::vector<WorkItem> running() const { return pool_ ? pool_->running() : std::vector<WorkItem>{}; }
 
-  void send_finished() {
+  // The finished records to rank 0, in order. A record is sent only as rank 0
+  // takes it, so a queue of them can outlast the kAnswerSeconds rank 0 gives
+  // an answer to a signal: with stop_on_signal the sending stops at a pending
+  // signal, whose answer goes first, and the rest follow (save_states).
+  void send_finished(bool stop_on_signal = true) {
     if (!pool_) return;
-    for (auto& r : pool_->take_finished()) {
+    for (auto& r : pool_->take_finished()) unsent_.push_back(std::move(r));
+    while (!unsent_.empty()) {
+      if (stop_on_signal && interrupt_requested() != InterruptMode::none) return;
+      const RealizationRecord& r = unsent_.front();
       if (checkpoints_) checkpoints_->finished(r.ensemble, r.index);  // rank 0 removes its state
       job_.send(0, kRecord, encode(r));
+      unsent_.pop_front();
     }
   }
 
@@ -88,12 +97,12 @@ class Worker {
   void save_states() {
     const Clock::time_point asked = Clock::now();
     while (pool_ && !pool_->finished() && seconds_since(asked) < Checkpointer::kStateGraceSeconds) {
-      send_finished();
+      send_finished(false);
       while (job_.receive()) {
       }
       std::this_thread::sleep_for(kPoll);
     }
-    send_finished();
+    send_finished(false);
     job_.send(0, kSaved, checkpoints_->states_said());
   }
 
@@ -123,6 +132,7 @@ class Worker {
   std::size_t threads_;
   Checkpointer* checkpoints_;              // its realizations' states (job_rank), or nullptr
   std::unique_ptr<RealizationPool> pool_;  // once rank 0 has dealt the items (kItems)
+  std::deque<RealizationRecord> unsent_;   // finished, not yet sent to rank 0
   std::vector<WorkItem> root_running_;
   Clock::time_point root_heard_ = Clock::now();
 };
