@@ -5,7 +5,8 @@
 // general path computes the same in three loops over buffers (positions at t,
 // PeriodWrap::wrap_all, ClusterScan::add_run) and a separate pass for the sums;
 // this one keeps everything in registers, so a sample costs one stream over the
-// bodies and a few operations per body.
+// bodies and a few operations per body: four bodies a step (AVX2), or eight
+// (AVX-512) and the last four.
 //
 // The numbers are those of the general path, operation for operation:
 //  * position x + v (t - t_body) (Body::at), on a ring wrapped as wrap_all does
@@ -72,6 +73,80 @@ inline double below(double hi, bool needed) {
 // (w < w_left); so is a zero gap from -0 - +0, a false alarm that only sends
 // the run the general way.
 #if defined(__AVX2__)
+// Where the blocks of eight (sweep_eights) leave the blocks of four: the next
+// body, body k - 1's w and v, whether pair (k - 2, k - 1) joins, the counts,
+// the velocity sums in the lanes of bodies 1, 2, 3, 4 mod 4 and the sign bits
+// of everything `off` watches, or-ed.
+struct EightsSweep {
+  std::size_t next;
+  double w_l, v_l;
+  bool last_joins;
+  std::uint64_t joins = 0, held = 0;
+  __m256d sums, off;
+};
+
+#if defined(__AVX512F__) && defined(__AVX512DQ__)
+// Bodies 1 .. 8 m of a run, eight at a time: in each lane the operations of
+// sweep_blocks' lanes (the same positions, gaps and joins), the velocity
+// sums of bodies k .. k + 3, then k + 4 .. k + 7, into the four lanes (the
+// order of two blocks of four), the counts from the join masks.
+template <bool Shifted>
+EightsSweep sweep_eights(const double* q, std::size_t n, double t, const ClusterCriteria& c,
+                         const PeriodWrap::Period& period, EightsSweep r) {
+  const __m512d at = _mm512_set1_pd(t), max_gap = _mm512_set1_pd(c.max_gap);
+  const __m512d max_dv = _mm512_set1_pd(c.max_dv), sign = _mm512_set1_pd(-0.0);
+  const __m512d shift = _mm512_set1_pd(period.shift), lo = _mm512_set1_pd(period.lo);
+  const __m512d below_hi = _mm512_set1_pd(below(period.hi, Shifted));
+  // x, v, t of bodies k .. k + 7 from the 24 doubles at q + 3 k: the first
+  // five or six from the first two loads, the rest from the third.
+  const __m512i x_ab = _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 0, 0),
+                x_c = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 10, 13);
+  const __m512i v_ab = _mm512_setr_epi64(1, 4, 7, 10, 13, 0, 0, 0),
+                v_c = _mm512_setr_epi64(0, 1, 2, 3, 4, 8, 11, 14);
+  const __m512i t_ab = _mm512_setr_epi64(2, 5, 8, 11, 14, 0, 0, 0),
+                t_c = _mm512_setr_epi64(0, 1, 2, 3, 4, 9, 12, 15);
+  const __m512i after =
+      _mm512_setr_epi64(15, 0, 1, 2, 3, 4, 5, 6);  // body k - 1 (top of before), then k .. k + 6
+  __m512d w_prev = _mm512_set1_pd(r.w_l), v_prev = _mm512_set1_pd(r.v_l), off = _mm512_setzero_pd();
+  unsigned join_prev = r.last_joins ? 1u : 0u;
+  // The halves of a vector (the masked extraction: g++ 12's plain one and
+  // the cast through it read an undefined vector, which -Wmaybe-uninitialized flags).
+  auto low = [](__m512d x) { return _mm512_maskz_extractf64x4_pd(0xF, x, 0); };
+  auto high = [](__m512d x) { return _mm512_maskz_extractf64x4_pd(0xF, x, 1); };
+  std::size_t k = r.next;
+  for (; k + 8 <= n; k += 8) {
+    const __m512d a = _mm512_loadu_pd(q + 3 * k), b = _mm512_loadu_pd(q + 3 * k + 8);
+    const __m512d e = _mm512_loadu_pd(q + 3 * k + 16);
+    const __m512d x = _mm512_permutex2var_pd(_mm512_permutex2var_pd(a, x_ab, b), x_c, e);
+    const __m512d v = _mm512_permutex2var_pd(_mm512_permutex2var_pd(a, v_ab, b), v_c, e);
+    const __m512d tb = _mm512_permutex2var_pd(_mm512_permutex2var_pd(a, t_ab, b), t_c, e);
+    const __m512d pos = _mm512_add_pd(x, _mm512_mul_pd(v, _mm512_sub_pd(at, tb)));  // Body::at
+    __m512d w = pos;
+    if constexpr (Shifted) {
+      off = _mm512_or_pd(off, _mm512_or_pd(_mm512_sub_pd(pos, lo), _mm512_sub_pd(below_hi, pos)));
+      w = _mm512_sub_pd(pos, shift);
+    }
+    r.sums = _mm256_add_pd(r.sums, low(v));
+    r.sums = _mm256_add_pd(r.sums, high(v));
+    const __m512d gap = _mm512_sub_pd(w, _mm512_permutex2var_pd(w, after, w_prev));
+    const __m512d dv = _mm512_andnot_pd(sign, _mm512_sub_pd(v, _mm512_permutex2var_pd(v, after, v_prev)));
+    off = _mm512_or_pd(off, gap);
+    const unsigned join =
+        _mm512_cmp_pd_mask(gap, max_gap, _CMP_LT_OQ) & _mm512_cmp_pd_mask(dv, max_dv, _CMP_LT_OQ);
+    r.joins += static_cast<std::uint64_t>(__builtin_popcount(join));
+    r.held += static_cast<std::uint64_t>(__builtin_popcount((join | (join << 1) | join_prev) & 0xFFu));
+    join_prev = join >> 7;
+    w_prev = w, v_prev = v;
+  }
+  if (k == r.next) return r;
+  alignas(64) double last_w[8], last_v[8];
+  _mm512_store_pd(last_w, w_prev), _mm512_store_pd(last_v, v_prev);
+  r.off = _mm256_or_pd(r.off, _mm256_or_pd(low(off), high(off)));
+  r.next = k, r.w_l = last_w[7], r.v_l = last_v[7], r.last_joins = join_prev != 0;
+  return r;
+}
+#endif
+
 template <bool Shifted>
 BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterCriteria& c,
                         const PeriodWrap::Period& period, double w0, double v0, LaneSums& s) {
@@ -79,16 +154,22 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
   const __m256d max_dv = _mm256_set1_pd(c.max_dv), sign = _mm256_set1_pd(-0.0);
   const __m256d shift = _mm256_set1_pd(period.shift), lo = _mm256_set1_pd(period.lo);
   const __m256d below_hi = _mm256_set1_pd(below(period.hi, Shifted));
-  __m256d sums = _mm256_set_pd(s[0], s[3], s[2], s[1]);  // lanes of bodies 1, 2, 3, 4 mod 4
-  __m256d w_prev = _mm256_set1_pd(w0), v_prev = _mm256_set1_pd(v0), off = _mm256_setzero_pd();
+  // lanes of bodies 1, 2, 3, 4 mod 4
+  EightsSweep eights{1, w0, v0, true, 0, 0, _mm256_set_pd(s[0], s[3], s[2], s[1]), _mm256_setzero_pd()};
+#if defined(__AVX512F__) && defined(__AVX512DQ__)
+  eights = sweep_eights<Shifted>(q, n, t, c, period, eights);
+#endif
+  __m256d sums = eights.sums, off = eights.off;
+  __m256d w_prev = _mm256_set1_pd(eights.w_l), v_prev = _mm256_set1_pd(eights.v_l);
   __m256i joined = _mm256_setzero_si256();  // minus the join masks: counts
   __m256i held = _mm256_setzero_si256();    // bodies k - 1 .. k + 2 joined on either side: minus the masks
-  __m256d join_prev = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));  // pair k - 1 in the top lane
+  __m256d join_prev =
+      _mm256_castsi256_pd(_mm256_set1_epi64x(eights.last_joins ? -1 : 0));  // pair k - 1 in the top lane
   // Bodies k - 1 .. k + 2 from body k - 1 (the last of before) and k .. k + 3 (now).
   auto shifted_in = [](__m256d before, __m256d now) {
     return _mm256_shuffle_pd(_mm256_permute2f128_pd(before, now, 0x21), now, 0b0101);
   };
-  std::size_t k = 1;
+  std::size_t k = eights.next;
   for (; k + 4 <= n; k += 4) {  // k = 1 mod 4; bodies k, k + 1 | k + 2, k + 3 in the halves
     const __m256d a = _mm256_loadu2_m128d(q + 3 * k + 6, q + 3 * k);       // x v | x v
     const __m256d b = _mm256_loadu2_m128d(q + 3 * k + 8, q + 3 * k + 2);   // t x | t x
@@ -119,9 +200,10 @@ BlockSweep sweep_blocks(const double* q, std::size_t n, double t, const ClusterC
   _mm256_store_si256(reinterpret_cast<__m256i*>(held_count), held);
   alignas(32) double last_w[4], last_v[4];
   _mm256_store_pd(last_w, w_prev), _mm256_store_pd(last_v, v_prev);
-  const std::size_t unjoined = (k - 1) - (held_count[0] + held_count[1] + held_count[2] + held_count[3]);
+  const std::size_t unjoined =
+      (k - 1) - (eights.held + held_count[0] + held_count[1] + held_count[2] + held_count[3]);
   return {k,
-          count[0] + count[1] + count[2] + count[3],
+          eights.joins + count[0] + count[1] + count[2] + count[3],
           unjoined,
           (_mm256_movemask_pd(join_prev) & 8) != 0,
           _mm256_movemask_pd(off) != 0,
