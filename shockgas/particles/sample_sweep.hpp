@@ -86,6 +86,27 @@ struct EightsSweep {
 };
 
 #if defined(__AVX512F__) && defined(__AVX512DQ__)
+// The halves of a vector (the masked extraction: g++ 12's plain one, and the
+// cast through it, read an undefined vector, which -Wmaybe-uninitialized flags).
+inline __m256d low_half(__m512d x) { return _mm512_maskz_extractf64x4_pd(0xF, x, 0); }
+inline __m256d high_half(__m512d x) { return _mm512_maskz_extractf64x4_pd(0xF, x, 1); }
+
+// Bodies k .. k + 7 stored as x, v, t (q = &body[k].x): each field from the
+// three loads of their 24 doubles by two permutations, the first five or six
+// bodies from the first two loads, the rest from the third.
+struct EightBodies {
+  __m512d x, v, t;
+};
+inline EightBodies load_eight(const double* q) {
+  const __m512d a = _mm512_loadu_pd(q), b = _mm512_loadu_pd(q + 8), e = _mm512_loadu_pd(q + 16);
+  auto field = [&](__m512i from_ab, __m512i from_e) {
+    return _mm512_permutex2var_pd(_mm512_permutex2var_pd(a, from_ab, b), from_e, e);
+  };
+  return {field(_mm512_setr_epi64(0, 3, 6, 9, 12, 15, 0, 0), _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 10, 13)),
+          field(_mm512_setr_epi64(1, 4, 7, 10, 13, 0, 0, 0), _mm512_setr_epi64(0, 1, 2, 3, 4, 8, 11, 14)),
+          field(_mm512_setr_epi64(2, 5, 8, 11, 14, 0, 0, 0), _mm512_setr_epi64(0, 1, 2, 3, 4, 9, 12, 15))};
+}
+
 // Bodies 1 .. 8 m of a run, eight at a time: in each lane the operations of
 // sweep_blocks' lanes (the same positions, gaps and joins), the velocity
 // sums of bodies k .. k + 3, then k + 4 .. k + 7, into the four lanes (the
@@ -97,37 +118,21 @@ EightsSweep sweep_eights(const double* q, std::size_t n, double t, const Cluster
   const __m512d max_dv = _mm512_set1_pd(c.max_dv), sign = _mm512_set1_pd(-0.0);
   const __m512d shift = _mm512_set1_pd(period.shift), lo = _mm512_set1_pd(period.lo);
   const __m512d below_hi = _mm512_set1_pd(below(period.hi, Shifted));
-  // x, v, t of bodies k .. k + 7 from the 24 doubles at q + 3 k: the first
-  // five or six from the first two loads, the rest from the third.
-  const __m512i x_ab = _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 0, 0),
-                x_c = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 10, 13);
-  const __m512i v_ab = _mm512_setr_epi64(1, 4, 7, 10, 13, 0, 0, 0),
-                v_c = _mm512_setr_epi64(0, 1, 2, 3, 4, 8, 11, 14);
-  const __m512i t_ab = _mm512_setr_epi64(2, 5, 8, 11, 14, 0, 0, 0),
-                t_c = _mm512_setr_epi64(0, 1, 2, 3, 4, 9, 12, 15);
   const __m512i after =
       _mm512_setr_epi64(15, 0, 1, 2, 3, 4, 5, 6);  // body k - 1 (top of before), then k .. k + 6
   __m512d w_prev = _mm512_set1_pd(r.w_l), v_prev = _mm512_set1_pd(r.v_l), off = _mm512_setzero_pd();
   unsigned join_prev = r.last_joins ? 1u : 0u;
-  // The halves of a vector (the masked extraction: g++ 12's plain one and
-  // the cast through it read an undefined vector, which -Wmaybe-uninitialized flags).
-  auto low = [](__m512d x) { return _mm512_maskz_extractf64x4_pd(0xF, x, 0); };
-  auto high = [](__m512d x) { return _mm512_maskz_extractf64x4_pd(0xF, x, 1); };
   std::size_t k = r.next;
   for (; k + 8 <= n; k += 8) {
-    const __m512d a = _mm512_loadu_pd(q + 3 * k), b = _mm512_loadu_pd(q + 3 * k + 8);
-    const __m512d e = _mm512_loadu_pd(q + 3 * k + 16);
-    const __m512d x = _mm512_permutex2var_pd(_mm512_permutex2var_pd(a, x_ab, b), x_c, e);
-    const __m512d v = _mm512_permutex2var_pd(_mm512_permutex2var_pd(a, v_ab, b), v_c, e);
-    const __m512d tb = _mm512_permutex2var_pd(_mm512_permutex2var_pd(a, t_ab, b), t_c, e);
+    const auto [x, v, tb] = load_eight(q + 3 * k);
     const __m512d pos = _mm512_add_pd(x, _mm512_mul_pd(v, _mm512_sub_pd(at, tb)));  // Body::at
     __m512d w = pos;
     if constexpr (Shifted) {
       off = _mm512_or_pd(off, _mm512_or_pd(_mm512_sub_pd(pos, lo), _mm512_sub_pd(below_hi, pos)));
       w = _mm512_sub_pd(pos, shift);
     }
-    r.sums = _mm256_add_pd(r.sums, low(v));
-    r.sums = _mm256_add_pd(r.sums, high(v));
+    r.sums = _mm256_add_pd(r.sums, low_half(v));
+    r.sums = _mm256_add_pd(r.sums, high_half(v));
     const __m512d gap = _mm512_sub_pd(w, _mm512_permutex2var_pd(w, after, w_prev));
     const __m512d dv = _mm512_andnot_pd(sign, _mm512_sub_pd(v, _mm512_permutex2var_pd(v, after, v_prev)));
     off = _mm512_or_pd(off, gap);
@@ -141,7 +146,7 @@ EightsSweep sweep_eights(const double* q, std::size_t n, double t, const Cluster
   if (k == r.next) return r;
   alignas(64) double last_w[8], last_v[8];
   _mm512_store_pd(last_w, w_prev), _mm512_store_pd(last_v, v_prev);
-  r.off = _mm256_or_pd(r.off, _mm256_or_pd(low(off), high(off)));
+  r.off = _mm256_or_pd(r.off, _mm256_or_pd(low_half(off), high_half(off)));
   r.next = k, r.w_l = last_w[7], r.v_l = last_v[7], r.last_joins = join_prev != 0;
   return r;
 }
