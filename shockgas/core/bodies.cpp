@@ -75,8 +75,14 @@ TemperatureSums::FirstPass TemperatureSums::first_pass(const double* v, const do
   return {mass, mass > 0 ? momentum / mass : 0.0};
 }
 
-// C_b = sum m (v - mean_b)^2 of a block, folded into the totals (a block
-// without mass is left out).
+// C_b = sum m (v - mean_b)^2 of a block.
+double TemperatureSums::second_pass(const double* v, const double* m, std::size_t n, double mean) {
+  double squares = 0;
+  for (std::size_t i = 0; i < n; ++i) squares += m[i] * (v[i] - mean) * (v[i] - mean);
+  return squares;
+}
+
+// A block's sums folded into the totals (a block without mass is left out).
 void TemperatureSums::combine(FirstPass b, double squares) {
   if (!(b.mass > 0)) return;
   const double total = mass_ + b.mass, d = b.mean - mean_;
@@ -85,32 +91,26 @@ void TemperatureSums::combine(FirstPass b, double squares) {
   mass_ = total;
 }
 
-// Blocks in a row: block k's second pass runs beside block k + 1's first, the
-// sums of each block and their order as one block at a time (the same bits;
-// each pass alone is one chain of dependent additions, two overlap).
+// Blocks in a row: block k's second pass runs beside block k + 1's first (the
+// loop below is second_pass and first_pass in one), the sums of each block and
+// their order as one block at a time (the same bits; each pass alone is one
+// chain of dependent additions, two overlap).
 void TemperatureSums::take_blocks(const double* v, const double* m, std::size_t blocks) {
   FirstPass previous = first_pass(v, m, kBlock);
-  for (std::size_t k = 1; k <= blocks; ++k) {
-    const double* pv = v + (k - 1) * kBlock;
-    const double* pm = m + (k - 1) * kBlock;
+  for (std::size_t k = 1; k < blocks; ++k, v += kBlock, m += kBlock) {
+    const double* nv = v + kBlock;
+    const double* nm = m + kBlock;
     const double mean = previous.mean;
-    double squares = 0;
-    if (k == blocks) {
-      for (std::size_t i = 0; i < kBlock; ++i) squares += pm[i] * (pv[i] - mean) * (pv[i] - mean);
-      combine(previous, squares);
-      break;
-    }
-    const double* nv = pv + kBlock;
-    const double* nm = pm + kBlock;
-    double mass = 0, momentum = 0, energy = energy_;
+    double squares = 0, mass = 0, momentum = 0, energy = energy_;
     for (std::size_t i = 0; i < kBlock; ++i) {
-      squares += pm[i] * (pv[i] - mean) * (pv[i] - mean);
+      squares += m[i] * (v[i] - mean) * (v[i] - mean);
       mass += nm[i], momentum += nm[i] * nv[i], energy += 0.5 * nm[i] * nv[i] * nv[i];
     }
     energy_ = energy;
     combine(previous, squares);
     previous = {mass, mass > 0 ? momentum / mass : 0.0};
   }
+  combine(previous, second_pass(v, m, kBlock, previous.mean));
 }
 
 double TemperatureSums::kinetic_energy() const {
@@ -123,10 +123,7 @@ double TemperatureSums::temperature() const {
   TemperatureSums all = *this;
   if (!all.v_.empty()) {  // the block being filled, as it stands
     const FirstPass b = all.first_pass(all.v_.data(), all.m_.data(), all.v_.size());
-    double squares = 0;
-    for (std::size_t i = 0; i < all.v_.size(); ++i)
-      squares += all.m_[i] * (all.v_[i] - b.mean) * (all.v_[i] - b.mean);
-    all.combine(b, squares);
+    all.combine(b, second_pass(all.v_.data(), all.m_.data(), all.v_.size(), b.mean));
   }
   return all.mass_ > 0 ? all.squares_ / all.mass_ : 0.0;
 }

@@ -71,6 +71,7 @@ class TemperatureSums {
     double mass, mean;
   };
   FirstPass first_pass(const double* v, const double* m, std::size_t n);
+  static double second_pass(const double* v, const double* m, std::size_t n, double mean);
   void combine(FirstPass block, double squares);
   // Adds the sums of `blocks` whole blocks (>= 1) at v, m.
   void take_blocks(const double* v, const double* m, std::size_t blocks);
