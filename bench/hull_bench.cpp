@@ -188,8 +188,8 @@ void observables(benchmark::State& state, const std::string& name, bool clusters
     const double start = cpu_seconds();
     detail::Recorder recorder(p, n, chain.L, true, 1.0);  // unit masses
     for (double s = recorder.next_stop(); s != detail::Recorder::done; s = recorder.next_stop()) {
-      const auto view = detail::make_chain_view(n, [&](auto&& f) {
-        for (std::size_t i = 0; i < n; ++i) {
+      const auto view = detail::make_chain_view(n, [&](auto&& f, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
           const EngineLikeChain::Body& b = chain.body[i];
           f(i, b.x + b.v * (chain.t - b.t), b.v, 1.0);  // lazy position, as the engine's
         }

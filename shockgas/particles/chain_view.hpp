@@ -8,7 +8,8 @@
 // never wraps them) or wrapped into [0, L) (the hull); the recorder wraps them.
 //
 // Contract: visit() may be called several times per stop and delivers the same
-// bodies in the same order each time, in chunks of at most ChainChunk::capacity.
+// bodies in the same order each time, in chunks of at most ChainChunk::capacity;
+// a visit of the chain positions [begin, end) delivers those of them only.
 #include <array>
 #include <cstddef>
 #include <functional>
@@ -33,28 +34,32 @@ class ChainView {
  public:
   using Sink = std::function<void(const ChainChunk&)>;
   virtual std::size_t size() const = 0;  // live bodies
-  virtual void visit(const Sink& sink, Fields fields) const = 0;
+  // The bodies at chain positions begin .. end - 1 (begin <= end <= size()).
+  virtual void visit(const Sink& sink, Fields fields, std::size_t begin, std::size_t end) const = 0;
+  void visit(const Sink& sink, Fields fields) const { visit(sink, fields, 0, size()); }
 
  protected:
   ~ChainView() = default;
 };
 
 // The view of a model that can list its bodies one at a time:
-// for_each(f) calls f(first, x, v, m) for every live body in chain order.
+// for_each(f, begin, end) calls f(first, x, v, m) for the live bodies at chain
+// positions begin .. end - 1, in chain order.
 template <class ForEach>
 class BufferedChainView final : public ChainView {
  public:
   BufferedChainView(std::size_t size, ForEach for_each) : size_(size), for_each_(std::move(for_each)) {}
+  using ChainView::visit;
   std::size_t size() const override { return size_; }
-  void visit(const Sink& sink, Fields fields) const override {
-    fields == Fields::all ? fill<true>(sink) : fill<false>(sink);
+  void visit(const Sink& sink, Fields fields, std::size_t begin, std::size_t end) const override {
+    fields == Fields::all ? fill<true>(sink, begin, end) : fill<false>(sink, begin, end);
   }
 
  private:
   // Chunks filled in a buffer on the stack; the count kept in a local (a member
   // would be reloaded after every store into the arrays).
   template <bool All>
-  void fill(const Sink& sink) const {
+  void fill(const Sink& sink, std::size_t begin, std::size_t end) const {
     constexpr std::size_t capacity = ChainChunk::capacity;
     std::array<std::size_t, capacity> first;
     std::array<double, capacity> x, v, m;
@@ -63,11 +68,13 @@ class BufferedChainView final : public ChainView {
       if (n > 0) sink(ChainChunk{first.data(), x.data(), v.data(), m.data(), n});
       n = 0;
     };
-    for_each_([&](std::size_t i, double xi, double vi, double mi) {
-      if constexpr (All) first[n] = i, x[n] = xi;
-      v[n] = vi, m[n] = mi;
-      if (++n == capacity) flush();
-    });
+    for_each_(
+        [&](std::size_t i, double xi, double vi, double mi) {
+          if constexpr (All) first[n] = i, x[n] = xi;
+          v[n] = vi, m[n] = mi;
+          if (++n == capacity) flush();
+        },
+        begin, end);
     flush();
   }
 

@@ -26,6 +26,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -136,14 +137,17 @@ class EventEngine {
   double slot_time(std::size_t i) const { return slot_[i]; }
 
   // Visits the live bodies in chain order from body 0: f(index, x at time t
-  // (unrolled), v, m).
+  // (unrolled), v, m); those at chain positions begin .. end - 1 only (the k-th
+  // live body is at position k; without merges body k).
   template <class F>
-  void for_each_body(double t, F&& f) const {
-    for (std::size_t i = 0; i < n_; ++i) {
-      if constexpr (Linked)
-        if (mass_[i] == 0.0) continue;
-      const Body& b = body_[i];
-      f(i, b.at(t), b.v, mass(i));
+  void for_each_body(double t, F&& f, std::size_t begin = 0,
+                     std::size_t end = std::numeric_limits<std::size_t>::max()) const {
+    if constexpr (Linked) {
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < n_ && k < end; ++i)
+        if (mass_[i] != 0.0 && k++ >= begin) f(i, body_[i].at(t), body_[i].v, mass(i));
+    } else {
+      for (std::size_t i = begin; i < std::min(end, n_); ++i) f(i, body_[i].at(t), body_[i].v, mass(i));
     }
   }
 

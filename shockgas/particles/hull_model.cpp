@@ -13,8 +13,12 @@ namespace {
 
 // The hull's clusters as the recorder reads them, in chain order (x unrolled on a ring).
 auto chain_view(const StickyHull& hull) {
-  return make_chain_view(hull.size(), [&hull](auto&& f) {
-    hull.for_each([&](const StickyCluster& c) { f(c.first, c.x, c.v, c.m); });
+  return make_chain_view(hull.size(), [&hull](auto&& f, std::size_t begin, std::size_t end) {
+    std::size_t k = 0;  // chain position; a cluster's first particle needs the ones before
+    hull.for_each([&](const StickyCluster& c) {
+      if (k >= begin && k < end) f(c.first, c.x, c.v, c.m);
+      ++k;
+    });
   });
 }
 

@@ -63,7 +63,9 @@ bool equal_masses(const Bodies& b) {
 // The engine's live bodies at time t as the recorder reads them: streamed, not copied.
 template <bool Linked>
 auto chain_view(const detail::EventEngine<Linked>& engine, double t) {
-  return detail::make_chain_view(engine.alive(), [&engine, t](auto&& f) { engine.for_each_body(t, f); });
+  return detail::make_chain_view(engine.alive(), [&engine, t](auto&& f, std::size_t begin, std::size_t end) {
+    engine.for_each_body(t, f, begin, end);
+  });
 }
 
 template <bool Linked>

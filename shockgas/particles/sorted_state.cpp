@@ -43,16 +43,18 @@ class ChunkBuffer {
   std::size_t n_ = 0;
 };
 
-// Calls f(k, wrapped x, v, m) for every body of the view, k in chain order.
+// Calls f(k, wrapped x, v, m) for the bodies of the view at chain positions
+// k = begin .. end - 1 (all by default), in chain order.
 template <class F>
-void for_each_wrapped(const ChainView& view, double L, bool ring, F&& f) {
+void for_each_wrapped(const ChainView& view, double L, bool ring, F&& f, std::size_t begin = 0,
+                      std::size_t end = std::numeric_limits<std::size_t>::max()) {
   PeriodWrap wrap(L);
-  std::size_t k = 0;
+  std::size_t k = begin;
   view.visit(
       [&](const ChainChunk& c) {
         for (std::size_t i = 0; i < c.size; ++i, ++k) f(k, ring ? wrap(c.x[i]) : c.x[i], c.v[i], c.m[i]);
       },
-      Fields::all);
+      Fields::all, begin, std::min(end, view.size()));
 }
 
 // Bodies fed in order of arrival, handed on in the order of a stable sort by x
@@ -102,8 +104,8 @@ class WindowedOrder {
 
 // Calls f(x, v, m) for every body, wrapped, in chain order from the seam. One
 // pass when at most `held` bodies lie before the seam (they wait in a buffer of
-// at most 1.5 MiB until the rest has gone), else a pass from the seam and one up
-// to it.
+// at most 1.5 MiB until the rest has gone), else a visit from the seam to the
+// end and one from the start up to the seam.
 template <class F>
 void from_seam(const ChainView& view, double L, bool ring, std::size_t seam, F&& f) {
   constexpr std::size_t held = std::size_t{1} << 16;
@@ -119,10 +121,9 @@ void from_seam(const ChainView& view, double L, bool ring, std::size_t seam, F&&
     for (const auto& [x, v, m] : before) f(x, v, m);
     return;
   }
-  for (const bool after : {true, false})
-    for_each_wrapped(view, L, ring, [&](std::size_t k, double x, double v, double m) {
-      if ((k >= seam) == after) f(x, v, m);
-    });
+  auto each = [&](std::size_t, double x, double v, double m) { f(x, v, m); };
+  for_each_wrapped(view, L, ring, each, seam);
+  for_each_wrapped(view, L, ring, each, 0, seam);
 }
 
 // b in the stable sort's order by x, in place through a WindowedOrder, if the

@@ -54,9 +54,9 @@ class SeamSearch {
 Bodies sorted_bodies(const ChainView& s, double L, bool ring);
 
 // The state as a StateReader: one pass over the view per read from the seam
-// (the bodies before it held back, when they are few; else two passes: from the
-// seam, then up to it) in chunks of ChainChunk::capacity; the view must stay
-// valid while the reader is used.
+// (the bodies before it held back, when they are few; else two visits: from the
+// seam to the end, then from the start up to it) in chunks of
+// ChainChunk::capacity; the view must stay valid while the reader is used.
 // Out of order from the seam (rounding), the bodies pass through a window of
 // kWindow bodies kept in order (WindowedOrder), which gives the stable sort's
 // order whenever no body lies more than the window behind its place (checked
@@ -69,7 +69,7 @@ class SortedState final : public StateReader {
   // Known from the construction's pass where the order from the seam is sorted.
   std::optional<std::array<double, 3>> last() const override { return last_; }
   // Whether read() orders the state through a sorted copy (bodies far out of
-  // place: about 56 bytes per body more), not in one or two passes.
+  // place: about 56 bytes per body more), not in one pass.
   bool through_copy() const { return !sorted_ && !windowed_; }
 
  private:

@@ -24,8 +24,8 @@ struct Chain {
 };
 
 inline auto view_of(const Chain& c) {
-  return make_chain_view(c.x.size(), [&c](auto&& f) {
-    for (std::size_t b = 0; b < c.x.size(); ++b) f(c.first[b], c.x[b], c.v[b], c.m[b]);
+  return make_chain_view(c.x.size(), [&c](auto&& f, std::size_t begin, std::size_t end) {
+    for (std::size_t b = begin; b < end; ++b) f(c.first[b], c.x[b], c.v[b], c.m[b]);
   });
 }
 
