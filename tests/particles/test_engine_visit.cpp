@@ -62,8 +62,14 @@ void expect_ranges_are_slices(const EventEngine<Linked>& e) {
   const Visited all = visit(e, t, 0, n);
   ASSERT_EQ(all.x.size(), n);
   EXPECT_EQ(visit(e, t, 0, static_cast<std::size_t>(-1)), all);  // the default end: to the last body
-  for (const auto& [begin, end] : {std::pair{std::size_t{0}, n}, {0, 1}, {n - 1, n}, {n / 3, n}, {0, n / 3},
-                                  {n / 3, 2 * n / 3}, {n, n}, {n / 2, n / 2}})
+  for (const auto& [begin, end] : {std::pair{std::size_t{0}, n},
+                                   {0, 1},
+                                   {n - 1, n},
+                                   {n / 3, n},
+                                   {0, n / 3},
+                                   {n / 3, 2 * n / 3},
+                                   {n, n},
+                                   {n / 2, n / 2}})
     EXPECT_EQ(visit(e, t, begin, end), slice(all, begin, end)) << "positions " << begin << " to " << end;
 }
 
