@@ -66,6 +66,23 @@ class ClusterWalk {
     sums_.add(x, v, m);
     x_last_ = x, v_last_ = v;
   }
+  // add() of bodies i .. i + count - 1 of a walk already started; the sums and
+  // the last body in locals through the run (the members live in memory: close
+  // may write anywhere as far as the compiler knows).
+  void add_run(std::size_t i, const double* x, const double* v, const double* m, std::size_t count) {
+    const ClusterCriteria c = c_;
+    detail::ClusterSums sums = sums_;
+    double x_last = x_last_, v_last = v_last_;
+    for (std::size_t k = 0; k < count; ++k, ++i) {
+      if (!c.joins(x[k] - x_last, v[k] - v_last)) {
+        close_(std::as_const(sums));
+        sums.start(i, x[k], v[k]);
+      }
+      sums.add(x[k], v[k], m[k]);
+      x_last = x[k], v_last = v[k];
+    }
+    sums_ = sums, x_last_ = x_last, v_last_ = v_last;
+  }
   void add_across_wrap(double x, double v, double m) { sums_.add(x + L_, v, m); }
   bool started() const { return started_; }
   void finish() { close_(std::as_const(sums_)); }
@@ -111,7 +128,7 @@ bool walk_once(const StateReader& state, double L, const ClusterCriteria& c, Clo
   bool overflow = false;
   std::vector<std::array<double, 3>> before;
   double x_last = 0, v_last = 0;
-  each_body(state, [&](std::size_t i, double x, double v, double m) {
+  auto body = [&](std::size_t i, double x, double v, double m) {
     if (overflow) return;  // given up before the start: nothing visited, the three-read walk follows
     if (i == 0) wraps = L > 0 && state.size() > 1 && c.joins(x + L - (*last)[0], v - (*last)[1]);
     if (walk.started() || !wraps || (i > 0 && !c.joins(x - x_last, v - v_last)))
@@ -121,6 +138,13 @@ bool walk_once(const StateReader& state, double L, const ClusterCriteria& c, Clo
     else
       overflow = true;
     x_last = x, v_last = v;
+  };
+  std::size_t i = 0;  // once the walk has started, the rest of each chunk goes to it as a run
+  state.read([&](const double* x, const double* v, const double* m, std::size_t count) {
+    std::size_t k = 0;
+    for (; k < count && !walk.started(); ++k, ++i) body(i, x[k], v[k], m[k]);
+    if (k < count) walk.add_run(i, x + k, v + k, m + k, count - k);
+    i += count - k;
   });
   if (overflow) return false;
   if (walk.started()) {
