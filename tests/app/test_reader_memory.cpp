@@ -22,6 +22,7 @@
 #include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/output/layout_version.hpp"
 #include "shockgas/app/output/result_reader.hpp"
+#include "shockgas/version.hpp"
 
 namespace shockgas::app {
 namespace {
@@ -39,6 +40,7 @@ fs::path declaring_file(const std::string& name, std::uint64_t declared, std::si
   fs::create_directories(file.parent_path());
   Hdf5File h5 = Hdf5File::create(file.string());
   h5.set_attribute("/", "layout_version", layout_version_text());
+  h5.set_attribute("/", "shockgas_version", kVersion);  // as every writer's provenance
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<double> noise(padding);

@@ -99,12 +99,21 @@ std::string describe_checkpoint(const fs::path& dir) {
 // Fletcher32 checksums, or the library's reason where it cannot read the
 // file's structure.
 std::string damaged_parts(const fs::path& file) {
+  std::string shockgas_version, layout_version;
   try {
-    read_every_chunk(file, Verification::damaged);
+    const ResultContents read = read_every_chunk(file, Verification::damaged);
+    shockgas_version = read.attribute("/", "shockgas_version");
+    layout_version = read.attribute("/", "layout_version");
   } catch (const FileProblem& e) {
     const bool chunks = e.problem() == "damaged" && e.detail().rfind("dataset ", 0) == 0;
     return chunks ? e.detail() : "its HDF5 structure: " + e.detail();
   }
+  if (shockgas_version.empty())
+    return "it reads back, but without /@shockgas_version, which every result file carries: not written by "
+           "shockgas";
+  if (layout_version.empty())  // layout 1.0: no checksum inside the file tells where
+    return "every dataset and attribute reads back, but a file of layout 1.0 carries no checksums of its own "
+           "(its datasets unfiltered): where its bytes differ cannot be told, only that they do";
   return "every dataset and attribute reads back whole: the damage lies in its own checksum block, in bytes "
          "no read uses, or in metadata the library passes over";
 }
@@ -132,11 +141,13 @@ std::string describe_result(const std::string& path) {
   }
   const fs::path file = result_file_of(path);
   const Verification checked = checked_naming_damage(file);
+  // Even a file whose bytes are as written has every chunk read, its Fletcher32
+  // checked (a chunk damaged before its file's checksum was taken); the warning
+  // once the reading has shown a file of layout 1.0 (a later one cannot lack its checksum).
+  const ResultContents contents = read_every_chunk(file, checked);
   if (checked == Verification::no_manifest)
     std::cerr << "shockgas: warning: " << unverified_warning(file) << "\n";
-  // Even a file whose bytes are as written has every chunk read, its Fletcher32
-  // checked (a chunk damaged before its file's checksum was taken).
-  return describe(read_every_chunk(file, checked));
+  return describe(contents);
 }
 
 RunFilesCheck check_run_files(const std::string& path, bool result_checked) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
+#include <string_view>
 
 #include "shockgas/app/files/sha256.hpp"
 #include "shockgas/core/error.hpp"
@@ -50,6 +51,13 @@ void write_own_checksum(const fs::path& file) {
   if (out.fd < 0) throw cannot("write", file);
   if (::pwrite(out.fd, block.data(), block.size(), 0) != static_cast<ssize_t>(block.size()))
     throw cannot("write", file);
+}
+
+bool starts_with_own_checksum(const fs::path& file) {
+  std::array<char, kTag.size()> head{};
+  const Fd in{::open(file.c_str(), O_RDONLY | O_CLOEXEC)};
+  return in.fd >= 0 && ::pread(in.fd, head.data(), head.size(), 0) == static_cast<ssize_t>(head.size()) &&
+         std::string_view(head.data(), head.size()) == kTag;
 }
 
 OwnChecksumCheck check_own_checksum(const fs::path& file) {

@@ -33,6 +33,10 @@ struct OwnChecksumCheck {
   std::string detail;  // what differs, for a damaged file
 };
 
+// Whether `file` starts as the block does ("shockgas sha256 "): a file of
+// shockgas's, whatever damage lies after those bytes.
+bool starts_with_own_checksum(const std::filesystem::path& file);
+
 // Checks the block of `file`, reading the whole file; RunError if it cannot be read.
 OwnChecksumCheck check_own_checksum(const std::filesystem::path& file);
 

@@ -253,13 +253,19 @@ Hdf5File Hdf5File::open(const std::string& path, Verification verified) {
                              " bytes after the end of file its HDF5 superblock records (" +
                              std::to_string(end) + " bytes): appended since it was written");
   H5Handle root(check(H5Gopen2(id, "/", H5P_DEFAULT), "H5Gopen2", "/"), close_group);
-  check_layout_version(path, stated_attribute(root.get(), "layout_version"));
+  const std::optional<std::string> layout = stated_attribute(root.get(), "layout_version");
+  check_layout_version(path, layout);
   // Every object header and attribute is read here, whether or not the file stores their digest.
   const std::string digest = file.attributes_digest();
-  if (const auto stored = stated_attribute(root.get(), kAttributesDigest); stored && *stored != digest)
+  const auto stored = stated_attribute(root.get(), kAttributesDigest);
+  if (stored && *stored != digest)
     throw result_problem(path, "damaged",
                          std::string("its attributes are not those whose SHA-256 its writer stored (/@") +
                              kAttributesDigest + "): one was changed or damaged after it was written");
+  if (verified != Verification::damaged)  // info naming a damage reads whatever is left
+    check_layout_marks(path, parse_layout_version(path, layout),
+                       {verified == Verification::own_checksum, stored.has_value(),
+                        H5Aexists(root.get(), "shockgas_version") > 0});
   return file;
 }
 

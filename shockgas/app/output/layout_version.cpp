@@ -48,4 +48,29 @@ void check_layout_version(const std::string& file, const std::optional<std::stri
                              "\"Layout version\")");
 }
 
+namespace {
+
+bool at_least(LayoutVersion v, LayoutVersion since) {
+  return v.major != since.major ? v.major > since.major : v.minor >= since.minor;
+}
+
+}  // namespace
+
+void check_layout_marks(const std::string& file, LayoutVersion v, const LayoutMarks& marks) {
+  if (!marks.shockgas_version)
+    throw result_problem(file, "not a result file",
+                         "an HDF5 file without /@shockgas_version, which every result file carries: "
+                         "not written by shockgas");
+  const std::string layout = "layout " + layout_version_text(v) + " (its /@layout_version)";
+  if (at_least(v, kOwnChecksumSince) && !marks.own_checksum)
+    throw result_problem(
+        file, "damaged",
+        "its first 512 bytes hold no checksum of the file, which every file of " + layout +
+            " carries: it was rewritten by another program, or its checksum block was damaged");
+  if (at_least(v, kAttributesDigestSince) && !marks.attributes_digest)
+    throw result_problem(file, "damaged",
+                         "it has no /@attributes_sha256, which every file of " + layout +
+                             " carries: it was rewritten by another program, or the attribute was removed");
+}
+
 }  // namespace shockgas::app

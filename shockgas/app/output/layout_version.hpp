@@ -31,4 +31,22 @@ LayoutVersion parse_layout_version(const std::string& file, const std::optional<
 // 1.0 to 4.x" when the file's major is newer than kLayoutVersion's.
 void check_layout_version(const std::string& file, const std::optional<std::string>& text);
 
+// What a file carries besides its datasets, as its reader found it.
+struct LayoutMarks {
+  bool own_checksum = false;       // its SHA-256 in its first 512 bytes, verified (own_checksum.hpp)
+  bool attributes_digest = false;  // /@attributes_sha256
+  bool shockgas_version = false;   // /@shockgas_version, which every layout's writer stores
+};
+
+// The layouts since which a file carries its own checksum (2.0) and the digest
+// of its attributes (3.1); docs/output.md, "Layout version".
+inline constexpr LayoutVersion kOwnChecksumSince{2, 0}, kAttributesDigestSince{3, 1};
+
+// FileProblem (exit 2) for a file that lacks what every file of its layout
+// carries: "not a result file" without /@shockgas_version (no writer of any
+// layout leaves it out), "damaged" without the own checksum or the attributes'
+// digest its layout has (rewritten by another program, or its checksum block
+// lost to damage: a file that only says an older layout is read as one).
+void check_layout_marks(const std::string& file, LayoutVersion v, const LayoutMarks& marks);
+
 }  // namespace shockgas::app
