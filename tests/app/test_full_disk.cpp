@@ -12,13 +12,16 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <random>
 #include <string>
 
 #include "child_run.hpp"
 #include "run_dir_checks.hpp"
 #include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/output/hdf5_file.hpp"
 #include "shockgas/app/report/plots.hpp"
+#include "shockgas/core/error.hpp"
 #include "two_runs.hpp"
 
 namespace shockgas::app {
@@ -78,8 +81,8 @@ TEST(FullDisk, TheDefaultSceneOnATwoMegabyteDiskEndsCleanlyAndWritesNothing) {
 // meets the full disk: the initial state is written in chunks while the run
 // computes, the rest at its end, and HDF5 may buffer a write until H5Dclose or
 // H5Fclose), and the run ends with exit 1 (not SIGSEGV in the HDF5 library's exit
-// handler) and a message naming the file and the cause; the directory keeps the
-// previous, complete results.
+// handler) and a message naming the file, the cause and the room left; the
+// directory keeps the previous, complete results.
 TEST(FullDisk, ADiskThatFillsDuringTheRunLeavesThePreviousResults) {
   SmallDisk disk("fulldisk-during", "2m");
   REQUIRE_MOUNTED(disk);
@@ -101,6 +104,7 @@ TEST(FullDisk, ADiskThatFillsDuringTheRunLeavesThePreviousResults) {
   EXPECT_NE(err.find((fs::weakly_canonical(out) / "result.h5").string()), std::string::npos) << err;
   EXPECT_EQ(err.find(".tmp-"), std::string::npos) << err;
   EXPECT_NE(err.find("(No space left on device)"), std::string::npos) << err;
+  EXPECT_NE(err.find("(the file system holding it has "), std::string::npos) << err;  // and the room left
   EXPECT_NE(run.err().find("the results in the output directory are as they were"), std::string::npos)
       << run.err();
   EXPECT_EQ(whole_run(out, "alpha"), "");
@@ -155,6 +159,29 @@ TEST(FullDisk, ADiskThatFillsWhileThePlotsAreDrawnFailsTheRunOnce) {
     EXPECT_EQ(whole_run(s.out, "alpha"), "");
     EXPECT_TRUE(leftovers(s.out).empty()) << leftovers(s.out).front();
   }
+}
+
+// A result file that meets a full disk in the middle of its datasets (the
+// library flushes chunks as its cache fills): the failure names the call, the
+// file's disk being full and the room left there, as every other write of a
+// run does (docs/output/run-directory.md), whichever HDF5 call meets it.
+TEST(FullDisk, AnHdf5WriteOnAFullDiskNamesTheRoomLeft) {
+  SmallDisk disk("fulldisk-hdf5", "1m");
+  REQUIRE_MOUNTED(disk);
+  std::vector<double> values(1 << 19);  // 4 MiB of doubles that deflate cannot pack: 4 times the disk
+  std::mt19937_64 rng(5);
+  for (double& x : values) x = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+  std::string message;
+  try {
+    Hdf5File h5 = Hdf5File::create((disk.dir() / "result.h5").string());
+    h5.write("/values", values.data(), {values.size()}, Storage::float64, "1", "noise");
+    h5.close();
+  } catch (const RunError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("HDF5: H5"), std::string::npos) << message;
+  EXPECT_NE(message.find("(No space left on device)"), std::string::npos) << message;
+  EXPECT_NE(message.find("(the file system holding it has 0 bytes free)"), std::string::npos) << message;
 }
 
 // Too little room before the run: refused by the preflight (exit 2), naming

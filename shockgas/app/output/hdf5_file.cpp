@@ -2,10 +2,17 @@
 // hdf5_file_write.cpp.
 #include "shockgas/app/output/hdf5_file.hpp"
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <mutex>
 #include <optional>
+#include <string_view>
 #include <utility>
+#include <vector>
 
+#include "shockgas/app/files/durable_file.hpp"
 #include "shockgas/app/files/own_checksum.hpp"
 #include "shockgas/app/output/hdf5_file_calls.hpp"
 #include "shockgas/app/output/layout_version.hpp"
@@ -64,11 +71,35 @@ std::string reason() {
   return system.empty() ? innermost : system;
 }
 
+namespace {
+
+// Where the file a call failed on lies: the object itself for a call on a
+// file (H5Fcreate, H5Fclose: its path), else the file the library has open
+// for writing (one at a time here); empty if none.
+std::filesystem::path written_file(const char* call, const std::string& object) {
+  if (std::string_view(call).rfind("H5F", 0) == 0) return object;
+  const ssize_t count = H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_FILE);
+  std::vector<hid_t> ids(count > 0 ? static_cast<std::size_t>(count) : 0);
+  if (ids.empty() || H5Fget_obj_ids(H5F_OBJ_ALL, H5F_OBJ_FILE, ids.size(), ids.data()) < 0) return {};
+  for (const hid_t id : ids) {  // the library's own identifiers: not to be closed here
+    unsigned intent = 0;
+    if (H5Fget_intent(id, &intent) < 0 || (intent & H5F_ACC_RDWR) == 0) continue;
+    std::string name(static_cast<std::size_t>(std::max<ssize_t>(H5Fget_name(id, nullptr, 0), 0)), '\0');
+    if (!name.empty() && H5Fget_name(id, name.data(), name.size() + 1) > 0) return name;
+  }
+  return {};
+}
+
+}  // namespace
+
 std::int64_t check(std::int64_t id, const char* call, const std::string& object) {
   if (id < 0) {
     const std::string why = reason();
+    // A full disk: how much room is left where the file lies (as every write names it).
+    const std::filesystem::path file = why == std::strerror(ENOSPC) ? written_file(call, object) : "";
     throw RunError(std::string("HDF5: ") + call + " failed on " + object +
-                   (why.empty() ? "" : " (" + why + ")"));
+                   (why.empty() ? "" : " (" + why + ")") +
+                   (file.empty() ? "" : room_note(file.parent_path())));
   }
   return id;
 }
