@@ -15,6 +15,7 @@
 #include "shockgas/app/cli/lab.hpp"
 #include "shockgas/app/cli/signals.hpp"
 #include "shockgas/app/cli/tail_run.hpp"
+#include "shockgas/app/cli/upgrade.hpp"
 #include "shockgas/app/directory/result_check.hpp"
 #include "shockgas/app/directory/run_directory.hpp"
 #include "shockgas/app/ensemble/checkpointer.hpp"
@@ -208,6 +209,10 @@ int dispatch(const CLI::App& app, const Arguments& args) {
     print_info(args.result_path, std::cout);
     return kExitOk;
   }
+  if (app.got_subcommand("upgrade")) {
+    std::cout << upgrade_answer(args.result_path);
+    return kExitOk;
+  }
   if (app.got_subcommand("animate")) {
     animate(args.result_path, args.animation);
     std::cout << "animation in " << as_directory(args.result_path) << "\n";
@@ -255,6 +260,11 @@ int run_command(int argc, char** argv) {
   info->add_flag("--layout", args.layout,
                  "print every dataset and summary key a run may write (docs/output.md)");
   info->require_option(1);
+  auto* upgrade = app.add_subcommand(
+      "upgrade",
+      "Check a result of an older layout: it is read as it is, nothing is rewritten (docs/output.md)");
+  upgrade->add_option("RESULT", args.result_path, "result file or run directory, e.g. out/default")
+      ->required();
   auto* scene =
       app.add_subcommand("scene", "Print the complete commented scene with every key and its default");
   scene->add_flag("--defaults", args.defaults, "print every key with default, unit and allowed range");
