@@ -111,9 +111,14 @@ class Writer {
     out_ << "    </Grid>\n";
   }
 
+  // The animation's frames, then the fields at t_end: a frame at t_end itself
+  // is left out (one grid per time; the fields at t_end are on the solver's
+  // own cells, a frame may be coarser).
   void continuum(const std::string& solver) {
     out_ << "  <Grid Name=\"continuum " << solver
          << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    const std::string at_end = "/continuum/" + solver;
+    const bool fields_at_end = has(at_end + "/x") && has(at_end + "/v");
     const std::string frames = "/animation/fields/" + solver;
     if (has(frames + "/x") && has("/animation/t")) {
       const std::vector<double>& t = h5_.values.at("/animation/t");
@@ -121,11 +126,12 @@ class Writer {
       for (const char* f : {"v", "rho"})
         if (has(frames + "/" + f) && sets_.at(frames + "/" + f).dims.size() == 2)
           fields[f] = frames + "/" + f;
+      const std::string t_end = fields_at_end ? attribute(at_end, "t") : "";
       for (std::size_t k = 0; k < t.size(); ++k)
-        field_grid(solver, to_text(t[k]), frames + "/x", fields, static_cast<long>(k));
+        if (to_text(t[k]) != t_end)
+          field_grid(solver, to_text(t[k]), frames + "/x", fields, static_cast<long>(k));
     }
-    const std::string at_end = "/continuum/" + solver;
-    if (has(at_end + "/x") && has(at_end + "/v")) {
+    if (fields_at_end) {
       std::map<std::string, std::string> fields;
       for (const char* f : {"v", "rho"})
         if (has(at_end + "/" + f)) fields[f] = at_end + "/" + f;
