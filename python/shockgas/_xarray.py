@@ -6,7 +6,7 @@ Coordinates:
     t       the particles' log-spaced sample times (/particles/t)
 Data variables:
     v, rho            (solver, x): each solver's fields at t_end (rho NaN for a
-                      solver without a density)
+                      solver without a density; attribute t_end: their time)
     T, mean_v, ...    (t): the particles' ensemble series, each with its _stderr
     count             (t): realizations that reached each sample
 Every variable and coordinate carries its unit and description as attributes
@@ -61,7 +61,14 @@ def _fields(result, coords, data):
             if r is not None:
                 values[i] = r
         path = next(f"/continuum/{s}/{field}" for s, r in zip(solvers, rows) if r is not None)
-        data[field] = (("solver", "x"), values, _attrs(result, path))
+        attrs = _attrs(result, path)
+        t_end = result.attributes.get(f"/continuum/{solvers[0]}@t")
+        if t_end is not None:  # the fields' own time: the coordinate t holds the particles' samples
+            attrs["t_end"] = float(t_end)
+            text = attrs.get("description", field)
+            text = text[: -len(" at t")] + " at t_end" if text.endswith(" at t") else text
+            attrs["description"] = text + " (attribute t_end; the coordinate t holds the particles' sample times)"
+        data[field] = (("solver", "x"), values, attrs)
 
 
 def _series(result, coords, data):
@@ -84,6 +91,7 @@ def to_xarray(result):
     _fields(result, coords, data)
     _series(result, coords, data)
     attrs = {name: result.attributes["/@" + name] for name in _FILE_ATTRIBUTES if "/@" + name in result.attributes}
+    attrs.setdefault("layout_version", "1.0")  # a file without the attribute is of layout 1.0
     if result.directory:
         attrs["directory"] = str(result.directory)
     return xarray.Dataset(data_vars=data, coords=coords, attrs=attrs)

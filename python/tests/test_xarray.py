@@ -74,3 +74,21 @@ def test_the_scene_and_layout_are_in_the_attributes(run_dir):
     major, minor = ds.attrs["layout_version"].split(".")
     assert int(major) >= 4 and int(minor) >= 0
     assert "[particles]" in ds.attrs["resolved_parameters"] and "r = 0.5" in ds.attrs["resolved_parameters"]
+
+
+def test_the_fields_say_their_own_time(run_dir):
+    """v and rho are at t_end, which the coordinate t (the particles' samples) does not say."""
+    ds = shockgas.load(run_dir).to_xarray()
+    with h5py.File(run_dir / "result.h5", "r") as f:
+        t_end = float(f["continuum/godunov"].attrs["t"])
+    for field in ("v", "rho"):
+        assert ds[field].attrs["t_end"] == t_end
+        assert "at t_end" in ds[field].attrs["description"], ds[field].attrs["description"]
+
+
+def test_a_directory_of_layout_1_says_so():
+    """A file without /@layout_version is of layout 1.0 (docs/output.md); the Dataset says it."""
+    from conftest import SOURCE_DIR
+
+    ds = shockgas.load(SOURCE_DIR / "tests" / "data" / "layout-1.0").to_xarray()
+    assert ds.attrs["layout_version"] == "1.0"
