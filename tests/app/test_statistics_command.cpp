@@ -70,6 +70,10 @@ TEST_F(StatisticsCommand, TenShardsGiveTheStatisticsOfTheirMergedRun) {
   EXPECT_EQ(read_text(root_ / "of-shards" / "statistics.md"),
             read_text(root_ / "of-merged" / "statistics.md"));
   EXPECT_TRUE(fs::is_regular_file(root_ / "of-shards" / "statistics.h5"));
+  // Its manifest names the statistics run ("<scene>-stats"), the file the scene
+  // it measures: `info` reads it as sound (it said "not as its manifest.json records").
+  const auto [code, err] = run_child({"info", (root_ / "of-shards" / "statistics.h5").string()});
+  EXPECT_EQ(code, 0) << err;
 }
 
 TEST_F(StatisticsCommand, TheShardsHoldTheExactLaws) {

@@ -54,10 +54,10 @@ std::string run_statistics(const StatisticsOptions& options) {
   require_one_gas(sources);
   const Scene& scene = sources.front().scene;
 
-  const fs::path dir =
-      options.out_dir.empty() ? fs::path("out") / (scene.name + "-stats") : fs::path(options.out_dir);
+  const fs::path dir = options.out_dir.empty() ? fs::path("out") / (statistics_run_name(scene.name))
+                                               : fs::path(options.out_dir);
   check_target_spares(resolve_target(dir), dir.string(), options.dirs, "directory being read");
-  RunDirectory out(dir, scene.name + "-stats", options.force);
+  RunDirectory out(dir, statistics_run_name(scene.name), options.force);
 
   // Every realization that reached t_end, in the order of the sources and
   // their indices: shards and their merged run give the same list.
@@ -80,7 +80,7 @@ std::string run_statistics(const StatisticsOptions& options) {
   if (options.plots)
     notes = run_plot_script("plot_statistics.py", "SHOCKGAS_PLOT_STATISTICS_SCRIPT", out.staging().string(),
                             "statistics figure", "plots.log");
-  write_manifest(out.staging(), scene.name + "-stats");
+  write_manifest(out.staging(), statistics_run_name(scene.name));
   out.commit();
   if (!notes.empty()) std::cerr << notes;
   if (!options.quiet) std::cout << text << "Written to " << dir.string() << "/\n";

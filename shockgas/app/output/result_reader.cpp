@@ -8,6 +8,7 @@
 #include "shockgas/app/files/file_problem.hpp"
 #include "shockgas/app/files/isolated_call.hpp"
 #include "shockgas/app/files/manifest.hpp"
+#include "shockgas/app/output/statistics_files.hpp"
 #include "shockgas/app/scene/scene.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/memory_limit.hpp"
@@ -128,13 +129,17 @@ class FrameReader {
 };
 
 // A file checked against its manifest holds the scene the manifest names (a
-// manifest of another run's files would otherwise vouch for this one).
+// manifest of another run's files would otherwise vouch for this one); a
+// statistics file also where the manifest names that scene's statistics run
+// (`shockgas stats`: "<scene>-stats").
 void require_manifest_scene(const ResultContents& out) {
   const fs::path dir = fs::path(out.path).parent_path();
   const auto manifest = read_manifest(dir.empty() ? "." : dir);
   const std::string resolved = out.attribute("/", "resolved_parameters");
   const std::string held = resolved.empty() ? "" : scene_name_of(resolved);
-  if (manifest && !held.empty() && held != manifest->scene)
+  const bool statistics = std::find(out.groups.begin(), out.groups.end(), "/statistics") != out.groups.end();
+  if (manifest && !held.empty() && held != manifest->scene &&
+      !(statistics && statistics_run_name(held) == manifest->scene))
     throw result_problem(
         out.path, "not as its manifest.json records",
         "manifest.json names the scene " + to_text(manifest->scene) + ", the file holds " + to_text(held));
