@@ -1,5 +1,5 @@
 #pragma once
-// Private to hdf5_file.cpp and hdf5_file_write.cpp: the checked call, the
+// Private to hdf5_file*.cpp: the checked call (hdf5_file_calls.cpp), the
 // closers of each kind of identifier, and the library's reason for a failure.
 #include <hdf5.h>
 
@@ -16,7 +16,8 @@ void init();
 // Why the last HDF5 call failed, from its error stack.
 std::string reason();
 
-// id, or RunError "HDF5: <call> failed on <object> (<reason>)" when it is negative.
+// id, or RunError "HDF5: <call> failed on <object> (<reason>)" when it is
+// negative; on a full disk also " (the file system holding it has N free)".
 std::int64_t check(std::int64_t id, const char* call, const std::string& object);
 
 inline int close_file(std::int64_t id) { return H5Fclose(id); }
