@@ -33,7 +33,10 @@ std::ptrdiff_t bin_of(const std::vector<double>& edges, double value) {
   return std::upper_bound(edges.begin(), edges.end(), value) - edges.begin() - 1;
 }
 
-// Column means of the rows and their jackknife errors (NaN from one row).
+// Column means of the rows and their jackknife errors (NaN from one row). A
+// bin empty in every row has no error either: the jackknife's 0 would claim
+// an exact 0, where no cluster in R realizations says only that the
+// expectation is small (an upper bound, not a value and an error).
 void mean_and_error(std::vector<std::vector<double>> rows, BinnedStatistic& out) {
   const std::size_t bins = out.edges.size() - 1;
   std::vector<std::vector<double>> kept;
@@ -43,9 +46,13 @@ void mean_and_error(std::vector<std::vector<double>> rows, BinnedStatistic& out)
   out.error.assign(bins, kNaN);
   if (kept.size() == 1) out.value = kept.front();
   if (kept.size() < 2) return;
+  std::vector<bool> empty(bins, true);
+  for (const auto& r : kept)
+    for (std::size_t j = 0; j < bins; ++j) empty[j] = empty[j] && r[j] == 0;
   const LeaveOneOutMeans means(std::move(kept));
   const auto estimates = jackknife_components(means.rows(), [&](std::size_t out) { return means.mean(out); });
-  for (std::size_t j = 0; j < bins; ++j) out.value[j] = estimates[j].value, out.error[j] = estimates[j].error;
+  for (std::size_t j = 0; j < bins; ++j)
+    out.value[j] = estimates[j].value, out.error[j] = empty[j] ? kNaN : estimates[j].error;
 }
 
 JackknifeEstimate mean_estimate(const std::vector<double>& samples) {

@@ -54,7 +54,7 @@ inline constexpr std::size_t kStatisticsSpacingBins = 20;
 struct BinnedStatistic {
   std::vector<double> edges;  // bins.size() + 1 edges
   std::vector<double> value;  // per bin
-  std::vector<double> error;  // jackknife; NaN from one realization
+  std::vector<double> error;  // jackknife; NaN from one realization, or in a bin empty in every one
   std::vector<double> exact;  // per bin; empty without an exact law
   // The chi-square of value against exact (when exact is given and it can be
   // formed: enough realizations or counts).

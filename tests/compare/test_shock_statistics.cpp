@@ -84,6 +84,25 @@ TEST(ShockStatistics, ErrorsAreTheJackknifeOverRealizations) {
   EXPECT_LE(mass, 1 + 1e-12);
 }
 
+// A bin no realization's cluster fell in is 0 with no error (the jackknife's 0
+// would claim an exact 0); every other bin of a density keeps a finite one.
+TEST(ShockStatistics, ABinEmptyInEveryRealizationHasNoError) {
+  const ShockStatistics s = shock_statistics(sticky_realizations(6), white_noise_shape());
+  std::size_t empty = 0;
+  for (const BinnedStatistic* d : {&s.mass, &s.velocity, &s.spacing}) {
+    ASSERT_EQ(d->value.size(), d->error.size());
+    for (std::size_t j = 0; j < d->value.size(); ++j) {
+      if (d->value[j] == 0) {
+        ++empty;
+        EXPECT_TRUE(std::isnan(d->error[j])) << "bin " << j << " of 0 with error " << d->error[j];
+      } else {
+        EXPECT_TRUE(std::isfinite(d->error[j])) << "bin " << j;
+      }
+    }
+  }
+  EXPECT_GT(empty, 0u);  // this seed leaves the velocity's outer bins empty: the case is met
+}
+
 TEST(ShockStatistics, OneRealizationGivesNoErrorAndNoMeanTest) {
   const ShockStatistics s = shock_statistics(sticky_realizations(1), white_noise_shape());
   EXPECT_TRUE(std::isnan(s.count.error));
