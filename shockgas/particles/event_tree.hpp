@@ -142,11 +142,17 @@ class EventTree {
   // Refreshes the path of one slot.
   void refresh_path(std::size_t slot) { refresh_block(slot / block); }
   // Refreshes slots a and b, where b is a or a slot after it in the run and the
-  // slots set since the last refresh lie between them (b - a small).
+  // slots set since the last refresh lie between them (b - a small). Past the
+  // ring's end (b < a) the last block may lie between their blocks: with N = 1
+  // (mod 16) it holds slot N - 1 alone, and a bounce's slots N - 2, N - 1, 0
+  // span three blocks (left stale, that block's old winner stayed on top: the
+  // same pair met again at the same time until the run stopped as a stall).
   [[gnu::always_inline]] void refresh(std::size_t a, std::size_t b) {
     const std::size_t ba = a / block, bb = b / block;
     if (ba == bb) [[likely]]
       return refresh_block(ba);
+    if (bb < ba && ba + 1 < all_blocks_) [[unlikely]]
+      refresh_block(all_blocks_ - 1);
     refresh_two(position(ba), position(bb));
   }
   // Slots p, p + 1 and p + 2 (past the last slot: 0, 1) := tp, +inf, tj, then

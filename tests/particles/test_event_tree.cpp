@@ -105,5 +105,43 @@ TEST(EventTree, ReplaceThreeIsSetAndRefresh) {
   }
 }
 
+// A bounce across the ring's end (slots N - 2, N - 1, 0) where the last block
+// holds slot N - 1 alone (N = 1 mod 16): its three slots span three blocks,
+// and every one must be refreshed. refresh(N - 2, 0) left the middle block's
+// old winner on top, and the windowed engine met the same pair again at the
+// same time until the run stopped as a stall (found from outside: every ring
+// of N = 1 mod 16, 1025 to 100001, stopped early with exit 0). The top is the
+// minimum of the run's times after every bounce, on whole rings and on runs
+// that wrap, for N = 1 mod 16 and, as a control, N that is not.
+TEST(EventTree, ABounceAcrossTheRingsEndKeepsTheTopTheMinimum) {
+  struct Run {
+    std::size_t n, first, last;
+  };
+  for (const Run run : {Run{1009, 0, 1008}, Run{1009, 960, 40}, Run{4097, 4000, 100}, Run{33, 0, 32},
+                        Run{1000, 0, 999}, Run{1000, 950, 30}}) {
+    SCOPED_TRACE(testing::Message() << run.n << " " << run.first << " " << run.last);
+    Rng rng(run.n + run.first);
+    SlotTimes times;
+    times.reset(run.n);
+    const std::size_t length = (run.last + run.n - run.first) % run.n + 1;
+    for (std::size_t k = 0; k < length; ++k) times[(run.first + k) % run.n] = rng.uniform(1.0, 2.0);
+    EventTree tree;
+    tree.attach(times, run.first, run.last);
+    for (int step = 0; step < 4000; ++step) {
+      // Half the bounces at the ring's end, p = N - 2 or N - 1; the rest anywhere in the run.
+      const std::size_t end = run.n - 2 + static_cast<std::size_t>(rng.uniform() < 0.5);
+      const std::size_t p =
+          rng.uniform() < 0.5 && (run.first == 0 || run.last < run.first)
+              ? end
+              : (run.first + static_cast<std::size_t>(rng.uniform() * (length - 2))) % run.n;
+      tree.replace_three(p, rng.uniform(0.0, 3.0), rng.uniform(0.0, 3.0));
+      double least = EventTree::never;
+      for (std::size_t k = 0; k < length; ++k) least = std::min(least, times[(run.first + k) % run.n]);
+      ASSERT_EQ(tree.top_time(), least) << "step " << step << ", p = " << p;
+      ASSERT_EQ(times[tree.top()], least);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace shockgas::particles

@@ -100,6 +100,13 @@ TEST(WindowPlanner, RefinedPlansGiveTheGlobalQueuesCollisionsOnALine) {
   expect_refined_windows_exact<false>(gas(12000), false, {1.0, 0.0, false}, 100.0, 120000);
 }
 
+// A ring of N = 1 mod 16 (its last block of slot times holds slot N - 1 alone):
+// a bounce at the ring's end refreshes three blocks (EventTree, "refresh").
+// Before, the windows stalled where the global queue ran on.
+TEST(WindowPlanner, RefinedPlansGiveTheGlobalQueuesCollisionsOnARingOf4097) {
+  expect_refined_windows_exact<false>(gas(4097), true, {0.9, 1e-2, false}, 20.0, 15000);
+}
+
 TEST(WindowPlanner, RefinedPlansGiveTheGlobalQueuesMerges) {
   // r = 0: every collision merges (the engine with links and masses), most bodies.
   expect_refined_windows_exact<true>(gas(12000), true, {0.0, 0.0, false}, 200.0, 6000);
