@@ -130,8 +130,9 @@ TEST(OutputDocs, DocsOutputMdHoldsTheDeclaredLayout) {
 }
 
 TEST(OutputDocs, ARunWritesTheDeclaredLayout) {
-  expect_file_follows_layout(run_scene("full", kFullScene), {Part::provenance, Part::initial, Part::particles,
-                                                             Part::analysis, Part::continuum, Part::compare});
+  expect_file_follows_layout(run_scene("full", kFullScene),
+                             {Part::provenance, Part::initial, Part::particles, Part::analysis,
+                              Part::continuum, Part::compare, Part::theory});
 }
 
 // /initial/x, v, m are realization 0 as make_initial_bodies draws it, to the bit

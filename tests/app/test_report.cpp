@@ -115,5 +115,35 @@ TEST(Report, DistancesFromAParticleStartSayWhatTheyMeasure) {
   EXPECT_EQ(field.find(caveat), std::string::npos) << field;
 }
 
+// A run whose particles stop early is held to the time its data end (found
+// from outside: a run that stopped at t = 1.8 of 2000 kept theory.shock_count
+// and ramp_slope as holding on [80, 2000], and its report named them beside
+// slopes of 0.16 and 0.00015, with an "exact" white-noise count of 420 where the
+// exact solver found 1033). Stopped here by particles.max_collisions at t ~ 30,
+// before 10 t_stick = 80; the same scene run to its end holds them.
+TEST(Report, AnEarlyStopIsHeldToTheTimeItsDataEnd) {
+  const char* gas =
+      "[initial]\nN = 4096\nseed = 9999\n[particles]\nr = 0.5\ndelta = 3e-3\nt_end = 2000\nsamples = 20\n"
+      "[continuum]\nsolvers = [\"hopf_lax\"]\ncells = 4096\n[compare]\n[output]\nplots = false\n";
+  const fs::path stopped = run_scene("early-stop", gas, {"particles.max_collisions=200000"});
+  const auto s = nlohmann::json::parse(read_text(stopped / "summary.json"));
+  ASSERT_EQ(s["particles"]["stop"], "event_limit");
+  const double t_stop = s["particles"]["stop_time"].get<double>();
+  ASSERT_LT(t_stop, 80.0);
+  for (const char* law : {"shock_count", "clusters_are_shocks", "ramp_slope", "velocity_scaling"}) {
+    EXPECT_FALSE(s["theory"][law]["holds"].get<bool>()) << law;
+    EXPECT_NE(s["theory"][law]["why"].get<std::string>().find("before t = "), std::string::npos) << law;
+  }
+  const std::string report = read_text(stopped / "report.md");
+  EXPECT_EQ(report.find("(theory `shock_count`"), std::string::npos) << report;
+  EXPECT_EQ(report.find("exact for this white noise"), std::string::npos) << report;
+
+  const auto whole =
+      nlohmann::json::parse(read_text(run_scene("early-stop-control", gas, {}) / "summary.json"));
+  ASSERT_EQ(whole["particles"]["stop"], "completed");
+  for (const char* law : {"shock_count", "clusters_are_shocks", "ramp_slope", "velocity_scaling"})
+    EXPECT_TRUE(whole["theory"][law]["holds"].get<bool>()) << law;
+}
+
 }  // namespace
 }  // namespace shockgas::app

@@ -16,7 +16,18 @@
 namespace shockgas::app {
 
 // The parts of a run, in the order they are written.
-enum class Part { provenance, initial, particles, analysis, continuum, compare, animation, sweep, shard };
+enum class Part {
+  provenance,
+  initial,
+  particles,
+  analysis,
+  continuum,
+  compare,
+  animation,
+  theory,
+  sweep,
+  shard
+};
 
 // One thing theory says of a value: the value and a word of where it holds
 // ("-2/3 (sticky gas)"), or another key's value ("~ {analysis.t_dissip_theory}"),

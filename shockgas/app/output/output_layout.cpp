@@ -148,9 +148,9 @@ void table(std::ostringstream& out, const std::vector<Declaration>& decls, Part 
   }
 }
 
-const std::vector<Part> kParts = {Part::provenance, Part::initial,   Part::particles,
-                                  Part::analysis,   Part::continuum, Part::compare,
-                                  Part::animation,  Part::sweep,     Part::shard};
+const std::vector<Part> kParts = {Part::provenance, Part::initial, Part::particles, Part::analysis,
+                                  Part::continuum,  Part::compare, Part::animation, Part::theory,
+                                  Part::sweep,      Part::shard};
 
 }  // namespace
 
@@ -240,6 +240,8 @@ std::string part_title(Part part) {
       return "Particles against continuum (when [compare] and [continuum] are present)";
     case Part::animation:
       return "Frames and the wave's evolution (when output.animation = true)";
+    case Part::theory:
+      return "Where each law holds for the run (written last: to the time its data end)";
     case Part::sweep:
       return "Sweep (a [sweep] scene's own result)";
     case Part::shard:

@@ -77,12 +77,42 @@ double law_time(const Scene& scene, Law law) {
   return scene.continuum_t_end();
 }
 
+namespace {
+
+// When the data a law is held against end for this run: law_time, or earlier
+// where the particles stopped before particles.t_end (a collapse, a stall, a
+// limit): their series end with the last realization's stop, and the
+// comparison is made at realization 0's (stage_compare.cpp).
+double held_time(const RunResults& r, Law law) {
+  const double planned = law_time(*r.scene, law);
+  if (!r.particles) return planned;
+  const particles::EnsembleResult& e = r.particles->ensemble;
+  switch (law) {
+    case Law::sticky_cooling:
+    case Law::crossovers:
+    case Law::velocity_scaling: {
+      if (e.stops.empty()) return planned;
+      double last = 0;
+      for (const particles::RunStop& s : e.stops) last = std::max(last, s.time);
+      return std::min(planned, last);
+    }
+    case Law::shock_count:
+    case Law::clusters_are_shocks:
+    case Law::ramp_slope:
+      return std::min(planned, e.first.stop.time);
+    default:
+      return planned;
+  }
+}
+
+}  // namespace
+
 compare::Scope law_scope(const RunResults& r, Law law) {
-  return compare::scope(law, r.shape, law_time(*r.scene, law));
+  return compare::scope(law, r.shape, held_time(r, law));
 }
 
 std::string law_note(const RunResults& r, Law law) {
-  return compare::theory_note(law, r.shape, law_time(*r.scene, law));
+  return compare::theory_note(law, r.shape, held_time(r, law));
 }
 
 namespace layout {
@@ -91,10 +121,11 @@ std::vector<Declaration> theory_keys() {
   std::vector<Declaration> keys;
   for (const compare::TheoryDeclaration& d : compare::theory_declarations()) {
     const Law law = d.law;
-    keys.push_back(key(Part::initial, std::string("theory.") + d.id, "",
+    keys.push_back(key(Part::theory, std::string("theory.") + d.id, "",
                        std::string("whether \"") + d.statement + ": " + d.value + "\" (" + d.source +
-                           ") holds for this scene (" + d.condition +
-                           "): {holds, window [t_min, t_max] or null, why}",
+                           ") holds for this run (" + d.condition +
+                           "; to the time its data end, before t_end where the particles stopped early): "
+                           "{holds, window [t_min, t_max] or null, why}",
                        "", [law](const RunResults& r, Emitter& out) {
                          const compare::Scope s = law_scope(r, law);
                          out.json({{"holds", s.holds},

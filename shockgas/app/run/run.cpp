@@ -178,6 +178,7 @@ RunResults compute_parts(const Scene& scene, const InitialCondition& initial, Pr
                           r.particles ? r.particles->frames : std::vector<particles::Snapshot>{}, progress);
     sink(r, Part::animation);
   }
+  sink(r, Part::theory);  // where each law holds, to the time the data end
   progress.finish();
   return r;
 }
