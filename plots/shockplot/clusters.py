@@ -72,19 +72,21 @@ def _eligible_at_the_comparison(ax, summary):
     if c["n_clusters"] > 0:  # (none to draw on a log axis otherwise)
         ax.plot([c["t"]], [c["n_clusters"]], **dict(CLUSTER, ms=8),
                 label=f"comparison: clusters of mass >= {m:.3g} (criteria at its time)")
-    if "n_shocks_exact" in c:  # one number at one time: a marker alone (a line would claim a range of times)
+    # One number at one time: a marker alone (a line would claim a range of times), where the
+    # white-noise law holds at that time (theory.shock_count: not for a run that stopped early).
+    if "n_shocks_exact" in c and theory(summary, "shock_count") is not None:
         ax.plot([c["t"]], [c["n_shocks_exact"]], **dict(EXACT, ls="none"), marker="D", mfc="none", ms=8,
                 label=f"exact: expected shocks of mass >= {m:.3g} at that time")
 
 
-def _mass_distribution(ax, cmp):
+def _mass_distribution(ax, cmp, law_holds):
     edges, count = cmp["cluster_mass_edges"][:], cmp["cluster_mass_count"][:]
     width = np.diff(edges)
     centre = np.sqrt(edges[:-1] * edges[1:])
     some = count > 0
     ax.errorbar(centre[some], (count / width)[some], yerr=(np.sqrt(count) / width)[some], color="tab:blue",
                 marker="o", ms=4, ls="none", label="particles: clusters per unit mass, ± Poisson error")
-    if "cluster_mass_exact" in cmp:
+    if "cluster_mass_exact" in cmp and law_holds:  # the shock-mass law where it holds at that time
         exact = cmp["cluster_mass_exact"][:] / width
         ax.stairs(np.where(exact > 0, exact, np.nan), edges, **EXACT,
                   label="exact: shocks of Burgers turbulence from this white noise (shock-mass law), bin means")
@@ -145,7 +147,7 @@ def figure_clusters(f, summary):
             _count_in_time(top[0], f, summary)
         else:
             top[0].set_visible(False)
-        _mass_distribution(top[1], cmp)
+        _mass_distribution(top[1], cmp, theory(summary, "shock_count") is not None)
         _positions(bottom, cmp, solver)
         panels = top + [bottom]
     if cmp is not None:

@@ -140,7 +140,7 @@ def theory(summary, law):
 
 def sticky_regime_start(summary):
     """Where the sticky-gas regime's laws start to hold for the run's particles (from 10 t_stick:
-    the window of theory.velocity_scaling, held against particles.t_end), or None where they do not
+    the window of theory.velocity_scaling, held to the time their data end), or None where they do not
     hold: an exact late-time law is drawn from there, not over the times before it."""
     scope = theory(summary, "velocity_scaling")
     return scope["window"][0] if scope and scope.get("window") else None
