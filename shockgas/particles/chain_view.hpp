@@ -87,4 +87,12 @@ BufferedChainView<ForEach> make_chain_view(std::size_t size, ForEach for_each) {
   return {size, std::move(for_each)};
 }
 
+// The view of an event engine's live bodies at time t (EventEngine::for_each_body).
+template <class Engine>
+auto engine_chain_view(const Engine& engine, double t) {
+  return make_chain_view(engine.alive(), [&engine, t](auto&& f, std::size_t begin, std::size_t end) {
+    engine.for_each_body(t, f, begin, end);
+  });
+}
+
 }  // namespace shockgas::particles::detail

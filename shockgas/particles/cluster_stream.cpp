@@ -57,12 +57,8 @@ class ClusterWalk {
  public:
   ClusterWalk(double L, const ClusterCriteria& c, Close& close) : L_(L), c_(c), close_(close) {}
   void add(std::size_t i, double x, double v, double m) {
-    if (!started_) {
-      sums_.start(i, x, v), started_ = true;
-    } else if (!c_.joins(x - x_last_, v - v_last_)) {
-      close_(std::as_const(sums_));
-      sums_.start(i, x, v);
-    }
+    if (started_) return add_run(i, &x, &v, &m, 1);
+    sums_.start(i, x, v), started_ = true;
     sums_.add(x, v, m);
     x_last_ = x, v_last_ = v;
   }

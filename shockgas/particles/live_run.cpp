@@ -56,10 +56,7 @@ class Engine final : public LiveRun::Impl {
   }
   Bodies state() const override {
     const double t = engine_.now();
-    const auto view = detail::make_chain_view(
-        engine_.alive(),
-        [this, t](auto&& f, std::size_t begin, std::size_t end) { engine_.for_each_body(t, f, begin, end); });
-    return detail::sorted_bodies(view, engine_.length(), engine_.ring());
+    return detail::sorted_bodies(detail::engine_chain_view(engine_, t), engine_.length(), engine_.ring());
   }
   double time() const override { return engine_.now(); }
   std::size_t alive() const override { return engine_.alive(); }

@@ -7,6 +7,7 @@
 #include "shockgas/core/cores.hpp"
 #include "shockgas/core/error.hpp"
 #include "shockgas/core/initial_stream.hpp"
+#include "shockgas/particles/chain_view.hpp"
 #include "shockgas/particles/event_engine.hpp"
 #include "shockgas/particles/hull_model.hpp"
 #include "shockgas/particles/recorder.hpp"
@@ -58,14 +59,6 @@ void check_bodies(const Bodies& b, double L, bool ring) {
 
 bool equal_masses(const Bodies& b) {
   return std::all_of(b.m.begin(), b.m.end(), [&](double m) { return m == b.m[0]; });
-}
-
-// The engine's live bodies at time t as the recorder reads them: streamed, not copied.
-template <bool Linked>
-auto chain_view(const detail::EventEngine<Linked>& engine, double t) {
-  return detail::make_chain_view(engine.alive(), [&engine, t](auto&& f, std::size_t begin, std::size_t end) {
-    engine.for_each_body(t, f, begin, end);
-  });
 }
 
 template <bool Linked>
@@ -190,10 +183,10 @@ RunResult run_events(std::size_t n, Fill&& fill, double L, bool ring, bool equal
     const detail::EngineStop s = scheduler ? scheduler->run_until(t, watch) : engine.run_until(t, watch);
     stop = stop_of(s, engine.now(), engine.last_position(), watch.reason);
     if (s != detail::EngineStop::reached) break;
-    recorder.observe(t, chain_view(engine, t), counters(engine));
+    recorder.observe(t, detail::engine_chain_view(engine, t), counters(engine));
   }
   stop.time = engine.now();
-  RunResult out = recorder.finish(chain_view(engine, engine.now()), stop, counters(engine));
+  RunResult out = recorder.finish(detail::engine_chain_view(engine, engine.now()), stop, counters(engine));
   out.wall_seconds = watch.elapsed();
   out.schedule = schedule_of(scheduler ? &*scheduler : nullptr, n, equal_masses, p);
   return out;
