@@ -17,10 +17,10 @@ std::string upgrade_answer(const std::string& path) {
   const RunFilesCheck files = check_run_files(path);
   if (!files.differences.empty())
     throw result_problem(files.directory, "not as its manifest.json records", files.differences);
-  std::optional<std::string> stated;
-  for (const auto& [name, value] : contents.attributes_of("/"))
-    if (name == "layout_version") stated = value;
-  const std::string layout = layout_version_text(parse_layout_version(file.string(), stated));
+  // No attribute: layout 1.0 (an empty one was refused when the file was read).
+  const std::string stated = contents.attribute("/", "layout_version");
+  const std::string layout = layout_version_text(
+      parse_layout_version(file.string(), stated.empty() ? std::nullopt : std::optional(stated)));
   std::ostringstream out;
   out << file.string() << ": layout " << layout << ", which this shockgas reads as it is (layouts 1.0 to "
       << kLayoutVersion.major << ".x): nothing to upgrade.\n";

@@ -54,8 +54,8 @@ std::string run_statistics(const StatisticsOptions& options) {
   require_one_gas(sources);
   const Scene& scene = sources.front().scene;
 
-  const fs::path dir = options.out_dir.empty() ? fs::path("out") / (statistics_run_name(scene.name))
-                                               : fs::path(options.out_dir);
+  const fs::path dir =
+      options.out_dir.empty() ? fs::path("out") / statistics_run_name(scene.name) : fs::path(options.out_dir);
   check_target_spares(resolve_target(dir), dir.string(), options.dirs, "directory being read");
   RunDirectory out(dir, statistics_run_name(scene.name), options.force);
 

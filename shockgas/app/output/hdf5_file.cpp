@@ -2,7 +2,6 @@
 // hdf5_file_write.cpp.
 #include "shockgas/app/output/hdf5_file.hpp"
 
-#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <utility>

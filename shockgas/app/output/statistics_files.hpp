@@ -29,12 +29,12 @@ struct StatisticsResult {
   StatisticsAbout about;
 };
 
-// The shape compare::shock_statistics needs (white-noise D where the start is
-// white noise on a lattice).
 // The name a statistics run of `scene` gives its directory and manifest:
 // "<scene>-stats" (statistics.h5 holds the scene's own parameters).
 inline std::string statistics_run_name(const std::string& scene) { return scene + "-stats"; }
 
+// The shape compare::shock_statistics needs (white-noise D where the start is
+// white noise on a lattice).
 compare::StatisticsShape statistics_shape(const Scene& scene);
 
 void write_statistics_h5(const std::filesystem::path& file, const compare::ShockStatistics& s,
